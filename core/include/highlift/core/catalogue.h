@@ -1,0 +1,72 @@
+// The catalogue of component types: each type declares its ports (flanges and signals) and its
+// parameters (name, dimension, display unit, default, valid range) exactly once. The JSON reader,
+// the ICSP, the estimator, the database, the reduced models, the simulator and the Modelica
+// exporter all read these declarations.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "highlift/core/domain.h"
+#include "highlift/core/units.h"
+
+namespace highlift {
+
+enum class PortKind {
+  kFlange,  ///< rotational mechanical flange (phi, tau)
+  kSignal,  ///< real-valued signal (e.g. a sensor output, a brake command)
+};
+
+struct PortSpec {
+  std::string name;         ///< e.g. "input", "output", "branch", "left", "right"
+  PortKind kind = PortKind::kFlange;
+  bool required = true;     ///< validation reports a required port left open
+  std::string description;
+};
+
+/// Declaration of one parameter of a component type.
+struct ParameterSpec {
+  std::string name;          ///< full-word snake_case, e.g. "outer_diameter", "stiffness"
+  std::string symbol;        ///< physics symbol used in laws and reports, e.g. "D", "c", "J"
+  Dimension dimension;       ///< SI dimension
+  std::string unit;          ///< display unit, e.g. "mm", "N*m/rad", "kg*m^2"
+  std::optional<double> nominal;  ///< default nominal value in SI, when there is a sensible one
+  Domain default_domain;     ///< default interval domain in SI (may be unbounded)
+  Domain valid_range;        ///< physically valid values in SI; outside is an input error
+  std::string description;   ///< one line, with the meaning of the parameter
+  std::string source;        ///< where the default comes from (domain.md tag and section)
+  bool optional = false;     ///< may be left unknown (e.g. derived from other parameters)
+};
+
+/// Declaration of a component type.
+struct ComponentTypeSpec {
+  std::string name;          ///< JSON "type", e.g. "torque_shaft"
+  std::string display_name;  ///< e.g. "torque shaft"
+  std::string description;
+  std::vector<PortSpec> ports;
+  std::vector<ParameterSpec> parameters;
+
+  const PortSpec* FindPort(std::string_view port) const;
+  const ParameterSpec* FindParameter(std::string_view parameter) const;
+};
+
+/// All drive-system component types, in a fixed order. Names (JSON "type"):
+///   pdu, system_torque_limiter, torque_shaft, steady_bearing, universal_joint, angle_gearbox,
+///   branch_gearbox, station_torque_limiter, geared_rotary_actuator, ballscrew_actuator,
+///   wing_tip_brake, position_sensor, disconnector, jam.
+const std::vector<ComponentTypeSpec>& ComponentTypes();
+/// The type named `name`, or nullptr.
+const ComponentTypeSpec* FindComponentType(std::string_view name);
+
+/// All element types of the element-level network (the simulation primitives with Modelica
+/// Standard Library names and parameter names: "Inertia" with "J", "Spring" with "c", ...).
+const std::vector<ComponentTypeSpec>& ElementTypes();
+const ComponentTypeSpec* FindElementType(std::string_view name);
+
+/// Closest names to `name` among `candidates` (edit distance), for "did you mean" messages.
+std::vector<std::string> Suggest(std::string_view name, const std::vector<std::string>& candidates,
+                                 std::size_t max_results = 3);
+
+}  // namespace highlift
