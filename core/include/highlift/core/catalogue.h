@@ -26,8 +26,14 @@ struct PortSpec {
   std::string description;
 };
 
+/// What a parameter holds. Scalars (the default) are quantities with a unit and an interval
+/// domain; tables are matrices of numbers in SI (e.g. a LossyGear loss table, a TimeTable);
+/// booleans and integers are stored in Parameter::nominal; texts in Component::texts.
+enum class ParameterKind { kScalar, kInteger, kBoolean, kTable, kText };
+
 /// Declaration of one parameter of a component type.
 struct ParameterSpec {
+  ParameterKind kind = ParameterKind::kScalar;
   std::string name;          ///< full-word snake_case, e.g. "outer_diameter", "stiffness"
   std::string symbol;        ///< physics symbol used in laws and reports, e.g. "D", "c", "J"
   Dimension dimension;       ///< SI dimension

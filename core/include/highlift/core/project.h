@@ -29,7 +29,9 @@ struct Component {
   std::string id;                 ///< unique in the project, e.g. "shaft_l3", "wtb_left"
   std::string type;               ///< catalogue type name
   std::string description;
-  std::map<std::string, Parameter> parameters;  ///< every parameter of the type, by name
+  std::map<std::string, Parameter> parameters;  ///< every scalar/integer/boolean parameter, by name
+  std::map<std::string, std::vector<std::vector<double>>> tables;  ///< table parameters (SI)
+  std::map<std::string, std::string> texts;     ///< text parameters
   std::map<std::string, std::string> labels;    ///< free metadata: "side": "left", "station": "3"
   SourceLocation where;
 };
