@@ -71,6 +71,13 @@ const ComponentTypeSpec* FindComponentType(std::string_view name);
 const std::vector<ComponentTypeSpec>& ElementTypes();
 const ComponentTypeSpec* FindElementType(std::string_view name);
 
+/// The names of all component types, in catalogue order (for messages and listings).
+std::vector<std::string> ComponentTypeNames();
+
+/// The component reference (docs/components.md) as Markdown, generated from the catalogue:
+/// every type with its ports and its parameters with units, defaults, ranges and sources.
+std::string CatalogueMarkdown();
+
 /// Closest names to `name` among `candidates` (edit distance), for "did you mean" messages.
 std::vector<std::string> Suggest(std::string_view name, const std::vector<std::string>& candidates,
                                  std::size_t max_results = 3);

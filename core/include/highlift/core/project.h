@@ -123,4 +123,10 @@ struct Project {
   const LoadCase* FindLoadCase(std::string_view name) const;
 };
 
+/// The first difference between two projects, as a readable sentence ("components[2]
+/// 'shaft_l1': parameter 'length': nominal 3 vs 3.5"), or "" when they are equal. Source
+/// locations (`where`) and `Project::file` are not compared: a project loaded from a file and
+/// the same project saved and loaded again are equal. Used by the round-trip tests.
+std::string DescribeDifference(const Project& a, const Project& b);
+
 }  // namespace highlift

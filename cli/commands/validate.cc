@@ -1,0 +1,125 @@
+// `highlift validate PROJECT.json [--json]`: reads the project file strictly and checks the
+// component graph. Exit 0 when the project is valid (warnings allowed), 2 when the file cannot be
+// read or the graph has errors (invalid input).
+#include <iostream>
+
+#include <nlohmann/json.hpp>
+
+#include "command.h"
+#include "highlift/core/error.h"
+#include "highlift/core/project_io.h"
+#include "highlift/core/validate.h"
+
+namespace highlift::cli {
+namespace {
+
+nlohmann::json LocationJson(const SourceLocation& where) {
+  nlohmann::json j = nlohmann::json::object();
+  if (!where.file.empty()) j["file"] = where.file;
+  if (!where.json_pointer.empty()) j["json_pointer"] = where.json_pointer;
+  if (where.line > 0) j["line"] = where.line;
+  if (where.column > 0) j["column"] = where.column;
+  return j;
+}
+
+nlohmann::json IssueJson(const ValidationIssue& issue) {
+  return {{"severity", issue.severity == ValidationIssue::Severity::kError ? "error" : "warning"},
+          {"component", issue.component},
+          {"port", issue.port},
+          {"message", issue.message},
+          {"location", LocationJson(issue.where)}};
+}
+
+/// "component 'x' port 'y': message (file:line:col at /pointer)".
+std::string IssueText(const ValidationIssue& issue) {
+  std::string s = issue.severity == ValidationIssue::Severity::kError ? "error: " : "warning: ";
+  s += issue.message;
+  if (!issue.where.empty()) s += " [" + issue.where.ToString() + "]";
+  return s;
+}
+
+class ValidateCommand : public Command {
+ public:
+  void Setup(CLI::App& app) override { options_.AddTo(app); }
+
+  int Run() override {
+    Project project;
+    try {
+      project = LoadProject(options_.project);
+    } catch (const InputError& e) {
+      // With --json the reader's error is the document; the message goes to stderr as well.
+      if (options_.json) {
+        nlohmann::json doc = {{"file", options_.project},
+                              {"ok", false},
+                              {"stage", "read"},
+                              {"issues", nlohmann::json::array({{{"severity", "error"},
+                                                                  {"component", ""},
+                                                                  {"port", ""},
+                                                                  {"message", e.message()},
+                                                                  {"location", LocationJson(e.where())}}})}};
+        std::cout << doc.dump(2) << "\n";
+      }
+      std::cerr << "highlift validate: error: " << e.what() << "\n";
+      return kInvalidInput;
+    }
+
+    const ValidationReport report = ValidateProject(project);
+    std::size_t errors = 0;
+    std::size_t warnings = 0;
+    for (const auto& issue : report.issues) {
+      (issue.severity == ValidationIssue::Severity::kError ? errors : warnings)++;
+    }
+    const nlohmann::json counts = {{"components", project.components.size()},
+                                   {"connections", project.connections.size()},
+                                   {"elements", project.elements.size()},
+                                   {"element_connections", project.element_connections.size()},
+                                   {"requirements", project.requirements.size()},
+                                   {"load_cases", project.load_cases.size()},
+                                   {"scenarios", project.scenarios.size()}};
+    if (options_.json) {
+      nlohmann::json issues = nlohmann::json::array();
+      for (const auto& issue : report.issues) issues.push_back(IssueJson(issue));
+      nlohmann::json doc = {{"file", options_.project},
+                            {"name", project.name},
+                            {"ok", report.ok()},
+                            {"stage", "graph"},
+                            {"errors", errors},
+                            {"warnings", warnings},
+                            {"counts", counts},
+                            {"issues", issues}};
+      std::cout << doc.dump(2) << "\n";
+    }
+    for (const auto& issue : report.issues) std::cerr << IssueText(issue) << "\n";
+    if (!report.ok()) {
+      std::cerr << "highlift validate: " << options_.project << ": " << errors << " error"
+                << (errors == 1 ? "" : "s") << " in the component graph; fix the issues above and run "
+                << "`highlift validate` again\n";
+      return kInvalidInput;
+    }
+    if (!options_.json) {
+      std::cout << "ok: " << options_.project << " (" << project.name << "): "
+                << project.components.size() << " components, " << project.connections.size()
+                << " connections";
+      if (!project.elements.empty()) {
+        std::cout << ", " << project.elements.size() << " elements, "
+                  << project.element_connections.size() << " element connections";
+      }
+      std::cout << ", " << project.requirements.size() << " requirements, "
+                << project.load_cases.size() << " load cases, " << project.scenarios.size()
+                << " scenarios";
+      if (warnings > 0) std::cout << ", " << warnings << " warning" << (warnings == 1 ? "" : "s");
+      std::cout << "\n";
+    }
+    return kSuccess;
+  }
+
+ private:
+  CommonOptions options_;
+};
+
+}  // namespace
+
+HIGHLIFT_REGISTER_COMMAND(ValidateCommand, "validate",
+                          "Check a project file: syntax, keys, units, ranges and the component graph")
+
+}  // namespace highlift::cli

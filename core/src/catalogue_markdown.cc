@@ -1,0 +1,99 @@
+// docs/components.md, generated from the catalogue (tests/core/catalogue_markdown_test.cc checks
+// that the committed file is up to date).
+#include <cmath>
+
+#include "highlift/core/catalogue.h"
+#include "highlift/core/text_table.h"
+
+namespace highlift {
+
+namespace {
+
+std::string Show(double si, const ParameterSpec& p) {
+  if (std::isinf(si)) return si > 0 ? "inf" : "-inf";
+  const std::string unit = p.unit.empty() ? "1" : p.unit;
+  return FormatNumber(FromSI(si, unit, p.dimension), 4);
+}
+
+std::string ShowDomain(const Domain& d, const ParameterSpec& p) {
+  if (d.is_point()) return Show(d.lo, p);
+  return "[" + Show(d.lo, p) + ", " + Show(d.hi, p) + "]";
+}
+
+std::string Escape(std::string s) {
+  std::string out;
+  for (char ch : s) {
+    if (ch == '|') out += "\\|";
+    else if (ch == '*') out += "\\*";
+    else out += ch;
+  }
+  return out;
+}
+
+std::string Code(const std::string& s) { return s.empty() ? "" : "`" + s + "`"; }
+
+std::string Kind(const ParameterSpec& p) {
+  switch (p.kind) {
+    case ParameterKind::kInteger: return "integer";
+    case ParameterKind::kBoolean: return "boolean";
+    case ParameterKind::kTable: return "table";
+    case ParameterKind::kText: return "text";
+    case ParameterKind::kScalar: break;
+  }
+  return "";
+}
+
+}  // namespace
+
+std::string CatalogueMarkdown() {
+  std::string md;
+  md += "# Component reference\n\n";
+  md += "<!-- Generated from core/src/catalogue.cc by highlift::CatalogueMarkdown(); do not edit by hand.\n";
+  md += "     Regenerate: HIGHLIFT_UPDATE_DOCS=1 ctest -R CatalogueMarkdown.DocsAreUpToDate -->\n\n";
+  md += "The drive-system component types of a project file ([project-format.md](project-format.md)). Each type\n"
+        "declares its ports and its parameters once, in `core/src/catalogue.cc`; the reader, the interval\n"
+        "propagator, the estimator, the database, the reduced models, the simulator and the Modelica exporter\n"
+        "all read that declaration.\n\n";
+  md += "Columns: **unit** is the display unit (a file may use any unit of the same dimension; inside\n"
+        "highlift all values are SI); **nominal** is the default value when the file gives none; **default\n"
+        "domain** the default interval (a single number: a point); **valid range** the physically valid\n"
+        "values (outside is an input error). **source** says where the default comes from: `domain.md sN (tag)`\n"
+        "is section N of the reference data with its tag (P published, P-low weak source, E engineering\n"
+        "estimate), `paper` the HighLift library paper, `estimate` a catalogue estimate with its reasoning.\n"
+        "Optional parameters without a nominal value stay unknown unless the file gives them.\n\n";
+  md += "Ports: the flange nearer the PDU along the power path is `input` (or `a`); gear `ratio` = input speed\n"
+        "/ output speed (branch gearbox: input / branch speed).\n\n";
+  md += "| type | name | ports |\n|---|---|---|\n";
+  for (const auto& t : ComponentTypes()) {
+    std::string ports;
+    for (const auto& p : t.ports) ports += (ports.empty() ? "" : ", ") + Code(p.name) + (p.required ? "" : " (optional)");
+    md += "| [" + Code(t.name) + "](#" + t.name + ") | " + t.display_name + " | " + ports + " |\n";
+  }
+  md += "\n";
+  for (const auto& t : ComponentTypes()) {
+    md += "## " + t.name + "\n\n";
+    md += "**" + t.display_name + "**. " + Escape(t.description) + "\n\n";
+    md += "| port | kind | required | meaning |\n|---|---|---|---|\n";
+    for (const auto& p : t.ports)
+      md += "| " + Code(p.name) + " | " + (p.kind == PortKind::kFlange ? "flange" : "signal") + " | " +
+            (p.required ? "yes" : "no") + " | " + Escape(p.description) + " |\n";
+    md += "\n";
+    if (t.parameters.empty()) continue;
+    md += "| parameter | symbol | unit | nominal | default domain | valid range | meaning | source |\n";
+    md += "|---|---|---|---|---|---|---|---|\n";
+    for (const auto& p : t.parameters) {
+      const std::string kind = Kind(p);
+      const bool text = p.kind == ParameterKind::kText || p.kind == ParameterKind::kTable;
+      std::string meaning = Escape(p.description);
+      if (!kind.empty()) meaning = "(" + kind + ") " + meaning;
+      if (p.optional) meaning += " (optional)";
+      md += "| " + Code(p.name) + " | " + Code(p.symbol) + " | " + (text ? "" : Code(p.unit)) + " | " +
+            (p.nominal ? Show(*p.nominal, p) : "") + " | " + (text ? "" : ShowDomain(p.default_domain, p)) + " | " +
+            (text ? "" : ShowDomain(p.valid_range, p)) + " | " + meaning + " | " + Escape(p.source) + " |\n";
+    }
+    md += "\n";
+  }
+  return md;
+}
+
+}  // namespace highlift

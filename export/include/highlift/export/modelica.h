@@ -1,0 +1,122 @@
+// Modelica export: writes the hand-written HighLift Modelica library and a model of a project
+// (Modelica 3.x text on top of the Modelica Standard Library 4.0.0).
+//
+// - An element network ("elements"/"element_connections") becomes a model that uses the MSL
+//   classes directly, with the project's instance names and parameters, so that a Modelica tool
+//   reproduces the MSL reference results.
+// - A drive-system project ("components"/"connections") becomes a model built from HighLift and
+//   MSL components: full resolution (each shaft split into settings.shaft_elements elements) or
+//   reduced (inertias lumped at gearboxes and stations), driven by a scenario's load case.
+//
+// Output is deterministic: the same project and options give byte-identical files.
+#pragma once
+
+#include <filesystem>
+#include <map>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "highlift/core/project.h"
+
+namespace highlift {
+
+/// Resolution of a drive-system model.
+enum class ModelResolution {
+  kFull,     ///< every shaft segment split into settings.shaft_elements spring-inertia elements
+  kReduced,  ///< inertias lumped at gearboxes and stations, one spring per segment
+};
+
+/// "full", "reduced".
+std::string ToString(ModelResolution resolution);
+/// Inverse of ToString; throws InputError naming the valid values.
+ModelResolution ModelResolutionFromString(std::string_view name);
+
+struct ModelicaExportOptions {
+  ModelResolution resolution = ModelResolution::kFull;  // drive-system models only
+  std::string scenario;             // scenario driving the model; empty: the first one, if any
+  std::string model_name;           // Modelica name of the model; empty: from the project name
+  bool tables_in_file = false;      // scenario tables in <model>.txt read by CombiTimeTable
+                                    // (else inline `table=[...]`)
+
+  /// Throws InputError when an option is invalid (e.g. a model name that is no identifier).
+  void Validate() const;
+};
+
+/// One generated text file, path relative to the output folder ("HighLift/package.mo").
+struct GeneratedFile {
+  std::string path;
+  std::string content;
+};
+
+/// What the export produced.
+struct ModelicaExportReport {
+  std::string model_name;              ///< Modelica name of the project model
+  std::string model_file;              ///< its path relative to the output folder
+  std::string kind;                    ///< "element network" or "drive system"
+  std::string scenario;                ///< scenario used (empty for element networks / none)
+  std::vector<GeneratedFile> files;    ///< every file written, in path order
+  std::map<std::string, std::string> renamed;  ///< project id -> Modelica name, where they differ
+  int component_count = 0;             ///< instances declared in the model
+  int connection_count = 0;            ///< connect() statements in the model
+
+  std::string BriefReport() const;
+};
+
+/// The HighLift library exactly as shipped (one class per file, package.mo/package.order),
+/// with paths such as "HighLift/Mechanical/ShaftBrake.mo", in path order.
+std::vector<GeneratedFile> HighLiftLibraryFiles();
+
+/// Generates the HighLift library and the project model in memory (nothing is written).
+/// Throws InputError for a project that cannot be exported (no elements and no components, an
+/// unknown element type, an unknown scenario, a parameter without a value, ...).
+ModelicaExportReport GenerateModelica(const Project& project, const ModelicaExportOptions& options);
+
+/// GenerateModelica, then writes every file below `output_dir` (created if needed). Files are
+/// written to a temporary name and renamed, so a failure never leaves half a file.
+ModelicaExportReport ExportModelica(const Project& project, const ModelicaExportOptions& options,
+                                    const std::filesystem::path& output_dir);
+
+// ---- Modelica text helpers (public because the CLI and the tests use them) --------------------
+
+/// True when `name` is a Modelica 3.x keyword (`model`, `end`, `der`, `time`-like reserved words
+/// of the grammar: algorithm, and, annotation, ..., within).
+bool IsModelicaKeyword(std::string_view name);
+
+/// True when `name` is a valid (non-quoted) Modelica identifier that is no keyword.
+bool IsModelicaIdentifier(std::string_view name);
+
+/// A valid Modelica identifier for `name`: characters outside [A-Za-z0-9_] become '_', a
+/// leading digit or an empty name gets the prefix "x_", a keyword gets the suffix "_".
+/// "shaft-l1" -> "shaft_l1", "1st" -> "x_1st", "end" -> "end_".
+std::string SanitizeModelicaIdentifier(std::string_view name);
+
+/// Assigns unique sanitised identifiers to project names, in insertion order: the first name
+/// that sanitises to "a_b" keeps it, a later one gets "a_b_2", "a_b_3", ... Reserved names (used
+/// by the generator itself) are never handed out.
+class IdentifierMap {
+ public:
+  explicit IdentifierMap(std::vector<std::string> reserved = {});
+  /// The identifier for `name` (the same on every call for the same name).
+  const std::string& Add(const std::string& name);
+  /// The identifier of a name added before; throws InternalError otherwise.
+  const std::string& Get(const std::string& name) const;
+  bool Contains(const std::string& name) const;
+  /// Names whose identifier differs from the name, name -> identifier.
+  std::map<std::string, std::string> Renamed() const;
+
+ private:
+  std::map<std::string, std::string> by_name_;
+  std::map<std::string, std::string> taken_;  // identifier -> name ("" for reserved)
+};
+
+/// `text` as the body of a Modelica string literal (the quotes are not added): backslash and
+/// double quote are escaped, and so are the control characters Modelica has escapes for
+/// (\a \b \f \n \r \t \v); other control characters are dropped.
+std::string EscapeModelicaString(std::string_view text);
+
+/// A Modelica real literal for a finite value: the shortest text that reads back to the same
+/// double ("0.1", "10000", "1e-06", "-2.5"). Throws InputError for inf/nan naming `what`.
+std::string FormatModelicaReal(double value, std::string_view what = "value");
+
+}  // namespace highlift

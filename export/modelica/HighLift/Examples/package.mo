@@ -1,0 +1,4 @@
+within HighLift;
+package Examples "Small test models of the HighLift components"
+  extends Modelica.Icons.ExamplesPackage;
+end Examples;

@@ -1,0 +1,172 @@
+// Element networks (MSL element types) to a Modelica model that uses the MSL classes directly,
+// with the project's instance names and parameter names, so that a Modelica tool reproduces
+// the MSL reference results.
+#include <algorithm>
+#include <set>
+
+#include "highlift/core/catalogue.h"
+#include "highlift/core/error.h"
+#include "model_writer.h"
+#include "writers.h"
+
+namespace highlift::modelica_detail {
+namespace {
+
+// Element type -> Modelica class.
+const std::map<std::string, std::string>& ClassOfElementType() {
+  static const std::map<std::string, std::string> classes = [] {
+    std::map<std::string, std::string> m;
+    const std::string rotational = "Modelica.Mechanics.Rotational.";
+    for (const char* c : {"Fixed", "Inertia", "Spring", "Damper", "SpringDamper", "ElastoBacklash",
+                          "ElastoBacklash2", "IdealGear", "IdealPlanetary", "LossyGear",
+                          "BearingFriction", "Brake", "Clutch", "OneWayClutch"})
+      m[c] = rotational + "Components." + c;
+    for (const char* c : {"Torque", "ConstantTorque", "TorqueStep", "LinearSpeedDependentTorque",
+                          "QuadraticSpeedDependentTorque", "SignTorque", "EddyCurrentTorque", "Speed",
+                          "Position", "ConstantSpeed"})
+      m[c] = rotational + "Sources." + c;
+    for (const char* c : {"AngleSensor", "SpeedSensor", "TorqueSensor", "RelAngleSensor",
+                          "RelSpeedSensor", "PowerSensor", "MultiSensor"})
+      m[c] = rotational + "Sensors." + c;
+    for (const char* c : {"Constant", "Step", "Ramp", "Sine", "Cosine", "Pulse", "TimeTable"})
+      m[c] = std::string("Modelica.Blocks.Sources.") + c;
+    for (const char* c : {"Product", "Feedback", "Gain", "Add"})
+      m[c] = std::string("Modelica.Blocks.Math.") + c;
+    for (const char* c : {"ShaftBrake", "NonlinearSpring", "TorqueLimiter", "LossyInertia",
+                          "GeneralRotationalElement", "GearedRotaryActuator", "WingTipBrake",
+                          "Disconnector", "Jam"})
+      m[c] = std::string("HighLift.Mechanical.") + c;
+    return m;
+  }();
+  return classes;
+}
+
+std::string FormatInteger(double value) { return std::to_string(static_cast<long long>(value)); }
+
+// Parameters of EddyCurrentTorque that belong to the heat capacitor we add beside it.
+bool IsHeatCapacitorParameter(const std::string& name) {
+  return name == "C_heatPort" || name == "T_heatPort_start";
+}
+
+}  // namespace
+
+ModelOutput WriteElementNetwork(const Project& project, const std::string& model_name,
+                                const ModelicaExportOptions& options) {
+  ModelOutput out;
+  const Scenario* scenario = SelectScenario(project, options);
+  if (scenario) out.scenario = scenario->name;
+
+  IdentifierMap ids({model_name, "Modelica", "HighLift", "time"});
+  for (const auto& e : project.elements) ids.Add(e.id);
+
+  // Which ports are connected (support flanges switch useSupport on).
+  std::set<std::pair<std::string, std::string>> connected;
+  for (const auto& c : project.element_connections) {
+    connected.insert({c.a.component, c.a.port});
+    connected.insert({c.b.component, c.b.port});
+  }
+
+  ModelWriter writer(model_name);
+  std::vector<std::pair<std::string, std::string>> extra_connects;
+  for (const auto& e : project.elements) {
+    const auto cls = ClassOfElementType().find(e.type);
+    if (cls == ClassOfElementType().end())
+      throw InputError("element '" + e.id + "': element type '" + e.type +
+                           "' has no Modelica class in the exporter (export/src/"
+                           "element_network_writer.cc); use a type listed by 'highlift info --elements'",
+                       e.where);
+    const ComponentTypeSpec* spec = FindElementType(e.type);
+    Instance inst{cls->second, ids.Get(e.id), {}, e.description};
+    bool heat_port = false;
+    if (spec) {
+      for (const ParameterSpec& p : spec->parameters) {
+        if (p.kind == ParameterKind::kTable) {
+          auto t = e.tables.find(p.name);
+          if (t == e.tables.end()) continue;  // MSL default table
+          inst.modifiers.push_back({p.name, FormatMatrix(t->second, "element '" + e.id + "' table '" + p.name + "'"), {}});
+          continue;
+        }
+        if (p.kind == ParameterKind::kText) continue;
+        auto it = e.parameters.find(p.name);
+        if (it == e.parameters.end()) continue;
+        const Parameter& value = it->second;
+        if (value.provenance == Provenance::kDefault) {
+          if (!value.nominal && !p.optional)
+            throw InputError("element '" + e.id + "' (" + e.type + "): parameter '" + p.name +
+                                 "' has no value and no default: give it in the project file",
+                             e.where);
+          continue;  // the MSL default applies
+        }
+        if (IsHeatCapacitorParameter(p.name)) continue;
+        const double v = RequireValue(e, p.name);
+        const std::string what = "element '" + e.id + "' parameter '" + p.name + "'";
+        if (p.kind == ParameterKind::kBoolean) {
+          if (p.name == "useHeatPort") heat_port = v != 0.0;
+          inst.modifiers.push_back({p.name, v != 0.0 ? "true" : "false", {}});
+        } else if (p.kind == ParameterKind::kInteger) {
+          inst.modifiers.push_back({p.name, FormatInteger(v), {}});
+        } else if (p.name.size() > 6 && p.name.substr(p.name.size() - 6) == "_start") {
+          // Initial values: MSL start values with fixed=true.
+          inst.modifiers.push_back({p.name.substr(0, p.name.size() - 6), "",
+                                    {{"start", FormatModelicaReal(v, what)}, {"fixed", "true"}}});
+        } else {
+          inst.modifiers.push_back({p.name, FormatModelicaReal(v, what), {}});
+        }
+      }
+    }
+    if (connected.count({e.id, "support"})) inst.modifiers.push_back({"useSupport", "true", {}});
+    writer.AddInstance(inst);
+    if (heat_port) {
+      // The heat port of the eddy current brake goes into a lumped heat capacitor.
+      const std::string cap = ids.Add(e.id + "_heatCapacitor");
+      double C = 1.0, T0 = 293.15;
+      if (auto it = e.parameters.find("C_heatPort"); it != e.parameters.end() && it->second.nominal)
+        C = *it->second.nominal;
+      if (auto it = e.parameters.find("T_heatPort_start"); it != e.parameters.end() && it->second.nominal)
+        T0 = *it->second.nominal;
+      writer.AddInstance({"Modelica.Thermal.HeatTransfer.Components.HeatCapacitor", cap,
+                          {{"C", FormatModelicaReal(C, "C_heatPort"), {}},
+                           {"T", "", {{"start", FormatModelicaReal(T0, "T_heatPort_start")}, {"fixed", "true"}}}},
+                          "heat capacity on the heat port of " + e.id});
+      extra_connects.emplace_back(ids.Get(e.id) + ".heatPort", cap + ".port");
+    }
+  }
+  for (const auto& c : project.element_connections) {
+    if (!ids.Contains(c.a.component) || !ids.Contains(c.b.component))
+      throw InputError("element connection " + c.a.ToString() + " - " + c.b.ToString() +
+                           ": refers to an unknown element; connect elements listed under 'elements'",
+                       c.where);
+    writer.AddConnect(ids.Get(c.a.component) + "." + c.a.port, ids.Get(c.b.component) + "." + c.b.port);
+  }
+  for (auto& [a, b] : extra_connects) writer.AddConnect(a, b);
+
+  Experiment experiment;
+  experiment.tolerance = project.settings.relative_tolerance;
+  experiment.interval = project.settings.output_interval;
+  if (scenario) {
+    experiment.stop_time = scenario->stop_time;
+  } else if (auto it = project.settings.values.find("stop_time"); it != project.settings.values.end()) {
+    experiment.stop_time = it->second;
+  }
+  writer.SetExperiment(experiment);
+  writer.SetDescription(project.name);
+  std::string doc = "<html>\n<p>Element network of the highlift project <strong>" + HtmlEscape(project.name) +
+                    "</strong>, exported by <code>highlift export</code>. Every element is the Modelica "
+                    "Standard Library 4.0.0 class of its element type, with the project's instance "
+                    "names and parameters.</p>\n";
+  if (!project.description.empty()) doc += "<p>" + HtmlEscape(project.description) + "</p>\n";
+  const auto renamed = ids.Renamed();
+  if (!renamed.empty()) {
+    doc += "<p>Renamed to valid Modelica identifiers:</p>\n<ul>\n";
+    for (const auto& [from, to] : renamed) doc += "<li>" + HtmlEscape(from) + " &rarr; " + to + "</li>\n";
+    doc += "</ul>\n";
+  }
+  writer.SetDocumentation(doc + "</html>");
+  out.text = writer.Render();
+  out.renamed = renamed;
+  out.instances = writer.instance_count();
+  out.connects = writer.connect_count();
+  return out;
+}
+
+}  // namespace highlift::modelica_detail

@@ -1,0 +1,159 @@
+// Front end of the Modelica export: options, the library files, model naming, writing files.
+#include <algorithm>
+#include <cctype>
+#include <fstream>
+#include <sstream>
+
+#include "highlift/core/error.h"
+#include "highlift/export/modelica.h"
+#include "writers.h"
+
+namespace highlift {
+namespace modelica_detail {
+
+const Scenario* SelectScenario(const Project& project, const ModelicaExportOptions& options) {
+  if (options.scenario.empty()) return project.scenarios.empty() ? nullptr : &project.scenarios.front();
+  for (const auto& s : project.scenarios)
+    if (s.name == options.scenario) return &s;
+  std::string names;
+  for (const auto& s : project.scenarios) names += (names.empty() ? "" : ", ") + s.name;
+  throw InputError("unknown scenario '" + options.scenario + "': " +
+                   (names.empty() ? std::string("the project has no scenarios")
+                                  : "use one of " + names));
+}
+
+double RequireValue(const Component& component, const std::string& parameter) {
+  auto it = component.parameters.find(parameter);
+  if (it == component.parameters.end())
+    throw InputError("component '" + component.id + "' (" + component.type + "): parameter '" + parameter +
+                         "' is missing: give it in the project file",
+                     component.where);
+  const Parameter& p = it->second;
+  if (p.nominal) return *p.nominal;
+  std::string remedy = !p.database_part.empty()
+                           ? "it refers to database part '" + p.database_part +
+                                 "': resolve it with 'highlift estimate' first, or give a value"
+                           : "it has only an interval domain: give a value (e.g. {\"value\": ..., \"min\": ..., \"max\": ...})";
+  throw InputError("component '" + component.id + "' (" + component.type + "): parameter '" + parameter +
+                       "' has no value to export; " + remedy,
+                   p.where.empty() ? component.where : p.where);
+}
+
+std::string HtmlEscape(std::string_view text) {
+  std::string out;
+  for (char c : text) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+}  // namespace modelica_detail
+
+namespace {
+
+// "A380-class flap transmission (both wings)" -> "A380ClassFlapTransmissionBothWings".
+std::string ModelNameFromProject(const std::string& project_name) {
+  std::string name;
+  bool start_word = true;
+  for (char ch : project_name) {
+    const auto c = static_cast<unsigned char>(ch);
+    if (std::isalnum(c) && c < 0x80) {
+      name += start_word ? static_cast<char>(std::toupper(c)) : ch;
+      start_word = false;
+    } else {
+      start_word = true;
+    }
+  }
+  if (name.empty()) name = "HighLiftModel";
+  if (std::isdigit(static_cast<unsigned char>(name.front()))) name = "Model" + name;
+  if (name == "HighLift" || name == "Modelica") name += "Model";
+  return SanitizeModelicaIdentifier(name);
+}
+
+void WriteFileAtomically(const std::filesystem::path& path, const std::string& content) {
+  std::filesystem::create_directories(path.parent_path());
+  std::filesystem::path tmp = path;
+  tmp += ".tmp";
+  {
+    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+    if (!out)
+      throw InputError("cannot write '" + tmp.string() + "': check that the output folder is writable");
+    out << content;
+    out.close();
+    if (!out) throw InputError("writing '" + tmp.string() + "' failed: check the free disk space");
+  }
+  std::error_code ec;
+  std::filesystem::rename(tmp, path, ec);
+  if (ec) throw InputError("cannot rename '" + tmp.string() + "' to '" + path.string() + "': " + ec.message());
+}
+
+}  // namespace
+
+void ModelicaExportOptions::Validate() const {
+  if (!model_name.empty() && !IsModelicaIdentifier(model_name))
+    throw InputError("model name '" + model_name +
+                     "' is no Modelica identifier: use letters, digits and '_', starting with a letter, "
+                     "and no keyword (e.g. '" + SanitizeModelicaIdentifier(model_name) + "')");
+  if (model_name == "HighLift" || model_name == "Modelica")
+    throw InputError("model name '" + model_name + "' would hide the package of the same name: choose another");
+}
+
+std::vector<GeneratedFile> HighLiftLibraryFiles() {
+  std::vector<GeneratedFile> files;
+  for (const auto& [path, content] : modelica_detail::EmbeddedLibrary())
+    files.push_back({std::string(path), std::string(content)});
+  std::sort(files.begin(), files.end(), [](const GeneratedFile& a, const GeneratedFile& b) { return a.path < b.path; });
+  return files;
+}
+
+std::string ModelicaExportReport::BriefReport() const {
+  std::ostringstream s;
+  s << "Modelica model '" << model_name << "' (" << kind;
+  if (!scenario.empty()) s << ", scenario '" << scenario << "'";
+  s << "): " << component_count << " instances, " << connection_count << " connections; " << files.size()
+    << " files (" << model_file << " and the HighLift package)";
+  return s.str();
+}
+
+ModelicaExportReport GenerateModelica(const Project& project, const ModelicaExportOptions& options) {
+  options.Validate();
+  ModelicaExportReport report;
+  report.model_name = options.model_name.empty() ? ModelNameFromProject(project.name) : options.model_name;
+  modelica_detail::ModelOutput model;
+  if (!project.components.empty()) {
+    report.kind = "drive system, " + ToString(options.resolution);
+    model = modelica_detail::WriteDriveSystem(project, report.model_name, options);
+  } else if (!project.elements.empty()) {
+    report.kind = "element network";
+    model = modelica_detail::WriteElementNetwork(project, report.model_name, options);
+  } else {
+    throw InputError("project '" + project.name +
+                     "' has neither components nor elements: there is nothing to export; add "
+                     "'components' (a drive system) or 'elements' (an element network)");
+  }
+  report.model_file = report.model_name + ".mo";
+  report.scenario = model.scenario;
+  report.renamed = model.renamed;
+  report.component_count = model.instances;
+  report.connection_count = model.connects;
+  report.files = HighLiftLibraryFiles();
+  report.files.push_back({report.model_file, model.text});
+  for (auto& f : model.extra_files) report.files.push_back(std::move(f));
+  std::sort(report.files.begin(), report.files.end(),
+            [](const GeneratedFile& a, const GeneratedFile& b) { return a.path < b.path; });
+  return report;
+}
+
+ModelicaExportReport ExportModelica(const Project& project, const ModelicaExportOptions& options,
+                                    const std::filesystem::path& output_dir) {
+  ModelicaExportReport report = GenerateModelica(project, options);
+  for (const auto& f : report.files) WriteFileAtomically(output_dir / f.path, f.content);
+  return report;
+}
+
+}  // namespace highlift

@@ -1,0 +1,135 @@
+// Propagation: HC4-revise (forward evaluation, backward projection on the expression DAG) driven
+// by an agenda that re-revises only constraints whose variables shrank by more than a relative
+// threshold; explanations of infeasibility; optional shaving by bisection.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "highlift/icsp/network.h"
+
+namespace highlift::icsp {
+
+/// Order in which pending constraints are revised.
+enum class Schedule : std::uint8_t {
+  kFifo,   ///< first in, first out (AC3 style; quadratic on long chains at ratio 0)
+  kLifo,   ///< last in, first out (depth first)
+  kSweep,  ///< alternating forward/backward sweeps over the constraint order (default): a
+           ///< narrowing travels the whole length of a chain in one sweep
+};
+std::string ToString(Schedule s);
+std::optional<Schedule> ScheduleFromString(const std::string& s);
+
+struct PropagationOptions {
+  double ratio = 0.0;                       ///< re-revise the neighbours of a variable only when
+                                            ///< its width shrank by more than ratio * old width
+                                            ///< (0: the exact fixed point, no bound changes left)
+  std::int64_t max_revisions = 200'000'000; ///< stop (kStoppedAtLimit) after this many revisions
+  double max_seconds = 60.0;                ///< stop (kStoppedAtLimit) after this wall time [s]
+  Schedule schedule = Schedule::kSweep;
+  bool requeue_self = true;                 ///< put a constraint back on the agenda when it
+                                            ///< narrowed its own variables (HC4-revise is not
+                                            ///< idempotent); false mimics IBEX's CtcPropag
+  bool record_reasons = true;               ///< remember which constraint set each bound (for
+                                            ///< explanations); costs two ints per variable
+  /// Throws InputError naming the bad option.
+  void Validate() const;
+};
+
+enum class Status : std::uint8_t {
+  kFixedPoint,      ///< nothing more follows (within the ratio); the box encloses all solutions
+  kInfeasible,      ///< proved: a domain ran empty, no point satisfies all constraints
+  kStoppedAtLimit,  ///< gave up at max_revisions or max_seconds; the box is still sound
+};
+std::string ToString(Status s);
+std::optional<Status> StatusFromString(const std::string& s);
+
+struct PropagationReport {
+  Status status = Status::kFixedPoint;
+  std::string message;
+  std::int64_t revisions = 0;        ///< constraint revisions
+  std::int64_t narrowings = 0;       ///< variable domains that shrank
+  std::int64_t requeued = 0;         ///< constraints put back on the agenda
+  int empty_variable = -1;           ///< kInfeasible: the variable whose domain ran empty (-1: an
+                                     ///< intermediate expression or the relation itself)
+  int empty_constraint = -1;         ///< kInfeasible: the constraint being revised then
+  double seconds = 0.0;              ///< wall time of the propagation
+
+  /// One line: "fixed point after 1234 revisions (0.8 ms)".
+  std::string BriefReport() const;
+  /// Counters and timings as an aligned table.
+  std::string FullReport() const;
+};
+
+/// Which constraint last moved a bound, and when (revision counter); -1 for the initial domain.
+struct BoundReason {
+  int constraint = -1;
+  std::int64_t time = -1;
+};
+
+/// Runs propagation on boxes of one network; reuses its scratch memory between runs.
+class Propagator {
+ public:
+  explicit Propagator(const Network& network, PropagationOptions options = {});
+  /// Contracts `box` with all constraints (or only those with enabled[c] != 0 when `enabled` is
+  /// not empty). On kInfeasible the box is left as it was when the domain ran empty.
+  PropagationReport Propagate(Box& box, const std::vector<char>& enabled = {});
+  const PropagationOptions& options() const { return options_; }
+  void set_options(const PropagationOptions& o);
+  /// After Propagate with record_reasons: reasons of the lower and upper bound of each variable.
+  const std::vector<BoundReason>& lower_reasons() const { return lower_reason_; }
+  const std::vector<BoundReason>& upper_reasons() const { return upper_reason_; }
+
+ private:
+  const Network& network_;
+  PropagationOptions options_;
+  std::vector<BoundReason> lower_reason_, upper_reason_;
+};
+
+/// Convenience: Propagator(network, options).Propagate(box).
+PropagationReport Propagate(const Network& network, Box& box, const PropagationOptions& options = {});
+
+/// One link of the chain through which a conflict arose: `constraint` moved a bound of
+/// `variable` to `bound`.
+struct ChainStep {
+  int constraint = -1;
+  int variable = -1;
+  bool lower = true;
+  double bound = 0.0;
+  std::int64_t time = 0;
+};
+
+struct Explanation {
+  bool infeasible = false;         ///< the network is proved infeasible
+  bool physics_alone = false;      ///< infeasible even without any requirement
+  std::vector<int> conflict;       ///< a minimal set of requirement constraints that conflict
+                                   ///< (each one is needed; physics constraints are background)
+  std::vector<ChainStep> chain;    ///< in causal order, ending where the domain ran empty
+  int empty_variable = -1;
+  int empty_constraint = -1;
+  int propagations = 0;            ///< propagations spent on the search
+  std::string text;                ///< the explanation in words
+};
+
+/// When propagation of `initial` proves infeasibility, finds a minimal conflicting set of
+/// requirements by deletion filtering (physics constraints kept as background) and the chain of
+/// constraints and parameters through which the conflict arose. When it does not, returns an
+/// Explanation with infeasible == false.
+Explanation Explain(const Network& network, const Box& initial, PropagationOptions options = {});
+
+struct ShavingOptions {
+  std::vector<VariableId> variables;  ///< variables whose bounds to shave
+  int slices = 8;                     ///< a bound slice is 1/slices of the current width
+  int max_propagations = 400;         ///< overall limit of trial propagations
+  /// Throws InputError naming the bad option.
+  void Validate() const;
+};
+
+/// Branch and prune on chosen variables: a slice at a bound whose propagation proves it
+/// infeasible is cut off, repeatedly. Starts from and keeps a propagated fixed point.
+PropagationReport Shave(const Network& network, Box& box, const PropagationOptions& options,
+                        const ShavingOptions& shaving);
+
+}  // namespace highlift::icsp

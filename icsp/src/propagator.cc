@@ -1,0 +1,711 @@
+#include "highlift/icsp/propagator.h"
+
+#include <algorithm>
+#include <bit>
+#include <cfenv>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+
+#include "highlift/core/error.h"
+#include "highlift/core/text_table.h"
+
+namespace highlift::icsp {
+
+using FI = FastInterval;
+
+std::string ToString(Schedule s) {
+  switch (s) {
+    case Schedule::kFifo: return "fifo";
+    case Schedule::kLifo: return "lifo";
+    case Schedule::kSweep: return "sweep";
+  }
+  return "?";
+}
+std::optional<Schedule> ScheduleFromString(const std::string& s) {
+  for (Schedule k : {Schedule::kFifo, Schedule::kLifo, Schedule::kSweep}) {
+    if (ToString(k) == s) return k;
+  }
+  return std::nullopt;
+}
+
+std::string ToString(Status s) {
+  switch (s) {
+    case Status::kFixedPoint: return "fixed_point";
+    case Status::kInfeasible: return "infeasible";
+    case Status::kStoppedAtLimit: return "stopped_at_limit";
+  }
+  return "?";
+}
+std::optional<Status> StatusFromString(const std::string& s) {
+  for (Status k : {Status::kFixedPoint, Status::kInfeasible, Status::kStoppedAtLimit}) {
+    if (ToString(k) == s) return k;
+  }
+  return std::nullopt;
+}
+
+void PropagationOptions::Validate() const {
+  if (!(ratio >= 0.0 && ratio < 1.0)) {
+    throw InputError("icsp: propagation ratio " + std::to_string(ratio) +
+                     " is outside [0, 1); use 0 for the exact fixed point or e.g. 0.01");
+  }
+  if (max_revisions <= 0) {
+    throw InputError("icsp: max_revisions " + std::to_string(max_revisions) + " must be > 0");
+  }
+  if (!(max_seconds > 0.0)) {
+    throw InputError("icsp: max_seconds " + std::to_string(max_seconds) + " must be > 0");
+  }
+}
+
+void ShavingOptions::Validate() const {
+  if (slices < 2) throw InputError("icsp: shaving slices " + std::to_string(slices) + " must be >= 2");
+  if (max_propagations < 0) {
+    throw InputError("icsp: shaving max_propagations " + std::to_string(max_propagations) + " must be >= 0");
+  }
+}
+
+std::string PropagationReport::BriefReport() const {
+  char buf[256];
+  const char* what = status == Status::kFixedPoint   ? "fixed point"
+                     : status == Status::kInfeasible ? "proved infeasible"
+                                                     : "stopped at a limit";
+  std::snprintf(buf, sizeof buf, "%s after %lld revisions (%.3g ms)", what,
+                static_cast<long long>(revisions), seconds * 1e3);
+  std::string s = buf;
+  if (!message.empty()) s += ": " + message;
+  return s;
+}
+
+std::string PropagationReport::FullReport() const {
+  TextTable t({"quantity", "value"}, {1});
+  t.AddRow({"status", ToString(status)});
+  t.AddRow({"revisions", std::to_string(revisions)});
+  t.AddRow({"narrowings", std::to_string(narrowings)});
+  t.AddRow({"re-queued constraints", std::to_string(requeued)});
+  t.AddRow({"time [ms]", FormatNumber(seconds * 1e3, 4)});
+  if (empty_variable >= 0) t.AddRow({"empty variable", std::to_string(empty_variable)});
+  if (empty_constraint >= 0) t.AddRow({"empty at constraint", std::to_string(empty_constraint)});
+  std::string s = BriefReport() + "\n" + t.ToString();
+  return s;
+}
+
+namespace {
+
+/// Pending constraints. Sweep order uses a two-level bitset so that finding the next pending
+/// constraint in either direction costs a few word operations.
+class Agenda {
+ public:
+  Agenda(int n, Schedule schedule) : n_(n), schedule_(schedule) {
+    words_.assign((n + 63) / 64, 0);
+    summary_.assign((words_.size() + 63) / 64, 0);
+    if (schedule != Schedule::kSweep) list_.reserve(n);
+  }
+  bool empty() const { return count_ == 0; }
+  bool Push(int c) {
+    std::uint64_t& w = words_[c >> 6];
+    const std::uint64_t bit = std::uint64_t{1} << (c & 63);
+    if (w & bit) return false;
+    w |= bit;
+    summary_[c >> 12] |= std::uint64_t{1} << ((c >> 6) & 63);
+    ++count_;
+    if (schedule_ != Schedule::kSweep) list_.push_back(c);
+    return true;
+  }
+  int Pop() {
+    int c;
+    if (schedule_ == Schedule::kFifo) {
+      c = list_[head_++];
+      if (head_ > 4096 && head_ * 2 > list_.size()) {
+        list_.erase(list_.begin(), list_.begin() + static_cast<std::ptrdiff_t>(head_));
+        head_ = 0;
+      }
+    } else if (schedule_ == Schedule::kLifo) {
+      c = list_.back();
+      list_.pop_back();
+    } else {
+      c = forward_ ? NextFrom(cursor_) : PrevFrom(cursor_);
+      if (c < 0) {
+        forward_ = !forward_;
+        c = forward_ ? NextFrom(0) : PrevFrom(n_ - 1);
+      }
+      cursor_ = forward_ ? c + 1 : c - 1;
+    }
+    Clear(c);
+    return c;
+  }
+
+ private:
+  void Clear(int c) {
+    std::uint64_t& w = words_[c >> 6];
+    w &= ~(std::uint64_t{1} << (c & 63));
+    if (w == 0) summary_[c >> 12] &= ~(std::uint64_t{1} << ((c >> 6) & 63));
+    --count_;
+  }
+  int NextFrom(int c) const {
+    if (c >= n_) return -1;
+    int wi = c >> 6;
+    std::uint64_t w = words_[wi] & (~std::uint64_t{0} << (c & 63));
+    if (w) return (wi << 6) + std::countr_zero(w);
+    // next non-empty word after wi
+    int si = (wi + 1) >> 6;
+    if (((wi + 1) & 63) != 0 || si < static_cast<int>(summary_.size())) {
+      if (si < static_cast<int>(summary_.size())) {
+        std::uint64_t s = summary_[si] & (((wi + 1) & 63) ? (~std::uint64_t{0} << ((wi + 1) & 63)) : ~std::uint64_t{0});
+        while (true) {
+          if (s) {
+            const int word = (si << 6) + std::countr_zero(s);
+            return (word << 6) + std::countr_zero(words_[word]);
+          }
+          if (++si >= static_cast<int>(summary_.size())) break;
+          s = summary_[si];
+        }
+      }
+    }
+    return -1;
+  }
+  int PrevFrom(int c) const {
+    if (c < 0) return -1;
+    int wi = c >> 6;
+    const int shift = 63 - (c & 63);
+    std::uint64_t w = words_[wi] & (~std::uint64_t{0} >> shift);
+    if (w) return (wi << 6) + 63 - std::countl_zero(w);
+    if (wi == 0) return -1;
+    const int prev = wi - 1;
+    int si = prev >> 6;
+    std::uint64_t s = summary_[si] & (~std::uint64_t{0} >> (63 - (prev & 63)));
+    while (true) {
+      if (s) {
+        const int word = (si << 6) + 63 - std::countl_zero(s);
+        return (word << 6) + 63 - std::countl_zero(words_[word]);
+      }
+      if (--si < 0) break;
+      s = summary_[si];
+    }
+    return -1;
+  }
+
+  int n_;
+  Schedule schedule_;
+  std::vector<std::uint64_t> words_, summary_;
+  std::vector<int> list_;
+  std::size_t head_ = 0;
+  std::int64_t count_ = 0;
+  int cursor_ = 0;
+  bool forward_ = true;
+};
+
+inline FI ToFast(const Interval& x) { return FI(x.lower(), x.upper(), true); }
+inline Interval ToSafe(const FI& x) { return Interval(x.lower(), x.upper(), true); }
+
+FI RelationRange(Relation r) {
+  switch (r) {
+    case Relation::kEqual: return FI(0.0, 0.0, true);
+    case Relation::kLessEqual: return FI(-kInf, 0.0, true);
+    case Relation::kGreaterEqual: return FI(0.0, kInf, true);
+  }
+  return FI::whole();
+}
+
+/// Evaluates a monotone function at a point in round-to-nearest, as its author expects.
+double CallNearest(const MonotoneFunction& m, const std::vector<double>& x) {
+  std::fesetround(FE_TONEAREST);
+  const double y = m.f(std::span<const double>(x.data(), x.size()));
+  std::fesetround(FE_UPWARD);
+  return y;
+}
+
+/// Outward widening of a computed function value by its declared relative error.
+double Down(const MonotoneFunction& m, double y) {
+  if (std::isnan(y)) return -kInf;
+  return std::nextafter(y - m.relative_error * std::fabs(y), -kInf);
+}
+double Up(const MonotoneFunction& m, double y) {
+  if (std::isnan(y)) return kInf;
+  return std::nextafter(y + m.relative_error * std::fabs(y), kInf);
+}
+
+class Engine {
+ public:
+  Engine(const Network& net, const PropagationOptions& opt, std::vector<BoundReason>& lo_reason,
+         std::vector<BoundReason>& hi_reason)
+      : net_(net), opt_(opt), lo_reason_(lo_reason), hi_reason_(hi_reason) {
+    val_.resize(net.num_nodes());
+  }
+
+  PropagationReport Run(Box& box, const std::vector<char>& enabled) {
+    PropagationReport report;
+    const auto t0 = std::chrono::steady_clock::now();
+    const int nc = net_.num_constraints();
+    if (opt_.record_reasons) {
+      lo_reason_.assign(box.size(), BoundReason{});
+      hi_reason_.assign(box.size(), BoundReason{});
+    }
+    for (const Interval& d : box) {
+      if (IsEmpty(d)) {
+        report.status = Status::kInfeasible;
+        report.empty_variable = static_cast<int>(&d - box.data());
+        report.message = "variable '" + net_.variable(VariableId{report.empty_variable}).name +
+                         "' starts with an empty domain";
+        return report;
+      }
+    }
+    Agenda agenda(nc, opt_.schedule);
+    enabled_ = enabled.empty() ? nullptr : &enabled;
+    for (int c = 0; c < nc; ++c) {
+      if (!enabled_ || (*enabled_)[c]) agenda.Push(c);
+    }
+    RoundingGuard guard;  // upward rounding for the whole loop (FastInterval arithmetic)
+    box_ = &box;
+    while (!agenda.empty()) {
+      if (report.revisions >= opt_.max_revisions) {
+        report.status = Status::kStoppedAtLimit;
+        report.message = "reached max_revisions = " + std::to_string(opt_.max_revisions);
+        break;
+      }
+      if ((report.revisions & 1023) == 1023 &&
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() > opt_.max_seconds) {
+        report.status = Status::kStoppedAtLimit;
+        report.message = "reached max_seconds = " + FormatNumber(opt_.max_seconds, 3) + " s";
+        break;
+      }
+      const int c = agenda.Pop();
+      ++report.revisions;
+      changed_.clear();
+      const bool ok = Revise(c, report.revisions);
+      if (!ok) {
+        report.status = Status::kInfeasible;
+        report.empty_constraint = c;
+        report.empty_variable = empty_variable_;
+        const std::string where = empty_variable_ >= 0
+            ? "the domain of '" + net_.variable(VariableId{empty_variable_}).name + "' ran empty"
+            : "no values of its parameters satisfy it";
+        const auto& info = net_.constraint(ConstraintId{c}).info;
+        report.message = where + " at constraint '" + (info.label.empty() ? std::to_string(c) : info.label) + "'";
+        break;
+      }
+      for (const auto& [v, significant] : changed_) {
+        ++report.narrowings;
+        if (!significant) continue;
+        for (int other : net_.ConstraintsOf(VariableId{v})) {
+          if (enabled_ && !(*enabled_)[other]) continue;
+          if (other == c && !opt_.requeue_self) continue;
+          if (agenda.Push(other)) ++report.requeued;
+        }
+      }
+    }
+    report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if (report.status == Status::kFixedPoint) {
+      report.message = opt_.ratio > 0.0 ? "no domain shrinks by more than the ratio " + FormatNumber(opt_.ratio, 3)
+                                        : "no bound changes any more";
+    }
+    return report;
+  }
+
+ private:
+  /// Writes back a narrowed domain; false when empty.
+  bool Update(int v, const FI& narrowed, int c, std::int64_t time) {
+    Interval& d = (*box_)[v];
+    if (IsEmpty(narrowed)) {
+      empty_variable_ = v;
+      return false;
+    }
+    const double lo = std::max(d.lower(), narrowed.lower());
+    const double hi = std::min(d.upper(), narrowed.upper());
+    if (!(lo <= hi)) {
+      empty_variable_ = v;
+      return false;
+    }
+    const bool lo_moved = lo > d.lower();
+    const bool hi_moved = hi < d.upper();
+    if (!lo_moved && !hi_moved) return true;
+    bool significant = true;
+    if (opt_.ratio > 0.0) {
+      const double old_w = d.upper() - d.lower();
+      const double new_w = hi - lo;
+      if (std::isfinite(old_w)) significant = (old_w - new_w) > opt_.ratio * old_w;
+      else significant = std::isfinite(new_w) || (lo_moved && !std::isfinite(d.lower())) ||
+                         (hi_moved && !std::isfinite(d.upper()));
+    }
+    if (opt_.record_reasons) {
+      if (lo_moved) lo_reason_[v] = {c, time};
+      if (hi_moved) hi_reason_[v] = {c, time};
+    }
+    d = Interval(lo, hi, true);
+    changed_.push_back({v, significant});
+    return true;
+  }
+
+  bool Revise(int c, std::int64_t time) {
+    empty_variable_ = -1;
+    const Constraint& k = net_.constraint(ConstraintId{c});
+    if (k.kind == Constraint::Kind::kMonotone) return ReviseMonotone(c, k, time);
+    const auto topo = net_.TopoOf(ConstraintId{c});
+    const Box& box = *box_;
+    // Forward: evaluate every node once (operands first).
+    for (int id : topo) {
+      const ExprNode& n = net_.node(ExprId{id});
+      FI& y = val_[id];
+      switch (n.op) {
+        case Op::kVar: y = ToFast(box[n.a]); break;
+        case Op::kConst: y = ToFast(n.value); break;
+        case Op::kAdd: y = val_[n.a] + val_[n.b]; break;
+        case Op::kSub: y = val_[n.a] - val_[n.b]; break;
+        case Op::kMul: y = val_[n.a] * val_[n.b]; break;
+        case Op::kDiv: y = icsp::Div(val_[n.a], val_[n.b]); break;
+        case Op::kNeg: y = -val_[n.a]; break;
+        case Op::kSqr: y = icsp::Sqr(val_[n.a]); break;
+        case Op::kPowInt: y = icsp::PowInt(val_[n.a], n.n); break;
+        case Op::kPowReal: y = icsp::PowReal(val_[n.a], n.p); break;
+        case Op::kSqrt: y = icsp::Sqrt(val_[n.a]); break;
+        case Op::kExp: y = icsp::Exp(val_[n.a]); break;
+        case Op::kLog: y = icsp::Log(val_[n.a]); break;
+        case Op::kAbs: y = icsp::Abs(val_[n.a]); break;
+        case Op::kMin: y = icsp::Min(val_[n.a], val_[n.b]); break;
+        case Op::kMax: y = icsp::Max(val_[n.a], val_[n.b]); break;
+        case Op::kSin: y = icsp::Sin(val_[n.a]); break;
+        case Op::kCos: y = icsp::Cos(val_[n.a]); break;
+      }
+      if (IsEmpty(y)) return false;
+    }
+    // The relation.
+    FI& root = val_[k.root];
+    root = Meet(root, RelationRange(k.relation));
+    if (IsEmpty(root)) return false;
+    // Backward: project each node's narrowed value onto its operands (parents before children).
+    for (auto it = topo.rbegin(); it != topo.rend(); ++it) {
+      const int id = *it;
+      const ExprNode& n = net_.node(ExprId{id});
+      const FI& y = val_[id];
+      switch (n.op) {
+        case Op::kVar:
+        case Op::kConst: continue;
+        case Op::kAdd: {
+          FI& a = val_[n.a];
+          a = AddBackward(y, a, val_[n.b]);
+          if (IsEmpty(a)) return false;
+          FI& b = val_[n.b];
+          b = AddBackward(y, b, val_[n.a]);
+          if (IsEmpty(b)) return false;
+          continue;
+        }
+        case Op::kSub: {
+          FI& a = val_[n.a];
+          a = SubBackwardLeft(y, a, val_[n.b]);
+          if (IsEmpty(a)) return false;
+          FI& b = val_[n.b];
+          b = SubBackwardRight(y, val_[n.a], b);
+          if (IsEmpty(b)) return false;
+          continue;
+        }
+        case Op::kMul: {
+          FI& a = val_[n.a];
+          a = MulBackward(y, a, val_[n.b]);
+          if (IsEmpty(a)) return false;
+          FI& b = val_[n.b];
+          b = MulBackward(y, b, val_[n.a]);
+          if (IsEmpty(b)) return false;
+          continue;
+        }
+        case Op::kDiv: {
+          FI& a = val_[n.a];
+          a = DivBackwardLeft(y, a, val_[n.b]);
+          if (IsEmpty(a)) return false;
+          FI& b = val_[n.b];
+          b = DivBackwardRight(y, val_[n.a], b);
+          if (IsEmpty(b)) return false;
+          continue;
+        }
+        case Op::kMin:
+        case Op::kMax: {
+          FI& a = val_[n.a];
+          FI& b = val_[n.b];
+          const FI a0 = a;
+          a = n.op == Op::kMin ? MinBackward(y, a, b) : MaxBackward(y, a, b);
+          if (IsEmpty(a)) return false;
+          b = n.op == Op::kMin ? MinBackward(y, b, a0) : MaxBackward(y, b, a0);
+          if (IsEmpty(b)) return false;
+          continue;
+        }
+        default: break;
+      }
+      FI& a = val_[n.a];
+      switch (n.op) {
+        case Op::kNeg: a = NegBackward(y, a); break;
+        case Op::kSqr: a = SqrBackward(y, a); break;
+        case Op::kPowInt: a = PowIntBackward(y, a, n.n); break;
+        case Op::kPowReal: a = PowRealBackward(y, a, n.p); break;
+        case Op::kSqrt: a = SqrtBackward(y, a); break;
+        case Op::kExp: a = ExpBackward(y, a); break;
+        case Op::kLog: a = LogBackward(y, a); break;
+        case Op::kAbs: a = AbsBackward(y, a); break;
+        case Op::kSin: a = SinBackward(y, a); break;
+        case Op::kCos: a = CosBackward(y, a); break;
+        default: break;
+      }
+      if (IsEmpty(a)) return false;
+    }
+    // Write back the variables.
+    for (int id : topo) {
+      const ExprNode& n = net_.node(ExprId{id});
+      if (n.op != Op::kVar) continue;
+      if (!Update(n.a, val_[id], c, time)) return false;
+    }
+    return true;
+  }
+
+  bool ReviseMonotone(int c, const Constraint& k, std::int64_t time) {
+    const MonotoneFunction& m = net_.monotone(k.monotone);
+    const auto scope = net_.ScopeOf(ConstraintId{c});
+    const int y = scope[0];
+    const std::size_t n = scope.size() - 1;
+    const Box& box = *box_;
+    // Corner giving the smallest (low = true) or largest value of f.
+    auto corner = [&](bool low, std::vector<double>& x) {
+      x.resize(n);
+      for (std::size_t i = 0; i < n; ++i) {
+        const Interval& d = box[scope[i + 1]];
+        const bool inc = m.monotonicity[i] == Monotonicity::kIncreasing;
+        x[i] = (low == inc) ? d.lower() : d.upper();
+      }
+    };
+    auto finite = [](const std::vector<double>& x) {
+      return std::all_of(x.begin(), x.end(), [](double v) { return std::isfinite(v); });
+    };
+    std::vector<double> xlo, xhi;
+    corner(true, xlo);
+    corner(false, xhi);
+    const double flo = finite(xlo) ? Down(m, CallNearest(m, xlo)) : -kInf;
+    const double fhi = finite(xhi) ? Up(m, CallNearest(m, xhi)) : kInf;
+    if (!Update(y, FI(std::min(flo, fhi), std::max(flo, fhi), true), c, time)) return false;
+    const Interval yd = box[y];
+    // Backward on each argument: with the others at the corner that favours the bound, bisect
+    // for the last value of x_i that is still infeasible (everything beyond it is cut off).
+    for (std::size_t i = 0; i < n; ++i) {
+      const int v = scope[i + 1];
+      const bool inc = m.monotonicity[i] == Monotonicity::kIncreasing;
+      Interval d = box[v];
+      if (!std::isfinite(d.lower()) || !std::isfinite(d.upper())) continue;
+      // f_max(t): largest f over the box with x_i = t; rises with t when inc.
+      // Lower bound of x_i (inc): need f_max(t) >= y.lo. Upper bound (inc): need f_min(t) <= y.hi.
+      for (int side = 0; side < 2; ++side) {
+        const bool use_max = (side == 0);  // side 0 uses f_max against y.lo, side 1 f_min against y.hi
+        std::vector<double> x;
+        corner(!use_max, x);
+        if (!finite(x)) continue;
+        auto feasible = [&](double t) {
+          x[i] = t;
+          const double f = CallNearest(m, x);
+          return use_max ? Up(m, f) >= yd.lower() : Down(m, f) <= yd.upper();
+        };
+        // Infeasible end: for inc and f_max, small t is infeasible (cut the lower bound).
+        const bool cut_lower = (use_max == inc);
+        double good = cut_lower ? d.upper() : d.lower();
+        double bad = cut_lower ? d.lower() : d.upper();
+        if (feasible(bad)) continue;
+        if (!feasible(good)) {
+          empty_variable_ = v;
+          return false;
+        }
+        for (int s = 0; s < m.bisection_steps; ++s) {
+          const double mid = 0.5 * (good + bad);
+          if (mid == good || mid == bad) break;
+          if (feasible(mid)) good = mid; else bad = mid;
+        }
+        d = cut_lower ? Interval(bad, d.upper(), true) : Interval(d.lower(), bad, true);
+      }
+      if (!Update(v, ToFast(d), c, time)) return false;
+    }
+    return true;
+  }
+
+  const Network& net_;
+  const PropagationOptions& opt_;
+  std::vector<BoundReason>& lo_reason_;
+  std::vector<BoundReason>& hi_reason_;
+  std::vector<FI> val_;
+  std::vector<std::pair<int, bool>> changed_;
+  Box* box_ = nullptr;
+  const std::vector<char>* enabled_ = nullptr;
+  int empty_variable_ = -1;
+};
+
+}  // namespace
+
+Propagator::Propagator(const Network& network, PropagationOptions options)
+    : network_(network), options_(options) {
+  options_.Validate();
+}
+
+void Propagator::set_options(const PropagationOptions& o) {
+  o.Validate();
+  options_ = o;
+}
+
+PropagationReport Propagator::Propagate(Box& box, const std::vector<char>& enabled) {
+  HIGHLIFT_CHECK(static_cast<int>(box.size()) == network_.num_variables(),
+                 "icsp: box size differs from the number of variables");
+  HIGHLIFT_CHECK(enabled.empty() || static_cast<int>(enabled.size()) == network_.num_constraints(),
+                 "icsp: enabled mask size differs from the number of constraints");
+  Engine engine(network_, options_, lower_reason_, upper_reason_);
+  return engine.Run(box, enabled);
+}
+
+PropagationReport Propagate(const Network& network, Box& box, const PropagationOptions& options) {
+  Propagator p(network, options);
+  return p.Propagate(box);
+}
+
+namespace {
+std::string Label(const Network& net, int c) {
+  const auto& info = net.constraint(ConstraintId{c}).info;
+  return info.label.empty() ? "constraint " + std::to_string(c) : info.label;
+}
+std::string Describe(const Network& net, int c) {
+  const auto& info = net.constraint(ConstraintId{c}).info;
+  std::string s = (info.role == ConstraintRole::kRequirement ? "requirement '" : "'") + Label(net, c) + "'";
+  if (!info.description.empty()) s += " (" + info.description + ")";
+  s += ": " + net.ConstraintText(ConstraintId{c});
+  return s;
+}
+std::string Value(const Network& net, int v, double x) {
+  const auto& var = net.variable(VariableId{v});
+  return FormatNumber(x, 6) + (var.unit.empty() ? "" : " (SI)");
+}
+}  // namespace
+
+Explanation Explain(const Network& net, const Box& initial, PropagationOptions options) {
+  options.record_reasons = false;
+  Explanation ex;
+  Propagator prop(net, options);
+  const int nc = net.num_constraints();
+  std::vector<char> enabled(nc, 1);
+  auto infeasible = [&](const std::vector<char>& mask) {
+    Box b = initial;
+    ++ex.propagations;
+    return prop.Propagate(b, mask).status == Status::kInfeasible;
+  };
+  if (!infeasible(enabled)) return ex;
+  ex.infeasible = true;
+  std::vector<int> requirements;
+  for (int c = 0; c < nc; ++c) {
+    if (net.constraint(ConstraintId{c}).info.role == ConstraintRole::kRequirement) requirements.push_back(c);
+  }
+  // Deletion filtering: drop each requirement whose removal keeps the conflict.
+  for (int r : requirements) {
+    enabled[r] = 0;
+    if (!infeasible(enabled)) enabled[r] = 1;
+  }
+  for (int r : requirements) {
+    if (enabled[r]) ex.conflict.push_back(r);
+  }
+  ex.physics_alone = ex.conflict.empty();
+  // The chain: propagate the minimal conflict again, recording who set each bound, and follow
+  // the reasons back from the constraint where the domain ran empty.
+  options.record_reasons = true;
+  prop.set_options(options);
+  Box box = initial;
+  const PropagationReport rep = prop.Propagate(box, enabled);
+  ex.empty_constraint = rep.empty_constraint;
+  ex.empty_variable = rep.empty_variable;
+  std::vector<ChainStep> steps;
+  std::vector<char> seen_var(net.num_variables(), 0), seen_ctr(nc, 0);
+  std::vector<int> frontier{rep.empty_constraint};
+  seen_ctr[rep.empty_constraint] = 1;
+  const std::size_t kMaxSteps = 16;
+  while (!frontier.empty() && steps.size() < kMaxSteps) {
+    std::vector<int> next;
+    for (int c : frontier) {
+      for (int v : net.ScopeOf(ConstraintId{c})) {
+        if (seen_var[v]) continue;
+        seen_var[v] = 1;
+        for (int side = 0; side < 2; ++side) {
+          const BoundReason& r = side == 0 ? prop.lower_reasons()[v] : prop.upper_reasons()[v];
+          if (r.constraint < 0) continue;
+          steps.push_back({r.constraint, v, side == 0, side == 0 ? box[v].lower() : box[v].upper(), r.time});
+          if (!seen_ctr[r.constraint]) {
+            seen_ctr[r.constraint] = 1;
+            next.push_back(r.constraint);
+          }
+        }
+      }
+    }
+    frontier = std::move(next);
+  }
+  if (steps.size() > kMaxSteps) steps.resize(kMaxSteps);
+  std::sort(steps.begin(), steps.end(), [](const ChainStep& a, const ChainStep& b) { return a.time < b.time; });
+  ex.chain = steps;
+
+  std::string t;
+  if (ex.physics_alone) {
+    t += "The model is infeasible even without requirements: the component parameter domains "
+         "contradict the physics.\n";
+  } else {
+    t += ex.conflict.size() == 1 ? "This requirement cannot be met:\n"
+                                 : "These requirements cannot be met together:\n";
+    for (int c : ex.conflict) t += "  - " + Describe(net, c) + "\n";
+    t += "Dropping any one of them removes this conflict.\n";
+  }
+  t += "How the conflict arises:\n";
+  int k = 1;
+  for (const ChainStep& s : ex.chain) {
+    const auto& var = net.variable(VariableId{s.variable});
+    t += "  " + std::to_string(k++) + ". " + Describe(net, s.constraint) + "\n       gives " + var.name +
+         (s.lower ? " >= " : " <= ") + Value(net, s.variable, s.bound) + "\n";
+  }
+  t += "  " + std::to_string(k) + ". " + Describe(net, rep.empty_constraint) + "\n       ";
+  if (rep.empty_variable >= 0) {
+    const Interval d = box[rep.empty_variable];
+    t += "leaves no value for " + net.variable(VariableId{rep.empty_variable}).name + " in " +
+         ToString(d, 6) + "\n";
+  } else {
+    t += "cannot hold for any values of its parameters in their narrowed domains\n";
+  }
+  ex.text = t;
+  return ex;
+}
+
+PropagationReport Shave(const Network& net, Box& box, const PropagationOptions& options,
+                        const ShavingOptions& shaving) {
+  shaving.Validate();
+  Propagator prop(net, options);
+  PropagationReport total = prop.Propagate(box);
+  if (total.status != Status::kFixedPoint) return total;
+  int used = 0;
+  bool progress = true;
+  while (progress && used < shaving.max_propagations) {
+    progress = false;
+    for (VariableId v : shaving.variables) {
+      for (int side = 0; side < 2 && used < shaving.max_propagations; ++side) {
+        while (used < shaving.max_propagations) {
+          const Interval d = box[v.value];
+          const double w = d.upper() - d.lower();
+          if (!std::isfinite(w) || w <= 0.0) break;
+          const double cut = side == 0 ? d.lower() + w / shaving.slices : d.upper() - w / shaving.slices;
+          Box trial = box;
+          trial[v.value] = side == 0 ? Interval(d.lower(), cut, true) : Interval(cut, d.upper(), true);
+          const PropagationReport r = prop.Propagate(trial);
+          ++used;
+          total.revisions += r.revisions;
+          total.seconds += r.seconds;
+          if (r.status != Status::kInfeasible) break;
+          box[v.value] = side == 0 ? Interval(cut, d.upper(), true) : Interval(d.lower(), cut, true);
+          const PropagationReport after = prop.Propagate(box);
+          total.revisions += after.revisions;
+          total.seconds += after.seconds;
+          progress = true;
+          if (after.status != Status::kFixedPoint) {
+            total.status = after.status;
+            total.message = after.message;
+            total.empty_constraint = after.empty_constraint;
+            total.empty_variable = after.empty_variable;
+            return total;
+          }
+        }
+      }
+    }
+  }
+  total.message = "shaved with " + std::to_string(used) + " trial propagations";
+  return total;
+}
+
+}  // namespace highlift::icsp

@@ -1,0 +1,89 @@
+// Steady-state sizing of a drive-system project: the torque flow from the actuator loads up to
+// the PDU for every load case, point values and guaranteed interval enclosures; recommended
+// torque-limiter and brake settings; margins against the components' allowables.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "highlift/core/domain.h"
+#include "highlift/core/project.h"
+
+namespace highlift::reduced_models {
+
+/// A point value (parameters at their nominal values) and a guaranteed enclosure (parameters
+/// over their interval domains).
+struct Bounded {
+  double nominal = 0.0;
+  Domain bounds = Domain::Point(0.0);
+};
+
+struct ComponentTorque {
+  std::string component;
+  std::string type;
+  double speed = 0.0;        ///< rad/s at the input flange
+  Bounded torque;            ///< N*m at the input flange, at the component's own speed (positive resists motion)
+};
+
+struct LoadCaseSizing {
+  std::string load_case;
+  std::string direction;     ///< "extend" / "retract"
+  double pdu_speed = 0.0;    ///< rad/s, the largest speed of the case's PDU profile
+  std::vector<ComponentTorque> components;  ///< power-flow order, PDU first
+  Bounded pdu_torque;        ///< N*m, PDU output torque, both sides
+  Bounded pdu_power;         ///< W, output power: torque * speed
+  Bounded pdu_input_power;   ///< W, divided by the PDU efficiency
+};
+
+/// A recommended setting: factor x operating torque, with the rule's range of factors.
+struct SettingRecommendation {
+  std::string component;
+  std::string parameter;     ///< e.g. "lockout_torque_extend", "static_capacity"
+  std::string rule;          ///< e.g. "1.2-1.4 x max operating wing torque (domain.md s6)"
+  Bounded operating;         ///< N*m, the torque the rule refers to
+  double factor = 0.0;       ///< recommended factor
+  double factor_min = 0.0;
+  double factor_max = 0.0;
+  double recommended = 0.0;  ///< N*m = factor * nominal operating torque
+  Domain recommended_robust; ///< N*m, settings within the rule over the whole enclosure
+                             ///< [factor_min * op.hi, factor_max * op.lo] (empty when none)
+  std::optional<double> current;  ///< N*m, the project's value
+  double current_factor = 0.0;    ///< current / nominal operating torque
+  bool ok = true;                 ///< current factor within [factor_min, factor_max]
+  bool robust = true;             ///< current within the rule for every operating torque of the enclosure
+};
+
+struct AllowableMargin {
+  std::string component;
+  std::string allowable_name;  ///< e.g. "torque capacity (allowable shear stress)"
+  double load = 0.0;           ///< N*m, the largest operating torque (upper bound), own speed
+  double allowable = 0.0;      ///< N*m
+  double margin = 0.0;         ///< allowable / load - 1
+};
+
+struct SizingReport {
+  std::string project;
+  std::vector<LoadCaseSizing> cases;
+  std::vector<SettingRecommendation> settings;
+  std::vector<AllowableMargin> margins;
+  double shaft_mass = 0.0;     ///< kg, all torque shafts
+  bool ok() const;             ///< every current setting within its rule and every margin >= 0
+  std::string BriefReport() const;
+  std::string FullReport() const;
+  nlohmann::json ToJson() const;
+};
+
+struct SizingOptions {
+  bool intervals = true;       ///< also compute enclosures over the parameter domains
+};
+
+/// Throws InputError when the project has no PDU, no load case, or a value the laws need.
+SizingReport Size(const Project& project, const SizingOptions& options = {});
+
+/// Total mass of the torque shafts [kg] (nominal values).
+double ShaftMass(const Project& project);
+
+}  // namespace highlift::reduced_models

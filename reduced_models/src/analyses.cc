@@ -1,0 +1,551 @@
+#include "highlift/reduced_models/analyses.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <functional>
+#include <numbers>
+
+#include "graph_model.h"
+#include "highlift/core/error.h"
+#include "highlift/core/text_table.h"
+#include "highlift/reduced_models/modal.h"
+#include "highlift/reduced_models/single_dof.h"
+#include "torque_flow.h"
+
+namespace highlift::reduced_models {
+namespace {
+
+using detail::Interval;
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kEigenSlack = 1e-9;  // relative widening of corner eigenvalues for round-off
+
+std::string Fmt(double v, int digits = 4) { return FormatNumber(v, digits); }
+double Hz(double omega) { return omega / (2.0 * std::numbers::pi); }
+
+int ElementsOf(const Project& project, int requested) {
+  return requested > 0 ? requested : project.settings.shaft_elements;
+}
+
+Transmission Nominal(const detail::TransmissionDraft<double>& d) {
+  return d.Project([](double x) { return x; }, [](double x) { return x; });
+}
+
+}  // namespace
+
+LumpedModel BuildProjectModel(const Project& project, Reduction reduction, int elements_per_segment) {
+  const detail::Graph g = detail::BuildGraph(project);
+  return BuildLumpedModel(Nominal(detail::BuildTransmission<double>(g, {})), reduction,
+                          ElementsOf(project, elements_per_segment));
+}
+
+double FirstEigenfrequency(const Project& project) {
+  const detail::Graph g = detail::BuildGraph(project);
+  const auto draft = detail::BuildTransmission<double>(g, {});
+  const LumpedModel m = BuildLumpedModel(Nominal(draft), Reduction::kFullResolution, project.settings.shaft_elements);
+  return ComputeModes(m, {{m.NodeOfPoint(draft.point_of_node[0])}, 0}).FirstElasticOmega();
+}
+
+ModesReport AnalyseModes(const Project& project, const ModesOptions& options) {
+  const detail::Graph g = detail::BuildGraph(project);
+  const auto draft = detail::BuildTransmission<double>(g, {});
+  const Transmission t = Nominal(draft);
+  ModesReport report;
+  report.project = project.name;
+  report.elements_per_segment = ElementsOf(project, options.elements_per_segment);
+  for (Reduction rule : {Reduction::kFullResolution, Reduction::kAccumulated, Reduction::kTwoMassesPerSection}) {
+    const LumpedModel m = BuildLumpedModel(t, rule, report.elements_per_segment);
+    ModelModes mm;
+    mm.reduction = rule;
+    mm.degrees_of_freedom = static_cast<int>(m.nodes.size());
+    const ModalResult free = ComputeModes(m, {{}, 0});
+    for (std::size_t k = free.rigid_body_modes; k < free.omega.size() && mm.free_hz.size() < static_cast<std::size_t>(options.modes); ++k)
+      mm.free_hz.push_back(Hz(free.omega[k]));
+    const int pdu = m.NodeOfPoint(draft.point_of_node[0]);
+    const ModalResult clamped = ComputeModes(m, {{pdu}, options.modes});
+    for (int k = 0; k < static_cast<int>(clamped.omega.size()) && k < options.modes; ++k) {
+      mm.clamped_hz.push_back(Hz(clamped.omega[k]));
+      std::vector<double> shape(m.nodes.size());
+      const double largest = std::max(clamped.shapes.col(k).cwiseAbs().maxCoeff(), 1e-300);
+      for (std::size_t i = 0; i < m.nodes.size(); ++i) shape[i] = clamped.shapes(static_cast<Eigen::Index>(i), k) / largest;
+      mm.clamped_shapes.push_back(std::move(shape));
+    }
+    for (const auto& node : m.nodes) mm.node_names.push_back(node.name);
+    report.models.push_back(std::move(mm));
+  }
+  const ModelModes& full = report.models[0];
+  for (ModelModes& mm : report.models) {
+    if (!full.free_hz.empty() && !mm.free_hz.empty()) mm.first_free_error = mm.free_hz[0] / full.free_hz[0] - 1.0;
+    if (!full.clamped_hz.empty() && !mm.clamped_hz.empty())
+      mm.first_clamped_error = mm.clamped_hz[0] / full.clamped_hz[0] - 1.0;
+  }
+  return report;
+}
+
+std::string ModesReport::BriefReport() const {
+  std::string out = "modes of '" + project + "':";
+  for (const auto& m : models)
+    out += " " + ToString(m.reduction) + " " + std::to_string(m.degrees_of_freedom) + " DOF first " +
+           (m.free_hz.empty() ? std::string("-") : Fmt(m.free_hz[0])) + " Hz free, " +
+           (m.clamped_hz.empty() ? std::string("-") : Fmt(m.clamped_hz[0])) + " Hz PDU clamped;";
+  return out;
+}
+
+std::string ModesReport::FullReport() const {
+  std::string out = "Lumped models and modes: " + project + " (full resolution: " +
+                    std::to_string(elements_per_segment) + " sub-elements per shaft segment)\n";
+  TextTable table({"model", "DOF", "free modes [Hz]", "first error", "PDU clamped [Hz]", "first error"}, {1, 3, 5});
+  for (const auto& m : models) {
+    auto list = [](const std::vector<double>& v) {
+      std::string s;
+      for (double x : v) s += (s.empty() ? "" : ", ") + Fmt(x);
+      return s;
+    };
+    table.AddRow({ToString(m.reduction), std::to_string(m.degrees_of_freedom), list(m.free_hz),
+                  Fmt(100.0 * m.first_free_error, 3) + " %", list(m.clamped_hz), Fmt(100.0 * m.first_clamped_error, 3) + " %"});
+  }
+  return out + table.ToString();
+}
+
+nlohmann::json ModesReport::ToJson() const {
+  nlohmann::json j = {{"project", project}, {"elements_per_segment", elements_per_segment}};
+  j["models"] = nlohmann::json::array();
+  for (const auto& m : models)
+    j["models"].push_back({{"reduction", ToString(m.reduction)}, {"degrees_of_freedom", m.degrees_of_freedom},
+                           {"free_hz", m.free_hz}, {"clamped_hz", m.clamped_hz},
+                           {"first_free_error", m.first_free_error}, {"first_clamped_error", m.first_clamped_error},
+                           {"nodes", m.node_names}, {"clamped_shapes", m.clamped_shapes}});
+  return j;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Peak loads
+
+namespace {
+
+struct Focus {
+  int root = -1;                       ///< graph node the part starts at (-1: whole graph)
+  int stop = -1;                       ///< graph node held fixed
+};
+
+/// Single-DOF oscillator of the part in focus at nominal values, with its first mode.
+struct FocusModel {
+  detail::TransmissionDraft<double> draft;
+  LumpedModel model;
+  SingleDof oscillator;
+  Eigen::VectorXd phi;                 ///< first mode, mass-normalised, over the model nodes
+  int stop_node = -1;
+};
+
+FocusModel Reduce(const detail::Graph& g, const Focus& f, int elements) {
+  FocusModel fm;
+  fm.draft = detail::BuildTransmission<double>(g, {}, f.root);
+  fm.model = BuildLumpedModel(Nominal(fm.draft), Reduction::kFullResolution, elements);
+  fm.stop_node = fm.model.NodeOfPoint(fm.draft.point_of_node[f.stop]);
+  fm.oscillator = ReduceToSingleDof(fm.model, {fm.stop_node});
+  fm.phi = ComputeModes(fm.model, {{fm.stop_node}, 1}).shapes.col(0);
+  return fm;
+}
+
+/// Enclosure of (w1, J*) over the parameter domains: w1 is monotone (rises with every c, falls
+/// with every J) and J* rises with every J, so the soft-heavy and stiff-light corners bound them.
+void Enclose(const detail::Graph& g, const Focus& f, int elements, const detail::ParameterMode& mode, Interval* omega,
+             Interval* J_star) {
+  const auto wide = detail::BuildTransmission<Interval>(g, mode, f.root);
+  const auto soft_heavy = wide.Project([](const Interval& x) { return x.hi; }, [](const Interval& x) { return x.lo; });
+  const auto stiff_light = wide.Project([](const Interval& x) { return x.lo; }, [](const Interval& x) { return x.hi; });
+  const LumpedModel heavy = BuildLumpedModel(soft_heavy, Reduction::kFullResolution, elements);
+  const LumpedModel light = BuildLumpedModel(stiff_light, Reduction::kFullResolution, elements);
+  const int stop = heavy.NodeOfPoint(wide.point_of_node[f.stop]);
+  ModalOptions modal;
+  modal.clamped = {stop};
+  modal.mode_shapes = 0;
+  const double omega_lo = ComputeModes(heavy, modal).FirstElasticOmega();
+  const double omega_hi = ComputeModes(light, modal).FirstElasticOmega();
+  double J_lo = 0.0, J_hi = 0.0;
+  for (std::size_t i = 0; i < heavy.nodes.size(); ++i)
+    if (static_cast<int>(i) != stop) {
+      J_hi += heavy.nodes[i].J;
+      J_lo += light.nodes[i].J;
+    }
+  *omega = Interval(omega_lo * (1 - kEigenSlack), omega_hi * (1 + kEigenSlack));
+  *J_star = Interval(J_lo * (1 - kEigenSlack), J_hi * (1 + kEigenSlack));
+}
+
+/// Per graph node, what the reduced models read of it (reflected to the PDU speed), and the
+/// steady flows the rupture speed needs, for one parameter mode. Computed once per mode.
+struct ModeData {
+  detail::ParameterMode mode;
+  std::vector<Interval> J;       ///< concentrated inertia of the node
+  std::vector<Interval> link_c;  ///< stiffness of the node's link (shaft or elastic component), 0 if rigid
+  std::vector<Interval> link_J;  ///< distributed inertia of a shaft
+  detail::Flow<Interval> back;   ///< aiding airloads, no friction
+  detail::Flow<Interval> drag;   ///< friction only
+};
+
+ModeData Evaluate(const detail::Graph& g, const detail::ParameterMode& mode, const std::map<std::string, double>& aiding,
+                  double w) {
+  ModeData d;
+  d.mode = mode;
+  const auto n = detail::SpeedRatios<Interval>(g, mode);
+  const std::size_t count = g.nodes.size();
+  d.J.assign(count, Interval(0.0));
+  d.link_c.assign(count, Interval(0.0));
+  d.link_J.assign(count, Interval(0.0));
+  for (std::size_t i = 0; i < count; ++i) {
+    const Component& c = *g.nodes[i].component;
+    const Interval n2 = n[i] * n[i];
+    if (c.type == "torque_shaft") {
+      d.link_c[i] = detail::ShaftSegmentStiffness<Interval>(c, mode) * n2;
+      d.link_J[i] = detail::ShaftSegmentInertia<Interval>(c, mode) * n2;
+      continue;
+    }
+    d.J[i] = detail::ComponentInertia<Interval>(c, mode) * n2;
+    if (const auto stiffness = detail::ComponentStiffness<Interval>(c, mode)) d.link_c[i] = *stiffness * n2;
+  }
+  d.back = detail::SolveFlow<Interval>(g, mode, aiding, w, false);
+  d.drag = detail::SolveFlow<Interval>(g, mode, {}, w, true);
+  return d;
+}
+
+/// First-order share of each uncertain parameter in the width of tau = w w1 J*: modal
+/// sensitivities d(w1^2)/dc = (dphi)^2, d(w1^2)/dJ_i = -w1^2 phi_i^2 (mass-normalised phi),
+/// times the widths of the reflected c and J when only that parameter spans its domain.
+std::vector<ParameterShare> Rank(const detail::Graph& g, const Focus& f, const FocusModel& fm, double w,
+                                 const std::vector<ModeData>& singles,
+                                 const std::function<double(const ModeData&)>& w_width) {
+  const LumpedModel& m = fm.model;
+  const double omega = fm.oscillator.omega, J = fm.oscillator.J_star;
+  std::vector<double> dJ(m.nodes.size(), 0.0), dc(m.springs.size(), 0.0);
+  for (std::size_t i = 0; i < m.nodes.size(); ++i)
+    if (static_cast<int>(i) != fm.stop_node) dJ[i] = w * (omega - J * omega * fm.phi[i] * fm.phi[i] / 2.0);
+  for (std::size_t s = 0; s < m.springs.size(); ++s) {
+    const auto& spring = m.springs[s];
+    const double d = fm.phi[spring.a] - (spring.b >= 0 ? fm.phi[spring.b] : 0.0);
+    dc[s] = w * J * d * d / (2.0 * omega);
+  }
+  // Per transmission point: d tau / d J_point; per link: d tau / d c_link (all its springs
+  // carry n c) and d tau / d J_link (J/n per element, halves at the element ends).
+  std::vector<double> dJ_point(fm.draft.points.size(), 0.0), dc_link(fm.draft.links.size(), 0.0),
+      dJ_link(fm.draft.links.size(), 0.0);
+  for (std::size_t p = 0; p < fm.draft.points.size(); ++p) {
+    const int node = m.NodeOfPoint(static_cast<int>(p));
+    if (node >= 0) dJ_point[p] = dJ[node];
+  }
+  std::vector<int> springs_of_link(fm.draft.links.size(), 0);
+  for (const auto& spring : m.springs)
+    if (spring.link >= 0) ++springs_of_link[spring.link];
+  for (std::size_t s = 0; s < m.springs.size(); ++s) {
+    const int l = m.springs[s].link;
+    if (l < 0) continue;
+    const double k = springs_of_link[l];
+    dc_link[l] += dc[s] * k;
+    dJ_link[l] += 0.5 * (dJ[m.springs[s].a] + (m.springs[s].b >= 0 ? dJ[m.springs[s].b] : 0.0)) / k;
+  }
+  std::vector<bool> in_focus(g.nodes.size(), f.root < 0);
+  if (f.root >= 0)
+    for (int i : g.Subtree(f.root)) in_focus[i] = true;
+  std::vector<ParameterShare> out;
+  double total = 0.0;
+  for (const ModeData& one : singles) {
+    double width = 0.0;
+    for (std::size_t i = 0; i < g.nodes.size(); ++i) {
+      if (!in_focus[i]) continue;
+      const int p = fm.draft.point_of_node[i];
+      const int l = fm.draft.link_of_node[i];
+      if (p >= 0) width += std::abs(dJ_point[p]) * one.J[i].width();
+      if (l >= 0) width += std::abs(dc_link[l]) * one.link_c[i].width() + std::abs(dJ_link[l]) * one.link_J[i].width();
+    }
+    if (w_width) width += omega * J * w_width(one);
+    if (width > 0.0) {
+      out.push_back({one.mode.component + "." + one.mode.parameter, width, 0.0});
+      total += width;
+    }
+  }
+  for (auto& p : out) p.share = p.width / total;
+  std::sort(out.begin(), out.end(), [](const auto& a, const auto& b) { return a.width > b.width; });
+  return out;
+}
+
+const Component* FindSensor(const detail::Graph& g, const std::vector<int>& nodes) {
+  for (int i : nodes)
+    if (g.Type(i) == "position_sensor") return g.nodes[i].component;
+  for (const auto& n : g.nodes)
+    if (n.component->type == "position_sensor") return n.component;
+  return nullptr;
+}
+
+}  // namespace
+
+PeakReport AnalysePeaks(const Project& project, const PeakOptions& options) {
+  const detail::Graph g = detail::BuildGraph(project);
+  const Component& pdu = *g.nodes[0].component;
+  const int elements = std::max(1, options.elements_per_segment);
+  const detail::ParameterMode nominal, all{detail::ParameterMode::kIntervals, {}, {}};
+  PeakReport report;
+  report.project = project.name;
+  report.reduction = "full resolution, " + std::to_string(elements) + " element(s) per shaft segment";
+  if (project.load_cases.empty())
+    throw InputError("project '" + project.name + "' has no load cases; the peak loads need the operating speed and "
+                     "the airloads: add a load case under \"load_cases\"");
+
+  // Operating speed and the largest airload magnitudes over the load cases, as aiding loads.
+  double w_operating = 0.0;
+  std::map<std::string, double> aiding;
+  for (const LoadCase& lc : project.load_cases) {
+    w_operating = std::max(w_operating, detail::SizingSpeed(lc, pdu));
+    for (const auto& [actuator, value] : detail::SizingLoads(lc))
+      aiding[actuator] = std::min(aiding[actuator], -std::abs(value));
+  }
+  const double w_reference = detail::HasValue(pdu, "max_output_speed") ? detail::NominalValue(pdu, "max_output_speed") : w_operating;
+  const auto speed_ratio = detail::SpeedRatios<double>(g, nominal);
+
+  // Parameter modes evaluated once: nominal, all intervals, and one per uncertain parameter.
+  const ModeData at_nominal = Evaluate(g, nominal, aiding, w_operating);
+  ModeData at_all;
+  std::vector<ModeData> singles;
+  if (options.intervals) {
+    at_all = Evaluate(g, all, aiding, w_operating);
+    if (options.rank)
+      for (const auto& [component, parameter] : detail::UncertainParameters(g))
+        singles.push_back(Evaluate(g, {detail::ParameterMode::kOne, component, parameter}, aiding, w_operating));
+  }
+
+  auto scenario_name = [&](const std::string& kind, const std::string& component) {
+    for (const Scenario& s : project.scenarios) {
+      if (s.kind != kind) continue;
+      const auto& target = kind == "jam" ? s.jam_component : s.rupture_component;
+      if (target && *target == component) return s.name;
+    }
+    return kind + "_" + component;
+  };
+
+  // Jams: at every actuator. The whole drive turns at the operating speed; the jammed station is
+  // the stop. Static: the drive keeps pushing, up to the PDU stall torque or the STL lock-out.
+  for (std::size_t i = 0; i < g.nodes.size(); ++i) {
+    const int a = static_cast<int>(i);
+    if (!g.IsActuator(a)) continue;
+    PeakCase pc;
+    pc.kind = "jam";
+    pc.component = g.Id(a);
+    pc.name = scenario_name("jam", pc.component);
+    if (!options.only_case.empty() && pc.name != options.only_case) continue;
+    const Focus focus{-1, a};
+    const FocusModel fm = Reduce(g, focus, elements);
+    pc.acts_at = g.Id(a);
+    for (int k : g.PathToRoot(a)) pc.load_path.push_back(g.Id(k));
+    pc.w_max = w_operating;
+    pc.w_max_bounds = Domain::Point(w_operating);
+    pc.J_star = fm.oscillator.J_star;
+    pc.c_star = fm.oscillator.c_star;
+    pc.omega = fm.oscillator.omega;
+    pc.first_mode_share = fm.oscillator.first_mode_share;
+    pc.tau_dynamic.nominal = PeakTorque(pc.w_max, fm.oscillator);
+    double static_torque = detail::HasValue(pdu, "stall_torque") ? detail::NominalValue(pdu, "stall_torque") : 0.0;
+    for (int k : g.PathToRoot(a))
+      if (g.Type(k) == "system_torque_limiter" && detail::HasValue(*g.nodes[k].component, "lockout_torque_extend"))
+        static_torque = std::min(static_torque, detail::NominalValue(*g.nodes[k].component, "lockout_torque_extend") * speed_ratio[k]);
+    pc.tau_static = static_torque;
+    pc.note = "static part: PDU stall torque, capped by the system torque limiter on the path; components behind "
+              "a station torque limiter see at most its end-stop torque";
+    Interval omega(pc.omega), J(pc.J_star);
+    if (options.intervals) Enclose(g, focus, elements, all, &omega, &J);
+    pc.tau_dynamic.bounds = (Interval(w_operating) * omega * J).ToDomain();
+    if (options.intervals && options.rank) pc.ranking = Rank(g, focus, fm, pc.w_max, singles, nullptr);
+    report.cases.push_back(std::move(pc));
+  }
+
+  // Ruptures: at every shaft segment with a wing-tip brake beyond it. The outboard part is
+  // back-driven by the airload until the monitor trips and the brake engages; the brake is the stop.
+  for (std::size_t i = 0; i < g.nodes.size(); ++i) {
+    const int s = static_cast<int>(i);
+    if (g.Type(s) != "torque_shaft" || g.nodes[s].children.empty()) continue;
+    const int root = g.nodes[s].children.front();
+    const std::vector<int> part = g.Subtree(root);
+    int brake = -1;
+    for (int k : part)
+      if (g.Type(k) == "wing_tip_brake") brake = k;
+    if (brake < 0 || brake == root) continue;  // no brake beyond, or nothing but the brake
+    PeakCase pc;
+    pc.kind = "rupture";
+    pc.component = g.Id(s);
+    pc.name = scenario_name("rupture", pc.component);
+    if (!options.only_case.empty() && pc.name != options.only_case) continue;
+    const Focus focus{root, brake};
+    const FocusModel fm = Reduce(g, focus, elements);
+    pc.acts_at = g.Id(brake);
+    for (int k = brake; k >= 0; k = g.nodes[k].parent) {
+      pc.load_path.push_back(g.Id(k));
+      if (k == root) break;
+    }
+    const Component* sensor = FindSensor(g, part);
+    const Component& wtb = *g.nodes[brake].component;
+    // w_max rises with the back-drive torque, thresholds and latencies, falls with drag and J:
+    // its lower and upper corners bound it.
+    auto rupture_speed = [&](const ModeData& d, bool upper) {
+      const auto pick = [upper](const Interval& x, bool rising) { return (rising == upper) ? x.hi : x.lo; };
+      Interval J_total(0.0);
+      for (int k : part) J_total += d.J[k] + d.link_J[k];
+      const Interval n = Interval(speed_ratio[root]);
+      RuptureInput in;
+      in.w0 = w_operating;
+      in.J = pick(J_total, false);
+      in.tau_aiding = std::max(0.0, pick(-(d.back.tau_in[root] * n), true));
+      in.tau_drag = std::max(0.0, pick(d.drag.tau_in[root] * n, false));
+      in.w_reference = w_reference;
+      in.overspeed_factor = sensor ? pick(detail::Read<Interval>(*sensor, "overspeed_factor", d.mode), true) : 1.3;
+      in.asymmetry_threshold =
+          sensor ? pick(detail::Read<Interval>(*sensor, "asymmetry_threshold", d.mode), true) : 4.0 * std::numbers::pi;
+      const Interval latency = (sensor ? detail::Read<Interval>(*sensor, "latency", d.mode) : Interval(0.0)) +
+                               detail::Read<Interval>(wtb, "engagement_latency", d.mode) +
+                               Interval(0.5) * detail::Read<Interval>(wtb, "time_to_max_torque", d.mode);
+      in.latency = pick(latency, true);
+      return std::make_pair(ComputeRuptureSpeed(in), in.tau_aiding);
+    };
+    const auto [speed, backdrive] = rupture_speed(at_nominal, true);
+    pc.w_max = speed.w_max;
+    pc.trigger = speed.trigger;
+    pc.tau_static = backdrive;
+    pc.J_star = fm.oscillator.J_star;
+    pc.c_star = fm.oscillator.c_star;
+    pc.omega = fm.oscillator.omega;
+    pc.first_mode_share = fm.oscillator.first_mode_share;
+    pc.tau_dynamic.nominal = PeakTorque(pc.w_max, fm.oscillator);
+    pc.note = "static part: airload back-drive torque through the aiding efficiencies, friction neglected; the brake "
+              "is taken as a rigid stop (it slips above its max_dynamic_torque, so this bounds the peak from above)";
+    Interval omega(pc.omega), J(pc.J_star), w(pc.w_max);
+    if (options.intervals) {
+      Enclose(g, focus, elements, all, &omega, &J);
+      w = Interval(rupture_speed(at_all, false).first.w_max, rupture_speed(at_all, true).first.w_max);
+    }
+    pc.w_max_bounds = w.ToDomain();
+    pc.tau_dynamic.bounds = (w * omega * J).ToDomain();
+    if (options.intervals && options.rank)
+      pc.ranking = Rank(g, focus, fm, pc.w_max, singles, [&](const ModeData& one) {
+        return rupture_speed(one, true).first.w_max - rupture_speed(one, false).first.w_max;
+      });
+    report.cases.push_back(std::move(pc));
+  }
+
+  if (!options.only_case.empty() && report.cases.empty()) {
+    std::string names;
+    PeakOptions all_cases = options;
+    all_cases.only_case.clear();
+    all_cases.intervals = false;
+    all_cases.rank = false;
+    for (const auto& c : AnalysePeaks(project, all_cases).cases) names += (names.empty() ? "" : ", ") + c.name;
+    throw InputError("peak case '" + options.only_case + "' does not exist; the cases are: " + names);
+  }
+
+  for (auto& pc : report.cases) {
+    pc.tau_total.nominal = pc.tau_dynamic.nominal + pc.tau_static;
+    pc.tau_total.bounds = {pc.tau_dynamic.bounds.lo + pc.tau_static, pc.tau_dynamic.bounds.hi + pc.tau_static};
+  }
+
+  // Worst case per component on any load path, with its allowable. In a jam, a station torque
+  // limiter locks out and grounds the excess: what lies behind it sees at most its end-stop torque.
+  std::map<std::string, ComponentPeak> worst;
+  for (const auto& pc : report.cases) {
+    double cap = kInf;  // N*m at the reference speed
+    for (auto id = pc.load_path.rbegin(); id != pc.load_path.rend(); ++id) {
+      const int k = g.Find(*id);
+      Bounded torque = pc.tau_total;
+      torque.nominal = std::min(torque.nominal, cap);
+      torque.bounds = {std::min(torque.bounds.lo, cap), std::min(torque.bounds.hi, cap)};
+      auto& w = worst[*id];
+      if (w.component.empty() || torque.bounds.hi > w.torque.bounds.hi) {
+        w.component = *id;
+        w.worst_case = pc.name;
+        w.torque = torque;
+      }
+      if (pc.kind == "jam" && g.Type(k) == "station_torque_limiter" && detail::HasValue(*g.nodes[k].component, "end_stop_torque"))
+        cap = std::min(cap, detail::NominalValue(*g.nodes[k].component, "end_stop_torque") * speed_ratio[k]);
+    }
+  }
+  for (std::size_t i = 0; i < g.nodes.size(); ++i) {
+    auto it = worst.find(g.Id(static_cast<int>(i)));
+    if (it == worst.end()) continue;
+    ComponentPeak& w = it->second;
+    const Component& c = *g.nodes[i].component;
+    w.local_torque = w.torque.bounds.hi / speed_ratio[i];
+    if (c.type == "torque_shaft") {
+      w.allowable_name = "torque capacity";
+      w.allowable = detail::ShaftTorqueCapacity<double>(c, nominal);
+    } else if (c.type == "wing_tip_brake" && detail::HasValue(c, "static_capacity")) {
+      w.allowable_name = "static capacity";
+      w.allowable = detail::NominalValue(c, "static_capacity");
+    } else if (c.type == "geared_rotary_actuator" && detail::HasValue(c, "output_torque_rating")) {
+      w.allowable_name = "rated output torque / ratio";
+      w.allowable = detail::NominalValue(c, "output_torque_rating") / detail::NominalValue(c, "ratio");
+    }
+    w.margin = w.allowable > 0.0 ? w.allowable / w.local_torque - 1.0 : kInf;
+    report.worst.push_back(w);
+  }
+  return report;
+}
+
+bool PeakReport::ok() const {
+  for (const auto& w : worst)
+    if (w.margin < 0.0) return false;
+  return true;
+}
+
+std::string PeakReport::BriefReport() const {
+  const PeakCase* top = nullptr;
+  for (const auto& c : cases)
+    if (!top || c.tau_total.bounds.hi > top->tau_total.bounds.hi) top = &c;
+  std::string out = "peak loads of '" + project + "': " + std::to_string(cases.size()) + " case(s)";
+  if (top) out += "; worst " + top->name + ": " + Fmt(top->tau_total.nominal) + " N*m at " + top->acts_at;
+  int negative = 0;
+  for (const auto& w : worst) negative += w.margin < 0.0 ? 1 : 0;
+  out += negative ? "; " + std::to_string(negative) + " negative margin(s)" : "; all margins >= 0";
+  return out;
+}
+
+std::string PeakReport::FullReport() const {
+  std::string out = "Single-DOF peak loads (paper eq. 1): " + project + " (" + reduction + ")\n";
+  TextTable table({"case", "acts at", "w_max [rad/s]", "J* [kg*m^2]", "c* [N*m/rad]", "f1 [Hz]", "mode-1 share",
+                   "tau_dyn [N*m]", "enclosure [N*m]", "tau_static [N*m]", "tau_max [N*m]", "widest parameter"},
+                  {2, 3, 4, 5, 6, 7, 9, 10});
+  for (const auto& c : cases)
+    table.AddRow({c.name, c.acts_at, Fmt(c.w_max), Fmt(c.J_star), Fmt(c.c_star), Fmt(Hz(c.omega)), Fmt(c.first_mode_share, 3),
+                  Fmt(c.tau_dynamic.nominal), "[" + Fmt(c.tau_dynamic.bounds.lo) + ", " + Fmt(c.tau_dynamic.bounds.hi) + "]",
+                  Fmt(c.tau_static), Fmt(c.tau_total.nominal),
+                  c.ranking.empty() ? "-" : c.ranking[0].parameter + " (" + Fmt(100 * c.ranking[0].share, 3) + " %)"});
+  out += table.ToString();
+  out += "\nWorst case per component\n";
+  TextTable worst_table({"component", "worst case", "tau_max [N*m]", "upper bound [N*m]", "local torque [N*m]", "allowable",
+                         "allowable [N*m]", "margin"},
+                        {2, 3, 4, 6, 7});
+  for (const auto& w : worst)
+    worst_table.AddRow({w.component, w.worst_case, Fmt(w.torque.nominal), Fmt(w.torque.bounds.hi), Fmt(w.local_torque),
+                        w.allowable_name.empty() ? "-" : w.allowable_name, w.allowable > 0 ? Fmt(w.allowable) : "-",
+                        std::isinf(w.margin) ? "-" : Fmt(100.0 * w.margin, 3) + " %"});
+  return out + worst_table.ToString();
+}
+
+nlohmann::json PeakReport::ToJson() const {
+  auto bounded = [](const Bounded& b) { return nlohmann::json{{"nominal", b.nominal}, {"min", b.bounds.lo}, {"max", b.bounds.hi}}; };
+  nlohmann::json j = {{"project", project}, {"model", reduction}, {"ok", ok()}};
+  j["cases"] = nlohmann::json::array();
+  for (const auto& c : cases) {
+    nlohmann::json ranking = nlohmann::json::array();
+    for (const auto& r : c.ranking) ranking.push_back({{"parameter", r.parameter}, {"width_N_m", r.width}, {"share", r.share}});
+    j["cases"].push_back({{"name", c.name}, {"kind", c.kind}, {"component", c.component}, {"acts_at", c.acts_at},
+                          {"load_path", c.load_path}, {"w_max_rad_s", c.w_max},
+                          {"w_max_bounds", {c.w_max_bounds.lo, c.w_max_bounds.hi}}, {"trigger", c.trigger},
+                          {"J_star_kg_m2", c.J_star}, {"c_star_N_m_rad", c.c_star}, {"omega_rad_s", c.omega},
+                          {"first_mode_share", c.first_mode_share}, {"tau_dynamic_N_m", bounded(c.tau_dynamic)},
+                          {"tau_static_N_m", c.tau_static}, {"tau_max_N_m", bounded(c.tau_total)}, {"ranking", ranking},
+                          {"note", c.note}});
+  }
+  j["worst"] = nlohmann::json::array();
+  for (const auto& w : worst)
+    j["worst"].push_back({{"component", w.component}, {"worst_case", w.worst_case}, {"tau_max_N_m", bounded(w.torque)},
+                          {"local_torque_N_m", w.local_torque}, {"allowable_name", w.allowable_name},
+                          {"allowable_N_m", w.allowable > 0 ? nlohmann::json(w.allowable) : nlohmann::json(nullptr)},
+                          {"margin", std::isfinite(w.margin) ? nlohmann::json(w.margin) : nlohmann::json(nullptr)}});
+  return j;
+}
+
+}  // namespace highlift::reduced_models

@@ -1,0 +1,270 @@
+// The component graph seen from the PDU: components in power-flow order with their parents,
+// and the templated builders of the transmission (for the lumped models) and of the torque flow
+// (for steady-state sizing). Private to reduced_models; templated on the scalar (double for
+// point values, detail::Interval for enclosures) so every law is written once.
+#pragma once
+
+#include <cmath>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "highlift/core/catalogue.h"
+#include "highlift/core/project.h"
+#include "highlift/reduced_models/lumped_model.h"
+#include "interval.h"
+#include "laws.h"
+
+namespace highlift::reduced_models::detail {
+
+struct GraphNode {
+  const Component* component = nullptr;
+  int parent = -1;          ///< index of the upstream component, -1 for the PDU
+  std::string parent_port;  ///< port of the parent it hangs on ("left", "output", "branch", ...)
+  std::vector<int> children;
+};
+
+/// Components reachable from the PDU, parents before children. Throws InputError when the
+/// project has no PDU, or a component is entered through its far flange (ratio convention).
+struct Graph {
+  std::vector<GraphNode> nodes;
+  std::map<std::string, int, std::less<>> index;
+  int Find(std::string_view id) const {
+    auto it = index.find(id);
+    return it == index.end() ? -1 : it->second;
+  }
+  const std::string& Id(int i) const { return nodes[i].component->id; }
+  const std::string& Type(int i) const { return nodes[i].component->type; }
+  bool IsActuator(int i) const { return Type(i) == "geared_rotary_actuator" || Type(i) == "ballscrew_actuator"; }
+  /// Path from node i up to the PDU (i first).
+  std::vector<int> PathToRoot(int i) const {
+    std::vector<int> path;
+    for (; i >= 0; i = nodes[i].parent) path.push_back(i);
+    return path;
+  }
+  /// All nodes of the subtree under i (i first).
+  std::vector<int> Subtree(int i) const {
+    std::vector<int> out{i};
+    for (std::size_t k = 0; k < out.size(); ++k)
+      for (int c : nodes[out[k]].children) out.push_back(c);
+    return out;
+  }
+};
+Graph BuildGraph(const Project& project);
+
+/// How parameter values are read: nominal values, full interval domains, or the nominal value
+/// everywhere except one parameter that takes its domain (for ranking shares of a width).
+struct ParameterMode {
+  enum Kind { kNominal, kIntervals, kOne } kind = kNominal;
+  std::string component;
+  std::string parameter;
+};
+
+/// The value of a parameter: the component's own Parameter, else the catalogue default.
+/// Throws InputError naming the component and parameter when no value is known.
+std::optional<Parameter> FindParameter(const Component& c, std::string_view name);
+double NominalValue(const Component& c, std::string_view name);
+bool HasValue(const Component& c, std::string_view name);
+
+template <class T>
+T Read(const Component& c, std::string_view name, const ParameterMode& mode);
+template <>
+inline double Read<double>(const Component& c, std::string_view name, const ParameterMode&) {
+  return NominalValue(c, name);
+}
+template <>
+inline Interval Read<Interval>(const Component& c, std::string_view name, const ParameterMode& mode) {
+  const bool wide = mode.kind == ParameterMode::kIntervals ||
+                    (mode.kind == ParameterMode::kOne && mode.component == c.id && mode.parameter == name);
+  const auto p = FindParameter(c, name);
+  if (wide && p && p->domain.bounded() && !p->domain.empty() && !p->domain.is_point())
+    return Interval(p->domain.lo, p->domain.hi);
+  return Interval(NominalValue(c, name));
+}
+
+/// The uncertain parameters (bounded, non-point domains) that the reduced models read, as
+/// (component id, parameter name).
+std::vector<std::pair<std::string, std::string>> UncertainParameters(const Graph& graph);
+
+/// Speed of each node's input flange relative to the PDU output speed (w_in / w_pdu).
+template <class T>
+std::vector<T> SpeedRatios(const Graph& g, const ParameterMode& mode) {
+  std::vector<T> n(g.nodes.size(), T(1.0));
+  for (std::size_t i = 0; i < g.nodes.size(); ++i) {
+    const GraphNode& node = g.nodes[i];
+    if (node.parent < 0) continue;
+    const Component& parent = *g.nodes[node.parent].component;
+    T ratio(1.0);
+    if ((parent.type == "angle_gearbox" && node.parent_port == "output") ||
+        (parent.type == "branch_gearbox" && node.parent_port == "branch"))
+      ratio = Read<T>(parent, "ratio", mode);
+    n[i] = n[node.parent] / ratio;
+  }
+  return n;
+}
+
+/// Torsional stiffness of a shaft segment at its own speed: given "stiffness", else the tube law.
+template <class T>
+T ShaftSegmentStiffness(const Component& c, const ParameterMode& mode) {
+  if (HasValue(c, "stiffness")) return Read<T>(c, "stiffness", mode);
+  return ShaftStiffness(Read<T>(c, "shear_modulus", mode), Read<T>(c, "outer_diameter", mode),
+                        Read<T>(c, "wall_thickness", mode), Read<T>(c, "length", mode));
+}
+template <class T>
+T ShaftSegmentInertia(const Component& c, const ParameterMode& mode) {
+  if (HasValue(c, "inertia")) return Read<T>(c, "inertia", mode);
+  if (HasValue(c, "linear_density")) {
+    // Thin tube: J = m r^2 with r the mean radius.
+    const T r = (Read<T>(c, "outer_diameter", mode) - Read<T>(c, "wall_thickness", mode)) * T(0.5);
+    return Read<T>(c, "linear_density", mode) * Read<T>(c, "length", mode) * r * r;
+  }
+  return ShaftInertia(Read<T>(c, "density", mode), Read<T>(c, "outer_diameter", mode),
+                      Read<T>(c, "wall_thickness", mode), Read<T>(c, "length", mode));
+}
+template <class T>
+T ShaftSegmentMass(const Component& c, const ParameterMode& mode) {
+  if (HasValue(c, "linear_density")) return Read<T>(c, "linear_density", mode) * Read<T>(c, "length", mode);
+  return ShaftMass(Read<T>(c, "density", mode), Read<T>(c, "outer_diameter", mode),
+                   Read<T>(c, "wall_thickness", mode), Read<T>(c, "length", mode));
+}
+/// Torque capacity of a tube at its allowable shear stress: tau = tau_allow Ip / (D/2).
+template <class T>
+T ShaftTorqueCapacity(const Component& c, const ParameterMode& mode) {
+  const T D = Read<T>(c, "outer_diameter", mode);
+  return Read<T>(c, "allowable_shear_stress", mode) * TubePolarMoment(D, Read<T>(c, "wall_thickness", mode)) /
+         (D * T(0.5));
+}
+
+/// Concentrated inertia of a component at its own input speed [kg*m^2].
+template <class T>
+T ComponentInertia(const Component& c, const ParameterMode& mode) {
+  if (c.type == "pdu")
+    return Read<T>(c, "motor_inertia", mode) * T(NominalValue(c, "motor_count")) * Read<T>(c, "ratio", mode) *
+               Read<T>(c, "ratio", mode) +
+           Read<T>(c, "gear_inertia", mode);
+  if (c.type == "geared_rotary_actuator") return Read<T>(c, "input_inertia", mode) + Read<T>(c, "load_inertia", mode);
+  if (c.type == "ballscrew_actuator") return Read<T>(c, "input_inertia", mode);
+  if (c.type == "torque_shaft" || c.type == "disconnector" || c.type == "jam") return T(0.0);
+  if (HasValue(c, "inertia")) return Read<T>(c, "inertia", mode);
+  return T(0.0);
+}
+
+/// Elastic stiffness of a non-shaft component when it has one (limiters: the normal-operation
+/// stiffness c1 of the paper's figure 4; others: an optional "stiffness").
+template <class T>
+std::optional<T> ComponentStiffness(const Component& c, const ParameterMode& mode) {
+  if (c.type == "torque_shaft" || c.type == "jam") return std::nullopt;
+  if (c.type == "system_torque_limiter" || c.type == "station_torque_limiter")
+    return Read<T>(c, "stiffness_normal", mode);
+  if (HasValue(c, "stiffness")) return Read<T>(c, "stiffness", mode);
+  return std::nullopt;
+}
+
+inline bool AccumulatesInertia(const std::string& type) {
+  return type != "torque_shaft" && type != "steady_bearing" && type != "universal_joint" &&
+         type != "position_sensor" && type != "disconnector";
+}
+
+/// A transmission with scalar T; Project() turns it into the public double Transmission.
+template <class T>
+struct TransmissionDraft {
+  struct Point { std::string name; T J; bool accumulate; std::string component; };
+  struct Link { int a, b; T c; T J; std::string name; std::string component; };
+  std::vector<Point> points;
+  std::vector<Link> links;
+  std::vector<int> point_of_node;  ///< graph node -> point holding its inertia (far end for shafts)
+  std::vector<int> link_of_node;   ///< graph node -> its link, -1 if rigid
+
+  template <class PickJ, class PickC>
+  Transmission Project(PickJ pick_J, PickC pick_c) const {
+    Transmission t;
+    for (const auto& p : points) t.AddPoint(p.name, pick_J(p.J), p.accumulate, p.component);
+    for (const auto& l : links) t.AddLink(l.a, l.b, pick_c(l.c), pick_J(l.J), l.name, l.component);
+    return t;
+  }
+};
+
+/// The transmission of the graph (all values reflected to the PDU output speed). `skip` is a
+/// graph node whose link is left out (a ruptured shaft): then only the subtree beyond it is
+/// built when `only_subtree_of` >= 0.
+template <class T>
+TransmissionDraft<T> BuildTransmission(const Graph& g, const ParameterMode& mode, int only_subtree_of = -1) {
+  TransmissionDraft<T> t;
+  const std::vector<T> n = SpeedRatios<T>(g, mode);
+  t.point_of_node.assign(g.nodes.size(), -1);
+  t.link_of_node.assign(g.nodes.size(), -1);
+  std::vector<bool> include(g.nodes.size(), only_subtree_of < 0);
+  if (only_subtree_of >= 0)
+    for (int i : g.Subtree(only_subtree_of)) include[i] = true;
+  for (std::size_t i = 0; i < g.nodes.size(); ++i) {
+    if (!include[i]) continue;
+    const Component& c = *g.nodes[i].component;
+    const T n2 = n[i] * n[i];
+    const int parent = g.nodes[i].parent;
+    const bool root = parent < 0 || (only_subtree_of >= 0 && static_cast<int>(i) == only_subtree_of);
+    int at = root ? -1 : t.point_of_node[parent];
+    if (c.type == "torque_shaft") {
+      if (root) at = static_cast<int>(t.points.size()), t.points.push_back({c.id + ".a", T(0.0), false, ""});
+      const int end = static_cast<int>(t.points.size());
+      t.points.push_back({c.id + ".b", T(0.0), false, ""});
+      t.link_of_node[i] = static_cast<int>(t.links.size());
+      t.links.push_back({at, end, ShaftSegmentStiffness<T>(c, mode) * n2, ShaftSegmentInertia<T>(c, mode) * n2, c.id, c.id});
+      t.point_of_node[i] = end;
+      continue;
+    }
+    const T J = ComponentInertia<T>(c, mode) * n2;
+    const std::optional<T> stiffness = ComponentStiffness<T>(c, mode);
+    const bool accumulate = AccumulatesInertia(c.type);
+    if (root || stiffness) {
+      const int point = static_cast<int>(t.points.size());
+      t.points.push_back({c.id, J, accumulate, c.id});
+      if (!root) {
+        t.link_of_node[i] = static_cast<int>(t.links.size());
+        t.links.push_back({at, point, *stiffness * n2, T(0.0), c.id, c.id});
+      }
+      t.point_of_node[i] = point;
+      continue;
+    }
+    auto& p = t.points[at];
+    p.J = p.J + J;
+    if (accumulate && p.component.empty()) {
+      p.name = c.id;
+      p.component = c.id;
+    }
+    p.accumulate = p.accumulate || accumulate;
+    t.point_of_node[i] = at;
+  }
+  return t;
+}
+
+}  // namespace highlift::reduced_models::detail
+
+namespace highlift::reduced_models::detail {
+
+/// The value of a table with the largest magnitude (the sizing point of a load profile).
+inline double PeakOfTable(const Table& table) {
+  double best = 0.0;
+  for (double y : table.y)
+    if (std::abs(y) > std::abs(best)) best = y;
+  return best;
+}
+
+/// Actuator output torques of a load case at their sizing points (largest magnitude).
+inline std::map<std::string, double> SizingLoads(const LoadCase& load_case) {
+  std::map<std::string, double> loads;
+  for (const auto& [actuator, table] : load_case.actuator_loads) loads[actuator] = PeakOfTable(table);
+  return loads;
+}
+
+/// The largest PDU speed of a load case; the PDU's max_output_speed when it has no profile.
+inline double SizingSpeed(const LoadCase& load_case, const Component& pdu) {
+  if (load_case.pdu_speed && !load_case.pdu_speed->y.empty()) {
+    double best = 0.0;
+    for (double y : load_case.pdu_speed->y) best = std::max(best, std::abs(y));
+    return best;
+  }
+  return NominalValue(pdu, "max_output_speed");
+}
+
+}  // namespace highlift::reduced_models::detail

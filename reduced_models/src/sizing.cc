@@ -1,0 +1,287 @@
+#include "highlift/reduced_models/sizing.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "graph_model.h"
+#include "highlift/core/error.h"
+#include "highlift/core/text_table.h"
+#include "torque_flow.h"
+
+namespace highlift::reduced_models {
+namespace {
+
+using detail::Interval;
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+Bounded Make(double nominal, const Interval& bounds) { return {nominal, bounds.ToDomain()}; }
+Bounded Make(double nominal) { return {nominal, Domain::Point(nominal)}; }
+
+/// |x| as a bounded value: nominal |x|, bounds of |x| over the enclosure.
+Bounded Magnitude(const Bounded& b) {
+  const Interval a = detail::abs(Interval(b.bounds.lo, b.bounds.hi));
+  return {std::abs(b.nominal), a.ToDomain()};
+}
+Bounded Max(const Bounded& a, const Bounded& b) {
+  return {std::max(a.nominal, b.nominal), {std::max(a.bounds.lo, b.bounds.lo), std::max(a.bounds.hi, b.bounds.hi)}};
+}
+
+std::string Fmt(double v, int digits = 4) { return FormatNumber(v, digits); }
+std::string FmtBounds(const Domain& d) { return d.is_point() ? "" : "[" + Fmt(d.lo) + ", " + Fmt(d.hi) + "]"; }
+
+}  // namespace
+
+double ShaftMass(const Project& project) {
+  double mass = 0.0;
+  for (const Component& c : project.components)
+    if (c.type == "torque_shaft") mass += detail::ShaftSegmentMass<double>(c, {});
+  return mass;
+}
+
+SizingReport Size(const Project& project, const SizingOptions& options) {
+  const detail::Graph g = detail::BuildGraph(project);
+  if (project.load_cases.empty())
+    throw InputError("project '" + project.name +
+                     "' has no load cases; steady-state sizing needs at least one (actuator loads and "
+                     "a PDU speed): add one under \"load_cases\"");
+  SizingReport report;
+  report.project = project.name;
+  report.shaft_mass = ShaftMass(project);
+  const detail::ParameterMode nominal_mode, interval_mode{detail::ParameterMode::kIntervals, {}, {}};
+  const Component& pdu = *g.nodes[0].component;
+
+  for (const LoadCase& load_case : project.load_cases) {
+    for (const auto& [actuator, table] : load_case.actuator_loads) {
+      const int node = g.Find(actuator);
+      if (node < 0 || !g.IsActuator(node))
+        throw InputError("load case '" + load_case.name + "': actuator load for '" + actuator +
+                             "', which is not an actuator driven from the PDU; name a "
+                             "geared_rotary_actuator or ballscrew_actuator of the project",
+                         load_case.where);
+    }
+    const auto loads = detail::SizingLoads(load_case);
+    const double w = detail::SizingSpeed(load_case, pdu);
+    const auto flow = detail::SolveFlow<double>(g, nominal_mode, loads, w);
+    detail::Flow<Interval> wide;
+    if (options.intervals) wide = detail::SolveFlow<Interval>(g, interval_mode, loads, w);
+    LoadCaseSizing s;
+    s.load_case = load_case.name;
+    s.direction = load_case.direction;
+    s.pdu_speed = w;
+    for (std::size_t i = 0; i < g.nodes.size(); ++i) {
+      ComponentTorque t;
+      t.component = g.Id(static_cast<int>(i));
+      t.type = g.Type(static_cast<int>(i));
+      t.speed = flow.w_in[i];
+      t.torque = options.intervals ? Make(flow.tau_in[i], wide.tau_in[i]) : Make(flow.tau_in[i]);
+      s.components.push_back(t);
+    }
+    s.pdu_torque = s.components[0].torque;
+    const double eta = detail::NominalValue(pdu, "efficiency");
+    s.pdu_power = {s.pdu_torque.nominal * w, {s.pdu_torque.bounds.lo * w, s.pdu_torque.bounds.hi * w}};
+    if (options.intervals) {
+      const Interval power = Interval(s.pdu_torque.bounds.lo, s.pdu_torque.bounds.hi) * Interval(w);
+      const Interval input = detail::BySign(
+          power, [&](const Interval& p) { return p / detail::Read<Interval>(pdu, "efficiency", interval_mode); },
+          [&](const Interval& p) { return p * detail::Read<Interval>(pdu, "efficiency", interval_mode); });
+      s.pdu_power = Make(s.pdu_torque.nominal * w, power);
+      s.pdu_input_power = Make(s.pdu_power.nominal >= 0 ? s.pdu_power.nominal / eta : s.pdu_power.nominal * eta, input);
+    } else {
+      s.pdu_input_power = Make(s.pdu_power.nominal >= 0 ? s.pdu_power.nominal / eta : s.pdu_power.nominal * eta);
+    }
+    report.cases.push_back(std::move(s));
+  }
+
+  // Largest operating torque magnitude per component and direction.
+  auto operating = [&](int node, const std::string& direction) {
+    Bounded best = Make(0.0);
+    bool any = false;
+    for (const LoadCaseSizing& s : report.cases)
+      if (direction.empty() || s.direction == direction) {
+        best = Max(best, Magnitude(s.components[node].torque));
+        any = true;
+      }
+    if (!any && !direction.empty())  // no case in this direction: use every case
+      for (const LoadCaseSizing& s : report.cases) best = Max(best, Magnitude(s.components[node].torque));
+    return best;
+  };
+  auto recommend = [&](int node, const std::string& parameter, const std::string& rule, const Bounded& op,
+                       double factor, double lo, double hi) {
+    SettingRecommendation r;
+    const Component& c = *g.nodes[node].component;
+    r.component = c.id;
+    r.parameter = parameter;
+    r.rule = rule;
+    r.operating = op;
+    r.factor = factor;
+    r.factor_min = lo;
+    r.factor_max = hi;
+    r.recommended = factor * op.nominal;
+    r.recommended_robust = {lo * op.bounds.hi, hi * op.bounds.lo};
+    if (detail::HasValue(c, parameter)) {
+      r.current = detail::NominalValue(c, parameter);
+      r.current_factor = op.nominal > 0 ? *r.current / op.nominal : kInf;
+      r.ok = r.current_factor >= lo && r.current_factor <= hi;
+      r.robust = r.recommended_robust.contains(*r.current);
+    }
+    report.settings.push_back(r);
+  };
+  for (std::size_t i = 0; i < g.nodes.size(); ++i) {
+    const int node = static_cast<int>(i);
+    const std::string& type = g.Type(node);
+    if (type == "system_torque_limiter") {
+      const std::string rule = "1.2-1.4 x max operating wing torque (domain.md s6)";
+      // The maximum operating wing torque over both directions sizes both trip torques.
+      recommend(node, "lockout_torque_extend", rule, operating(node, ""), 1.3, 1.2, 1.4);
+      recommend(node, "lockout_torque_retract", rule, operating(node, ""), 1.3, 1.2, 1.4);
+    } else if (type == "station_torque_limiter") {
+      const std::string rule = "1.3-1.6 x station max operating torque (domain.md s6)";
+      recommend(node, "lockout_torque_extend", rule, operating(node, "extend"), 1.5, 1.3, 1.6);
+      // Retract: the aiding airload leaves little drive torque; the rule applies to what remains,
+      // and the project's asymmetric setting (domain.md s3: 0.7 x extend) is checked against it.
+      recommend(node, "lockout_torque_retract", rule, operating(node, "retract"), 1.5, 1.3, kInf);
+    } else if (type == "wing_tip_brake") {
+      // Wing back-drive torque: the airloads of the wing's actuators back-driving the shaft
+      // through their aiding efficiencies, friction neglected (conservative).
+      int wing = node;
+      while (g.nodes[wing].parent > 0) wing = g.nodes[wing].parent;
+      Bounded backdrive = Make(0.0);
+      for (const LoadCase& load_case : project.load_cases) {
+        std::map<std::string, double> aiding;
+        for (const auto& [actuator, value] : detail::SizingLoads(load_case)) aiding[actuator] = -std::abs(value);
+        const double w = detail::SizingSpeed(load_case, pdu);
+        const auto flow = detail::SolveFlow<double>(g, nominal_mode, aiding, w, false);
+        Bounded b = Make(std::max(0.0, -flow.tau_in[wing]));
+        if (options.intervals) {
+          const auto wide = detail::SolveFlow<Interval>(g, interval_mode, aiding, w, false);
+          b.bounds = {std::max(0.0, -wide.tau_in[wing].hi), std::max(0.0, -wide.tau_in[wing].lo)};
+        }
+        backdrive = Max(backdrive, b);
+      }
+      recommend(node, "static_capacity", ">= 1.5 x wing back-drive torque (domain.md s6)", backdrive, 1.5, 1.5, kInf);
+    }
+  }
+
+  // Margins against allowables, on the largest operating torque (upper bound) at own speed.
+  for (std::size_t i = 0; i < g.nodes.size(); ++i) {
+    const int node = static_cast<int>(i);
+    const Component& c = *g.nodes[node].component;
+    const double load = operating(node, "").bounds.hi;
+    auto add = [&](const std::string& name, double allowable, double at_load) {
+      report.margins.push_back({c.id, name, at_load, allowable, at_load > 0 ? allowable / at_load - 1.0 : kInf});
+    };
+    if (c.type == "torque_shaft") {
+      add("torque capacity at the allowable shear stress", detail::ShaftTorqueCapacity<double>(c, nominal_mode), load);
+    } else if (c.type == "geared_rotary_actuator" && detail::HasValue(c, "output_torque_rating")) {
+      double output = 0.0;
+      for (const LoadCase& load_case : project.load_cases) {
+        const auto loads = detail::SizingLoads(load_case);
+        auto it = loads.find(c.id);
+        if (it != loads.end()) output = std::max(output, std::abs(it->second));
+      }
+      add("rated output torque", detail::NominalValue(c, "output_torque_rating"), output);
+    } else if (c.type == "pdu" && detail::HasValue(c, "stall_torque")) {
+      add("stall torque", detail::NominalValue(c, "stall_torque"), load);
+    }
+  }
+  return report;
+}
+
+bool SizingReport::ok() const {
+  for (const auto& s : settings)
+    if (!s.ok) return false;
+  for (const auto& m : margins)
+    if (m.margin < 0.0) return false;
+  return true;
+}
+
+std::string SizingReport::BriefReport() const {
+  std::string out = "sizing of '" + project + "': " + std::to_string(cases.size()) + " load case(s)";
+  for (const auto& s : cases)
+    out += "; " + s.load_case + ": PDU " + Fmt(s.pdu_torque.nominal) + " N*m, " + Fmt(s.pdu_power.nominal / 1e3) + " kW";
+  int bad = 0;
+  for (const auto& s : settings) bad += s.ok ? 0 : 1;
+  for (const auto& m : margins) bad += m.margin < 0.0 ? 1 : 0;
+  out += bad ? "; " + std::to_string(bad) + " setting(s) or margin(s) out of range" : "; all settings and margins ok";
+  return out;
+}
+
+std::string SizingReport::FullReport() const {
+  std::string out = "Steady-state sizing: " + project + "\nshaft mass " + Fmt(shaft_mass) + " kg\n";
+  for (const auto& s : cases) {
+    out += "\nload case '" + s.load_case + "' (" + s.direction + "), PDU speed " + Fmt(s.pdu_speed) +
+           " rad/s: PDU output torque " + Fmt(s.pdu_torque.nominal) + " N*m " + FmtBounds(s.pdu_torque.bounds) +
+           ", power " + Fmt(s.pdu_power.nominal / 1e3) + " kW, input power " + Fmt(s.pdu_input_power.nominal / 1e3) +
+           " kW " + FmtBounds({s.pdu_input_power.bounds.lo / 1e3, s.pdu_input_power.bounds.hi / 1e3}) + "\n";
+    TextTable table({"component", "type", "speed [rad/s]", "torque [N*m]", "enclosure [N*m]"}, {2, 3, 4});
+    for (const auto& c : s.components)
+      table.AddRow({c.component, c.type, Fmt(c.speed), Fmt(c.torque.nominal), FmtBounds(c.torque.bounds)});
+    out += table.ToString();
+  }
+  out += "\nRecommended settings\n";
+  TextTable settings_table({"component", "parameter", "operating [N*m]", "enclosure [N*m]", "factor", "recommended [N*m]",
+                            "robust range [N*m]", "current [N*m]", "current factor", "status", "rule"},
+                           {2, 3, 4, 5, 6, 7, 8});
+  for (const auto& s : settings) {
+    const std::string robust = s.recommended_robust.empty()
+                                   ? "none"
+                                   : "[" + Fmt(s.recommended_robust.lo) + ", " +
+                                         (std::isinf(s.recommended_robust.hi) ? "inf" : Fmt(s.recommended_robust.hi)) + "]";
+    settings_table.AddRow({s.component, s.parameter, Fmt(s.operating.nominal), FmtBounds(s.operating.bounds), Fmt(s.factor, 2),
+                           Fmt(s.recommended), robust, s.current ? Fmt(*s.current) : "-",
+                           s.current ? Fmt(s.current_factor, 3) : "-",
+                           !s.ok ? "OUT OF RANGE" : (s.robust ? "ok" : "ok at nominal only"), s.rule});
+  }
+  out += settings_table.ToString();
+  out += "\nMargins against allowables (largest operating torque, upper bound)\n";
+  TextTable margin_table({"component", "allowable", "load [N*m]", "allowable [N*m]", "margin"}, {2, 3, 4});
+  for (const auto& m : margins)
+    margin_table.AddRow({m.component, m.allowable_name, Fmt(m.load), Fmt(m.allowable),
+                         std::isinf(m.margin) ? "inf" : Fmt(100.0 * m.margin, 3) + " %"});
+  out += margin_table.ToString();
+  return out;
+}
+
+namespace {
+nlohmann::json ToJson(const Bounded& b) { return {{"nominal", b.nominal}, {"min", b.bounds.lo}, {"max", b.bounds.hi}}; }
+nlohmann::json Finite(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+}  // namespace
+
+nlohmann::json SizingReport::ToJson() const {
+  nlohmann::json j;
+  j["project"] = project;
+  j["ok"] = ok();
+  j["shaft_mass_kg"] = shaft_mass;
+  j["load_cases"] = nlohmann::json::array();
+  for (const auto& s : cases) {
+    nlohmann::json c = {{"name", s.load_case}, {"direction", s.direction}, {"pdu_speed_rad_s", s.pdu_speed},
+                        {"pdu_torque_N_m", reduced_models::ToJson(s.pdu_torque)},
+                        {"pdu_power_W", reduced_models::ToJson(s.pdu_power)},
+                        {"pdu_input_power_W", reduced_models::ToJson(s.pdu_input_power)}};
+    c["components"] = nlohmann::json::array();
+    for (const auto& t : s.components)
+      c["components"].push_back({{"component", t.component}, {"type", t.type}, {"speed_rad_s", t.speed},
+                                 {"torque_N_m", reduced_models::ToJson(t.torque)}});
+    j["load_cases"].push_back(c);
+  }
+  j["settings"] = nlohmann::json::array();
+  for (const auto& s : settings)
+    j["settings"].push_back({{"component", s.component}, {"parameter", s.parameter}, {"rule", s.rule},
+                             {"operating_N_m", reduced_models::ToJson(s.operating)}, {"factor", s.factor},
+                             {"factor_min", s.factor_min}, {"factor_max", Finite(s.factor_max)},
+                             {"recommended_N_m", s.recommended},
+                             {"robust_range_N_m", s.recommended_robust.empty()
+                                                      ? nlohmann::json(nullptr)
+                                                      : nlohmann::json{s.recommended_robust.lo, Finite(s.recommended_robust.hi)}},
+                             {"robust", s.robust},
+                             {"current_N_m", s.current ? nlohmann::json(*s.current) : nlohmann::json(nullptr)},
+                             {"current_factor", Finite(s.current_factor)}, {"ok", s.ok}});
+  j["margins"] = nlohmann::json::array();
+  for (const auto& m : margins)
+    j["margins"].push_back({{"component", m.component}, {"allowable_name", m.allowable_name}, {"load_N_m", m.load},
+                            {"allowable_N_m", m.allowable}, {"margin", Finite(m.margin)}});
+  return j;
+}
+
+}  // namespace highlift::reduced_models

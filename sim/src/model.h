@@ -1,0 +1,191 @@
+// Internal: the assembled model of an element network. Nodes (merged flanges), elements with
+// their laws, the KKT solve of the node accelerations, the mode logic of switching elements.
+#pragma once
+
+#include <cmath>
+#include <functional>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "highlift/sim/network.h"
+
+namespace highlift::sim::detail {
+
+using Table = std::vector<std::vector<double>>;
+
+/// Modelica.Math.Vectors.interpolate on column `column` of `table` against column 0:
+/// piecewise linear with linear extrapolation; a one-row table is constant.
+double Interpolate(const Table& table, int column, double x);
+
+/// A node: flanges connected to each other (and flanges tied rigidly inside an element).
+struct Node {
+  std::string name;     ///< first flange, "element.port", for messages
+  bool ground = false;  ///< fixed in the housing (Fixed element or unconnected support)
+  double phi0 = 0.0;    ///< angle of a ground node
+  double J = 0.0;       ///< total inertia attached
+  int s_phi = -1;       ///< state index of the angle (-1 for ground)
+  int s_w = -1;         ///< state index of the speed
+};
+
+/// One linear constraint on node accelerations: sum(row) = rhs, with the torque it exerts on
+/// the nodes per unit multiplier (column). Ideal constraints have column = -row or +row.
+struct Constraint {
+  std::vector<std::pair<int, double>> row;
+  std::vector<std::pair<int, double>> column;
+  double rhs = 0.0;
+  bool velocity_level = true;  ///< the same relation holds for the speeds (projected at events)
+  int owner = -1;              ///< element index
+  double lambda = 0.0;         ///< solution: the multiplier (constraint torque)
+};
+
+/// Evaluation context: the state seen as node angles/speeds, forces, signals, constraints.
+struct Eval {
+  double t = 0.0;
+  double t_segment = 0.0;  ///< right limit of the last event: selects branches of sources
+  bool initial = false;
+  const double* y = nullptr;
+  double* ydot = nullptr;  ///< may be null (output evaluation)
+  std::vector<double> phi, w, acc, force;  ///< per node
+  std::vector<double> signal;              ///< per element (signal blocks' outputs)
+  std::vector<Constraint> constraints;
+  int n_constraints = 0;  ///< used entries of `constraints`
+
+  Constraint& NewConstraint(int owner) {
+    if (n_constraints == static_cast<int>(constraints.size())) constraints.emplace_back();
+    Constraint& c = constraints[n_constraints++];
+    c.row.clear();
+    c.column.clear();
+    c.rhs = 0.0;
+    c.velocity_level = true;
+    c.owner = owner;
+    c.lambda = 0.0;
+    return c;
+  }
+  void AddForce(int node, double tau) { force[node] += tau; }
+};
+
+class Model;
+
+/// What an element contributes. Defaults do nothing, so each law overrides only what it uses.
+class Element {
+ public:
+  virtual ~Element() = default;
+
+  std::string id;
+  std::string type;
+  int index = -1;
+
+  // --- structure ---
+  /// Groups of this element's flange ports that are one rigid node (e.g. Inertia a/b).
+  virtual std::vector<std::vector<std::string>> RigidFlanges() const { return {}; }
+  /// Flange ports (each gets a node).
+  virtual std::vector<std::string> Flanges() const { return {}; }
+  /// Signal input ports.
+  virtual std::vector<std::string> SignalInputs() const { return {}; }
+  virtual bool IsSignalBlock() const { return false; }
+  /// Called once ports are resolved: node index per flange, signal source element per input.
+  virtual void Bind(const std::function<int(const std::string&)>& node_of,
+                    const std::function<int(const std::string&)>& signal_of) {
+    (void)node_of;
+    (void)signal_of;
+  }
+  /// Inertia attached to nodes.
+  virtual void AddInertia(std::vector<Node>& nodes) const { (void)nodes; }
+  /// Nodes this element may couple by a constraint (for the KKT grouping and bandwidth).
+  virtual std::vector<int> CoupledNodes() const { return {}; }
+  /// Nodes this element reads or acts on.
+  virtual std::vector<int> Nodes() const { return {}; }
+  virtual int NumStates() const { return 0; }
+  int state_offset = -1;
+  virtual std::vector<std::string> StateNames() const { return {}; }
+
+  // --- initial conditions ---
+  /// Equations sum(coef*phi[node]) = value that fix initial angles (and the speed version).
+  struct InitialEquation {
+    std::vector<std::pair<int, double>> row;
+    double value = 0.0;
+  };
+  virtual void InitialEquations(std::vector<InitialEquation>& position,
+                                std::vector<InitialEquation>& speed) const {
+    (void)position;
+    (void)speed;
+  }
+  /// Holonomic constraints that hold for the angles too (gears).
+  virtual void HolonomicRows(std::vector<InitialEquation>& rows) const { (void)rows; }
+  /// Initial values of the element's own states, given node angles and speeds.
+  virtual void InitStates(const Eval& e, double* y) const {
+    (void)e;
+    (void)y;
+  }
+
+  // --- continuous evaluation ---
+  virtual double Signal(const Eval& e) const {
+    (void)e;
+    return 0.0;
+  }
+  virtual void Forces(Eval& e) { (void)e; }
+  virtual void Constraints(Eval& e) { (void)e; }
+  virtual void AfterSolve(Eval& e) { (void)e; }
+  virtual void Derivatives(Eval& e) { (void)e; }
+
+  // --- events ---
+  virtual int NumRoots() const { return 0; }
+  int root_offset = -1;
+  virtual void Roots(const Eval& e, double* g) const {
+    (void)e;
+    (void)g;
+  }
+  virtual void RootDirections(int* direction) const { (void)direction; }
+  /// Earliest time event strictly after t (infinity if none).
+  virtual double NextTimeEvent(double t) const {
+    (void)t;
+    return INFINITY;
+  }
+  virtual bool IsSwitching() const { return false; }
+  /// Root k of this element fired at the current event (set before PrepareEvent, cleared by
+  /// AfterEventRow): a threshold it located is taken as crossed even when the margin at the
+  /// returned time is within roundoff.
+  void MarkRootFired(int k) {
+    if (fired.size() < static_cast<std::size_t>(NumRoots())) fired.assign(NumRoots(), 0);
+    fired[k] = 1;
+  }
+  bool Fired(int k) const { return k < static_cast<int>(fired.size()) && fired[k]; }
+  void ClearFired() { std::fill(fired.begin(), fired.end(), 0); }
+  std::vector<char> fired;
+  /// At the start of an event: modes from the state (a sliding element whose speed reached
+  /// zero sticks; engagement and release of brakes/clutches; the initial modes).
+  virtual void PrepareEvent(const Eval& e) { (void)e; }
+  /// After a solve inside the event iteration: > 0 measures how strongly the current mode is
+  /// inconsistent (a stuck element whose locking torque exceeds its capacity, a rolling gear
+  /// in the wrong quadrant); Fix() switches to the consistent mode.
+  virtual double Violation(const Eval& e) const {
+    (void)e;
+    return 0.0;
+  }
+  virtual void Fix(const Eval& e) { (void)e; }
+  /// Resets the flags that are true only at the event instant (startForward, ...).
+  virtual void AfterEventRow() {}
+  /// A short description of the discrete state, for the event log ("" if none).
+  virtual std::string ModeText() const { return ""; }
+
+  // --- outputs ---
+  virtual std::vector<std::string> OutputNames() const { return {}; }
+  virtual void Outputs(const Eval& e, double* out) const {
+    (void)e;
+    (void)out;
+  }
+  /// The element torque for the peak statistics (NaN if the element carries none).
+  virtual double PeakTorque(const Eval& e) const {
+    (void)e;
+    return NAN;
+  }
+};
+
+/// Creates the element law for a network element (throws InputError for unsupported options).
+std::unique_ptr<Element> MakeElement(const NetworkElement& element);
+
+}  // namespace highlift::sim::detail

@@ -1,0 +1,83 @@
+// Internal: the assembled system of an element network (nodes, states, roots) and its
+// evaluation: forces, the KKT solve of accelerations and constraint torques per group of
+// coupled nodes, derivatives, root functions, the event iteration of the modes.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "model.h"
+
+namespace highlift::sim::detail {
+
+class System {
+ public:
+  explicit System(const Network& network);
+
+  int NumStates() const { return n_states_; }
+  int NumRoots() const { return n_roots_; }
+  const std::vector<std::string>& OutputNames() const { return output_names_; }
+  const std::vector<std::string>& StateNames() const { return state_names_; }
+  const std::vector<std::unique_ptr<Element>>& elements() const { return elements_; }
+  /// Upper and lower half-bandwidth of the Jacobian (from the element footprints).
+  int upper_bandwidth() const { return bandwidth_; }
+  int lower_bandwidth() const { return bandwidth_; }
+
+  /// Consistent initial node angles and speeds and element states (throws InputError for
+  /// contradictory initial values).
+  std::vector<double> InitialState(double t0);
+
+  /// Full evaluation at (t, y). ydot may be null. Returns false with `error` set on failure.
+  bool Evaluate(double t, const double* y, double* ydot);
+  /// Root functions (after Evaluate at the same point).
+  void Roots(double* g) const;
+  void RootDirections(int* direction) const;
+  double NextTimeEvent(double t) const;
+
+  /// Event handling at time t on state y (modified in place: speeds projected onto the active
+  /// constraints). Returns false with `error` on failure. `changes` lists "element: A -> B".
+  bool HandleEvent(double t, double* y, bool initial, std::vector<std::string>* changes,
+                   std::vector<std::string>* changed_elements, const int* root_info = nullptr);
+  void AfterEventRow();
+
+  /// Outputs of the last Evaluate.
+  void Outputs(double* out) const;
+  /// Element torques of the last Evaluate (NaN for elements without one).
+  void PeakTorques(std::vector<double>& tau) const;
+
+  void set_segment_start(double t) { t_segment_ = t; }
+  double segment_start() const { return t_segment_; }
+  const std::string& error() const { return error_; }
+  const std::string& error_element() const { return error_element_; }
+
+ private:
+  bool Solve();
+  void EvaluateSignals();
+  bool ProjectSpeeds(double* y);
+
+  std::vector<std::unique_ptr<Element>> elements_;
+  std::vector<Node> nodes_;
+  std::vector<int> signal_order_;
+  int n_states_ = 0;
+  int n_roots_ = 0;
+  int bandwidth_ = 0;
+  std::vector<std::string> state_names_;
+  std::vector<std::string> output_names_;
+  std::vector<int> output_offset_;
+  double t_segment_ = 0.0;
+  Eval eval_;
+  std::string error_, error_element_;
+
+  // KKT workspace
+  std::vector<int> parent_;
+  std::vector<int> local_;
+  std::vector<char> in_constraint_;
+  std::vector<int> group_of_root_;
+  std::vector<std::vector<int>> group_nodes_, group_rows_;
+  int n_groups_ = 0;
+  Eigen::MatrixXd A_;
+  Eigen::VectorXd rhs_, x_;
+};
+
+}  // namespace highlift::sim::detail

@@ -1,0 +1,83 @@
+// The `highlift db` command: list, show, find, import, export.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "common/run_cli.h"
+#include "test_util.h"
+
+namespace highlift {
+namespace {
+
+using highlift::testing::RunCli;
+using highlift::testing::ScratchDirectory;
+
+// ctest sets HIGHLIFT_DATA_DIR; when the executable is run by hand, keep the default database
+// out of the user's home.
+const bool kDataDirectorySet = [] {
+  if (!std::getenv("HIGHLIFT_DATA_DIR"))
+    ::setenv("HIGHLIFT_DATA_DIR", (std::filesystem::temp_directory_path() / "highlift_db_cli_test_home").c_str(), 1);
+  return true;
+}();
+
+TEST(DbCli, FindSelectsGrasByRatioAsJson) {
+  ScratchDirectory dir;
+  const std::string db = (dir / "seed.sqlite").string();
+  // Import the seed export of the default database into a fresh file, then query it.
+  auto exported = RunCli({"db", "export", (dir / "seed.json").string()});
+  ASSERT_EQ(exported.exit_code, 0) << exported.err;
+  ASSERT_EQ(RunCli({"db", "import", (dir / "seed.json").string(), "--db", db}).exit_code, 0);
+  const auto r = RunCli({"db", "find", "geared_rotary_actuator", "--where", "ratio=150:250", "--db", db, "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto doc = nlohmann::json::parse(r.out);
+  ASSERT_GT(doc["count"].get<int>(), 3);
+  bool found = false;
+  for (const auto& p : doc["parts"]) {
+    const double ratio = p["parameters"]["ratio"]["value"].get<double>();
+    EXPECT_GE(ratio, 150);
+    EXPECT_LE(ratio, 250);
+    found = found || p["designation"] == "GRA-200-A380C";
+  }
+  EXPECT_TRUE(found);
+  const auto text = RunCli({"db", "show", "GRA-200-A380C", "--db", db});
+  EXPECT_EQ(text.exit_code, 0);
+  EXPECT_NE(text.out.find("output_torque_rating"), std::string::npos);
+  EXPECT_NE(text.out.find("20 kN*m"), std::string::npos);
+}
+
+TEST(DbCli, BadImportExitsTwoNamesTheRowAndChangesNothing) {
+  ScratchDirectory dir;
+  const std::string db = (dir / "db.sqlite").string();
+  std::ofstream(dir / "good.csv") << "type,designation,program,supplier,note,parameter,value,min,max,unit,tag,source\n"
+                                  << "jam,J1,,,,stiffness,1e5,,,N*m/rad,E,test\n";
+  ASSERT_EQ(RunCli({"db", "import", (dir / "good.csv").string(), "--db", db}).exit_code, 0);
+  std::ofstream(dir / "bad.csv") << "type,designation,program,supplier,note,parameter,value,min,max,unit,tag,source\n"
+                                 << "jam,J2,,,,stiffness,1e5,,,N*m/rad,E,test\n"
+                                 << "jam,J3,,,,stiffness,1e5,,,kg,E,test\n";
+  const auto r = RunCli({"db", "import", (dir / "bad.csv").string(), "--db", db});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("bad.csv row 3: part 'J3' (jam) parameter 'stiffness': unit 'kg' is"), std::string::npos) << r.err;
+  const auto list = RunCli({"db", "list", "--db", db, "--json"});
+  ASSERT_EQ(list.exit_code, 0);
+  EXPECT_EQ(nlohmann::json::parse(list.out)["count"], 1);
+  // A missing --db for reading is an error, not a new empty database.
+  const auto missing = RunCli({"db", "list", "--db", (dir / "nope.sqlite").string()});
+  EXPECT_EQ(missing.exit_code, 2);
+  EXPECT_NE(missing.err.find("does not exist"), std::string::npos);
+}
+
+TEST(DbCli, ExportImportRoundTripsThroughCsv) {
+  ScratchDirectory dir;
+  ASSERT_EQ(RunCli({"db", "export", (dir / "a.csv").string()}).exit_code, 0);
+  ASSERT_EQ(RunCli({"db", "import", (dir / "a.csv").string(), "--db", (dir / "b.sqlite").string()}).exit_code, 0);
+  const auto a = RunCli({"db", "export", "--format", "csv"});
+  const auto b = RunCli({"db", "export", "--format", "csv", "--db", (dir / "b.sqlite").string()});
+  ASSERT_EQ(a.exit_code, 0);
+  EXPECT_EQ(a.out, b.out);
+  EXPECT_GT(a.out.size(), 10000u);
+}
+
+}  // namespace
+}  // namespace highlift

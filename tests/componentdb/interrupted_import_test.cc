@@ -1,0 +1,114 @@
+// An import killed in the middle, and a reader working during an import (WAL).
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "highlift/componentdb/database.h"
+#include "highlift/componentdb/io.h"
+#include "test_util.h"
+
+namespace highlift::componentdb {
+namespace {
+
+using highlift::testing::ScratchDirectory;
+
+Records ManyParts(std::size_t n, const std::string& prefix) {
+  Records r;
+  r.parts.reserve(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    Part p;
+    p.type = "geared_rotary_actuator";
+    p.designation = prefix + std::to_string(i);
+    p.program = "bulk test family";
+    p.parameters = {highlift::testing::PointQuantity("ratio", 100.0 + static_cast<double>(i % 200), "1"),
+                    highlift::testing::PointQuantity("output_torque_rating", 2.0 + static_cast<double>(i % 23), "kN*m"),
+                    highlift::testing::IntervalQuantity("input_inertia", 1e-4, 2e-3, "kg*m^2")};
+    r.parts.push_back(std::move(p));
+  }
+  return r;
+}
+
+TEST(ComponentDatabaseInterruptedImport, KilledChildLeavesIntactDatabaseWithTheRowsItHadBefore) {
+  ScratchDirectory dir;
+  const auto file = dir / "db.sqlite";
+  Counts before;
+  Records exported;
+  {
+    auto db = ComponentDatabase::Open(file, ComponentDatabase::Mode::kCreate);
+    db.Import(SeedRecords());
+    before = db.CountRows();
+    exported = db.Export();
+  }  // no connection is open across fork()
+  const Records big = ManyParts(20000, "BULK-");
+  constexpr std::size_t kSignalAfter = 15000;
+  int pipe_fds[2];
+  ASSERT_EQ(::pipe(pipe_fds), 0);
+  const pid_t child = ::fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    ::close(pipe_fds[0]);
+    try {
+      auto db = ComponentDatabase::Open(file, ComponentDatabase::Mode::kReadWrite);
+      ImportOptions options;
+      options.progress = [&](std::size_t written) {
+        if (written == kSignalAfter) {
+          const char byte = 'x';
+          if (::write(pipe_fds[1], &byte, 1) != 1) ::_exit(3);
+          for (;;) ::pause();  // mid-transaction until killed
+        }
+      };
+      db.Import(big, options);
+    } catch (...) {
+      ::_exit(2);
+    }
+    ::_exit(1);  // the import finished: the parent was too slow, which it reports
+  }
+  ::close(pipe_fds[1]);
+  char byte = 0;
+  ASSERT_EQ(::read(pipe_fds[0], &byte, 1), 1) << "the importing child died before reaching the middle";
+  ::close(pipe_fds[0]);
+  // Part of the transaction has spilled into the write-ahead log before the kill.
+  const auto wal = std::filesystem::path(file.string() + "-wal");
+  const auto wal_size = std::filesystem::exists(wal) ? std::filesystem::file_size(wal) : 0;
+  EXPECT_GT(wal_size, 0u) << "the import had not written anything to disk when it was killed";
+  ASSERT_EQ(::kill(child, SIGKILL), 0);
+  int status = 0;
+  ASSERT_EQ(::waitpid(child, &status, 0), child);
+  ASSERT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL) << "child status " << status;
+
+  auto db = ComponentDatabase::Open(file, ComponentDatabase::Mode::kReadWrite);
+  EXPECT_EQ(db.IntegrityCheck(), "ok");
+  EXPECT_EQ(db.CountRows(), before);
+  EXPECT_FALSE(db.FindPart("BULK-0").has_value());
+  EXPECT_EQ(db.Export(), exported);
+  // And the database still takes writes.
+  db.Import(ManyParts(10, "AFTER-"));
+  EXPECT_EQ(db.CountRows().parts, before.parts + 10);
+}
+
+TEST(ComponentDatabaseInterruptedImport, ReaderSeesTheOldContentWhileAnImportRuns) {
+  ScratchDirectory dir;
+  const auto file = dir / "db.sqlite";
+  auto writer = ComponentDatabase::Open(file, ComponentDatabase::Mode::kCreate);
+  writer.Import(SeedRecords());
+  const Counts before = writer.CountRows();
+  ASSERT_EQ(writer.journal_mode(), "wal");
+  bool checked = false;
+  ImportOptions options;
+  options.progress = [&](std::size_t written) {
+    if (written != 300) return;
+    // A second connection reads while the writer holds its transaction open.
+    auto reader = ComponentDatabase::Open(file, ComponentDatabase::Mode::kReadOnly);
+    EXPECT_EQ(reader.CountRows(), before);
+    EXPECT_FALSE(reader.FindPart("LIVE-0").has_value());
+    EXPECT_TRUE(reader.FindPart("GRA-200-A380C").has_value());
+    checked = true;
+  };
+  writer.Import(ManyParts(500, "LIVE-"), options);
+  EXPECT_TRUE(checked);
+  EXPECT_EQ(writer.CountRows().parts, before.parts + 500);
+}
+
+}  // namespace
+}  // namespace highlift::componentdb

@@ -1,0 +1,39 @@
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+#include "highlift/core/catalogue.h"
+
+namespace highlift {
+namespace {
+
+TEST(CatalogueMarkdown, ListsEveryTypePortAndParameter) {
+  const std::string md = CatalogueMarkdown();
+  for (const auto& t : ComponentTypes()) {
+    EXPECT_NE(md.find("## " + t.name + "\n"), std::string::npos) << t.name;
+    for (const auto& p : t.parameters) EXPECT_NE(md.find("| `" + p.name + "` |"), std::string::npos) << p.name;
+  }
+  // display units and values: 44 GPa, [43, 51]
+  EXPECT_NE(md.find("| `shear_modulus` | `G` | `GPa` | 44 | [43, 51] |"), std::string::npos);
+}
+
+// docs/components.md is generated; set HIGHLIFT_UPDATE_DOCS=1 to rewrite it.
+TEST(CatalogueMarkdown, DocsAreUpToDate) {
+  const std::string path = std::string(HIGHLIFT_SOURCE_DIR) + "/docs/components.md";
+  const std::string md = CatalogueMarkdown();
+  if (const char* update = std::getenv("HIGHLIFT_UPDATE_DOCS"); update && std::string(update) == "1") {
+    std::ofstream(path, std::ios::binary) << md;
+  }
+  std::ifstream in(path, std::ios::binary);
+  ASSERT_TRUE(in) << path << " is missing; run the test with HIGHLIFT_UPDATE_DOCS=1";
+  std::stringstream committed;
+  committed << in.rdbuf();
+  EXPECT_TRUE(committed.str() == md)
+      << path << " is out of date with core/src/catalogue.cc; regenerate it: HIGHLIFT_UPDATE_DOCS=1 ctest -R "
+                 "CatalogueMarkdown.DocsAreUpToDate";
+}
+
+}  // namespace
+}  // namespace highlift

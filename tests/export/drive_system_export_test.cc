@@ -1,0 +1,183 @@
+// Drive-system projects export to HighLift/MSL models: golden files for a small rig at full and
+// reduced resolution, the scenario wiring (rupture, jam, WTB trigger), the lumping of the
+// reduced model, tables in a file, and a structural check of the A380-class example.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <regex>
+
+#include "export_test_util.h"
+#include "highlift/core/error.h"
+
+namespace highlift {
+namespace {
+
+using testing::CheckIssues;
+using testing::ExpectGolden;
+using testing::ExportTestDir;
+using testing::FileOf;
+
+const Project& SmallDrive() {
+  static const Project project = LoadProject(ExportTestDir() / "small_drive.json");
+  return project;
+}
+
+ModelicaExportReport Export(ModelResolution resolution, const std::string& scenario = "") {
+  ModelicaExportOptions options;
+  options.resolution = resolution;
+  options.scenario = scenario;
+  return GenerateModelica(SmallDrive(), options);
+}
+
+// The value of modifier `name` of instance `instance` in `text` (first match), or nan.
+double ModifierValue(const std::string& text, const std::string& instance, const std::string& name) {
+  const auto start = text.find(" " + instance + "(");
+  if (start == std::string::npos) return std::nan("");
+  const auto end = text.find(";", start);
+  const std::string decl = text.substr(start, end - start);
+  std::smatch m;
+  if (!std::regex_search(decl, m, std::regex("[(, \n]" + name + "=([-+0-9.e]+)"))) return std::nan("");
+  return std::stod(m[1]);
+}
+
+TEST(DriveSystemExport, FullModelMatchesGolden) {
+  const auto report = Export(ModelResolution::kFull);
+  EXPECT_EQ(report.model_name, "OneStationRig");
+  EXPECT_EQ(report.scenario, "rupture_wtb");
+  ExpectGolden("OneStationRig_full.mo", FileOf(report, "OneStationRig.mo").content);
+  EXPECT_EQ(CheckIssues(report), "");
+}
+
+TEST(DriveSystemExport, ReducedModelMatchesGolden) {
+  const auto report = Export(ModelResolution::kReduced);
+  ExpectGolden("OneStationRig_reduced.mo", FileOf(report, "OneStationRig.mo").content);
+  EXPECT_EQ(CheckIssues(report), "");
+  EXPECT_LT(report.component_count, Export(ModelResolution::kFull).component_count);
+}
+
+TEST(DriveSystemExport, FullModelSplitsShaftsIntoSettingsElements) {
+  const auto report = Export(ModelResolution::kFull, "jam_gra_1");
+  const std::string& text = FileOf(report, "OneStationRig.mo").content;
+  // shaft_elements = 2: springs with twice the segment stiffness, end masses with J/4.
+  const double G = 44e9, D = 0.05, d = 0.046, L = 3.0, rho = 4420;
+  const double polar = M_PI / 32 * (std::pow(D, 4) - std::pow(d, 4));
+  EXPECT_NEAR(ModifierValue(text, "shaft_1_spring1", "c"), 2 * G * polar / L, 1e-9 * G * polar / L);
+  EXPECT_NEAR(ModifierValue(text, "shaft_1_spring2", "c"), 2 * G * polar / L, 1e-9 * G * polar / L);
+  EXPECT_NEAR(ModifierValue(text, "shaft_1_mass0", "J"), rho * polar * L / 4, 1e-12);
+  EXPECT_NEAR(ModifierValue(text, "shaft_1_mass1", "J"), rho * polar * L / 2, 1e-12);
+  EXPECT_EQ(text.find("shaft_1_spring3"), std::string::npos);
+}
+
+TEST(DriveSystemExport, ReducedModelLumpsChainsWithSeriesStiffness) {
+  const auto report = Export(ModelResolution::kReduced, "jam_gra_1");
+  const std::string& text = FileOf(report, "OneStationRig.mo").content;
+  const double G = 44e9, D = 0.05, d = 0.046;
+  const double polar = M_PI / 32 * (std::pow(D, 4) - std::pow(d, 4));
+  const double c1 = G * polar / 3.0, c2 = G * polar / 2.0;
+  // shaft_1 - brg_1 - shaft_2 is one chain: 1/c = 1/c1 + 1/c2 (the bearing is rigid).
+  EXPECT_NEAR(ModifierValue(text, "shaft_1_shaft_2", "c"), 1 / (1 / c1 + 1 / c2), 1e-9 * c1);
+  // Its inertia (two shafts and the bearing) is split between the two ends.
+  const double rho = 4420, J_bearing = 5e-5;
+  const double J = rho * polar * 5.0 + J_bearing;
+  EXPECT_NEAR(ModifierValue(text, "shaft_1_shaft_2_massA", "J"), J / 2, 1e-12);
+  EXPECT_NEAR(ModifierValue(text, "shaft_1_shaft_2_massB", "J"), J / 2, 1e-12);
+  EXPECT_NE(text.find("<li>shaft_1_shaft_2: shaft_1, brg_1, shaft_2</li>"), std::string::npos);
+}
+
+TEST(DriveSystemExport, RuptureScenarioInsertsADisconnectorAndTheMonitor) {
+  for (auto resolution : {ModelResolution::kFull, ModelResolution::kReduced}) {
+    const auto report = Export(resolution, "rupture_wtb");
+    const std::string& text = FileOf(report, "OneStationRig.mo").content;
+    EXPECT_NE(text.find("HighLift.Mechanical.Disconnector"), std::string::npos) << ToString(resolution);
+    EXPECT_NE(text.find("t_disconnect=1"), std::string::npos);
+    EXPECT_NE(text.find("HighLift.Control.Monitoring monitor("), std::string::npos);
+    EXPECT_NE(text.find("connect(monitor.wtb, wtb.apply)"), std::string::npos);
+    // The APPU sits behind the 1:1 through-drive: no gain between the tip and the PDU angle.
+    EXPECT_NE(text.find("connect(appu_phi.phi, monitor.phi_left)"), std::string::npos);
+    EXPECT_NE(text.find("experiment(StopTime=3, Tolerance=1e-06, Interval=0.001)"), std::string::npos);
+  }
+}
+
+TEST(DriveSystemExport, JamScenarioJamsTheActuatorOutputAndTimesTheWtb) {
+  const auto report = Export(ModelResolution::kFull, "jam_gra_1");
+  const std::string& text = FileOf(report, "OneStationRig.mo").content;
+  EXPECT_NE(text.find("HighLift.Mechanical.Jam gra_1_jam(c=4000000000, t_jam=1)"), std::string::npos) << text;
+  EXPECT_NE(text.find("connect(gra_1.flange_b, gra_1_jam.flange)"), std::string::npos);
+  EXPECT_NE(text.find("Modelica.Blocks.Sources.BooleanStep wtbCommand(startTime=1.5)"), std::string::npos);
+  EXPECT_EQ(text.find("HighLift.Mechanical.Disconnector"), std::string::npos);
+  EXPECT_EQ(CheckIssues(report), "");
+}
+
+TEST(DriveSystemExport, LoadsAgainstPositionUseTheOutputAngle) {
+  const auto report = Export(ModelResolution::kFull);
+  const std::string& text = FileOf(report, "OneStationRig.mo").content;
+  // 5 -> 20 kN*m over the travel angle 2.2 rad, opposing the extension (negative).
+  EXPECT_NE(text.find("gra_1_loadTable(table=[0, -5000; 2.2, -20000]"), std::string::npos) << text;
+  EXPECT_NE(text.find("connect(gra_1_angle.phi, gra_1_loadTable.u)"), std::string::npos);
+  EXPECT_NE(text.find("pdu_speed(table=[0, 0; 0.4, 25.3; 3, 25.3]"), std::string::npos);
+}
+
+TEST(DriveSystemExport, TablesInFileAreReadByCombiTimeTable) {
+  ModelicaExportOptions options;
+  options.tables_in_file = true;
+  const auto report = GenerateModelica(SmallDrive(), options);
+  const std::string& table = FileOf(report, "OneStationRig.txt").content;
+  EXPECT_EQ(table.rfind("#1\ndouble pdu_speed(3,2)\n0 0\n0.4 25.3\n3 25.3\n", 0), 0u) << table;
+  EXPECT_NE(table.find("double gra_1_loadTable(2,2)\n0 -5000\n2.2 -20000\n"), std::string::npos) << table;
+  const std::string& text = FileOf(report, "OneStationRig.mo").content;
+  EXPECT_NE(text.find("tableOnFile=true"), std::string::npos);
+  EXPECT_NE(text.find("Modelica.Utilities.Files.loadResource(\"modelica://OneStationRig/OneStationRig.txt\")"),
+            std::string::npos);
+  EXPECT_EQ(CheckIssues(report), "");
+}
+
+TEST(DriveSystemExport, OutputIsDeterministic) {
+  for (auto resolution : {ModelResolution::kFull, ModelResolution::kReduced}) {
+    const auto a = Export(resolution), b = Export(resolution);
+    ASSERT_EQ(a.files.size(), b.files.size());
+    for (std::size_t i = 0; i < a.files.size(); ++i) EXPECT_EQ(a.files[i].content, b.files[i].content);
+  }
+}
+
+TEST(DriveSystemExport, UnknownScenarioListsTheScenarios) {
+  try {
+    Export(ModelResolution::kFull, "rupture_wtx");
+    FAIL() << "no exception";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("unknown scenario 'rupture_wtx': use one of rupture_wtb, jam_gra_1"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
+TEST(DriveSystemExport, ParameterWithoutValueNamesComponentAndRemedy) {
+  Project project = SmallDrive();
+  Parameter& length = project.FindComponent("shaft_1")->parameters["length"];
+  length.nominal.reset();
+  length.domain = {2.5, 3.5};
+  try {
+    GenerateModelica(project, ModelicaExportOptions{});
+    FAIL() << "no exception";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("component 'shaft_1' (torque_shaft): parameter 'length' has no value to export"),
+              std::string::npos)
+        << e.what();
+    EXPECT_NE(std::string(e.what()).find("give a value"), std::string::npos) << e.what();
+  }
+}
+
+TEST(DriveSystemExport, A380ClassExampleIsStructurallyValid) {
+  const auto file = std::filesystem::path(HIGHLIFT_SOURCE_DIR) / "examples" / "a380_class_flaps.json";
+  if (!std::filesystem::exists(file)) GTEST_SKIP() << "examples/a380_class_flaps.json not present";
+  const Project project = LoadProject(file);
+  for (auto resolution : {ModelResolution::kFull, ModelResolution::kReduced}) {
+    ModelicaExportOptions options;
+    options.resolution = resolution;
+    const auto report = GenerateModelica(project, options);
+    EXPECT_EQ(CheckIssues(report), "") << ToString(resolution);
+    EXPECT_GT(report.component_count, 50) << ToString(resolution);
+  }
+}
+
+}  // namespace
+}  // namespace highlift

@@ -1,0 +1,147 @@
+// Element networks export to models that use the MSL classes directly, with the MSL example's
+// instance names and parameters (golden files), deterministically.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <set>
+
+#include "common/shared_reference.h"
+#include "export_test_util.h"
+#include "highlift/core/error.h"
+
+namespace highlift {
+namespace {
+
+using testing::CheckIssues;
+using testing::ExpectGolden;
+using testing::ExportTestDir;
+using testing::FileOf;
+
+ModelicaExportReport ExportFile(const std::string& name) {
+  return GenerateModelica(LoadProject(ExportTestDir() / name), ModelicaExportOptions{});
+}
+
+TEST(ElementNetworkExport, FirstMatchesGolden) {
+  const auto report = ExportFile("first.json");
+  EXPECT_EQ(report.model_name, "First");
+  EXPECT_EQ(report.kind, "element network");
+  EXPECT_EQ(report.component_count, 9);
+  EXPECT_EQ(report.connection_count, 10);
+  ExpectGolden("First.mo", FileOf(report, "First.mo").content);
+  EXPECT_EQ(CheckIssues(report), "");
+}
+
+TEST(ElementNetworkExport, FrictionMatchesGolden) {
+  const auto report = ExportFile("friction.json");
+  ExpectGolden("Friction.mo", FileOf(report, "Friction.mo").content);
+  EXPECT_EQ(CheckIssues(report), "");
+  const std::string& text = FileOf(report, "Friction.mo").content;
+  // Supports connected to the ground switch useSupport on; start values are fixed.
+  EXPECT_NE(text.find("Modelica.Mechanics.Rotational.Components.Brake brake(fn_max=1600, useSupport=true)"),
+            std::string::npos);
+  EXPECT_NE(text.find("inertia3(J=1, phi(start=0, fixed=true), w(start=100, fixed=true))"), std::string::npos);
+  EXPECT_NE(text.find("experiment(StopTime=3, Tolerance=1e-06, Interval=0.001)"), std::string::npos);
+}
+
+// The model declares every instance the MSL reference results name, so a Modelica tool's
+// output columns match the reference CSV headers.
+TEST(ElementNetworkExport, InstanceNamesCoverTheReferenceColumns) {
+  HIGHLIFT_REQUIRE_SHARED(msl, "msl");
+  for (const std::string example : {"First", "Friction"}) {
+    std::ifstream csv(msl / (example + ".csv"));
+    std::string header;
+    std::getline(csv, header);
+    ASSERT_FALSE(header.empty()) << example;
+    const auto report = ExportFile(example == "First" ? "first.json" : "friction.json");
+    const std::string& text = FileOf(report, example + ".mo").content;
+    std::size_t pos = 0;
+    int columns = 0;
+    while ((pos = header.find('"', pos)) != std::string::npos) {
+      const auto end = header.find('"', pos + 1);
+      const std::string column = header.substr(pos + 1, end - pos - 1);
+      pos = end + 1;
+      if (column == "time") continue;
+      const std::string instance = column.substr(0, column.find('.'));
+      EXPECT_NE(text.find(" " + instance + "("), std::string::npos)
+          << example << ": column " << column << " names no instance of the model";
+      ++columns;
+    }
+    EXPECT_GT(columns, 3) << example;
+  }
+}
+
+TEST(ElementNetworkExport, OutputIsDeterministic) {
+  const auto a = ExportFile("friction.json");
+  const auto b = ExportFile("friction.json");
+  ASSERT_EQ(a.files.size(), b.files.size());
+  for (std::size_t i = 0; i < a.files.size(); ++i) {
+    EXPECT_EQ(a.files[i].path, b.files[i].path);
+    EXPECT_EQ(a.files[i].content, b.files[i].content) << a.files[i].path;
+  }
+}
+
+Component Element(std::string id, std::string type) {
+  Component c;
+  c.id = std::move(id);
+  c.type = std::move(type);
+  return c;
+}
+
+Parameter Given(double v) {
+  Parameter p;
+  p.nominal = v;
+  p.domain = Domain::Point(v);
+  p.provenance = Provenance::kUser;
+  return p;
+}
+
+TEST(ElementNetworkExport, KeywordNamesAreRenamedAndDocumented) {
+  Project project;
+  project.name = "keyword \"test\" <net>";
+  project.elements.push_back(Element("fixed", "Fixed"));
+  Component end = Element("end", "Inertia");
+  end.parameters["J"] = Given(1);
+  project.elements.push_back(end);
+  Component time = Element("time", "Spring");
+  time.parameters["c"] = Given(100);
+  project.elements.push_back(time);
+  project.element_connections.push_back({{"fixed", "flange"}, {"time", "flange_a"}, {}});
+  project.element_connections.push_back({{"time", "flange_b"}, {"end", "flange_a"}, {}});
+  const auto report = GenerateModelica(project, ModelicaExportOptions{});
+  EXPECT_EQ(report.model_name, "KeywordTestNet");
+  EXPECT_EQ(report.renamed.at("end"), "end_");
+  EXPECT_EQ(report.renamed.at("time"), "time_2");
+  const std::string& text = FileOf(report, "KeywordTestNet.mo").content;
+  EXPECT_NE(text.find("model KeywordTestNet \"keyword \\\"test\\\" <net>\""), std::string::npos) << text;
+  EXPECT_NE(text.find("connect(time_2.flange_b, end_.flange_a)"), std::string::npos) << text;
+  EXPECT_NE(text.find("keyword \\\"test\\\" &lt;net&gt;"), std::string::npos) << text;
+  EXPECT_EQ(CheckIssues(report), "");
+}
+
+TEST(ElementNetworkExport, UnknownElementTypeIsAnInputError) {
+  Project project;
+  project.name = "bad";
+  project.elements.push_back(Element("w", "Flywheel"));
+  try {
+    GenerateModelica(project, ModelicaExportOptions{});
+    FAIL() << "no exception";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("element 'w': element type 'Flywheel' has no Modelica class"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
+TEST(ElementNetworkExport, EmptyProjectIsAnInputError) {
+  Project project;
+  project.name = "empty";
+  try {
+    GenerateModelica(project, ModelicaExportOptions{});
+    FAIL() << "no exception";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("has neither components nor elements"), std::string::npos);
+  }
+}
+
+}  // namespace
+}  // namespace highlift

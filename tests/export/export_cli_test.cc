@@ -1,0 +1,76 @@
+// `highlift export`: writes the files, reports them (text and --json), and rejects bad usage
+// with exit code 2 and a message that names the problem.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+#include <unistd.h>
+
+#include "common/run_cli.h"
+#include "export_test_util.h"
+
+namespace highlift {
+namespace {
+
+using testing::ReadText;
+using testing::RunCli;
+
+std::filesystem::path TempDir(const std::string& name) {
+  const auto dir = std::filesystem::temp_directory_path() /
+                   ("highlift_export_" + name + "_" + std::to_string(::getpid()));
+  std::filesystem::remove_all(dir);
+  return dir;
+}
+
+TEST(ExportCli, WritesLibraryAndModel) {
+  const auto dir = TempDir("first");
+  const auto r = RunCli({"export", "tests/export/first.json", "--modelica", dir.string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("Modelica model 'First' (element network)"), std::string::npos) << r.out;
+  EXPECT_TRUE(std::filesystem::exists(dir / "HighLift" / "package.mo"));
+  EXPECT_TRUE(std::filesystem::exists(dir / "HighLift" / "Mechanical" / "TorqueLimiter.mo"));
+  EXPECT_EQ(ReadText(dir / "First.mo"), ReadText(testing::ExportTestDir() / "golden" / "First.mo"));
+  std::filesystem::remove_all(dir);
+}
+
+TEST(ExportCli, JsonReportListsTheFiles) {
+  const auto dir = TempDir("drive");
+  const auto r = RunCli({"export", "tests/export/small_drive.json", "--modelica", dir.string(), "--model",
+                         "reduced", "--scenario", "jam_gra_1", "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto doc = nlohmann::json::parse(r.out);
+  EXPECT_EQ(doc["model"], "OneStationRig");
+  EXPECT_EQ(doc["scenario"], "jam_gra_1");
+  EXPECT_EQ(doc["kind"], "drive system, reduced");
+  bool has_model = false;
+  for (const auto& f : doc["files"]) {
+    EXPECT_TRUE(std::filesystem::exists(dir / f.get<std::string>())) << f;
+    has_model = has_model || f == "OneStationRig.mo";
+  }
+  EXPECT_TRUE(has_model);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(ExportCli, BadResolutionIsAUsageError) {
+  const auto dir = TempDir("bad");
+  const auto r = RunCli({"export", "tests/export/small_drive.json", "--modelica", dir.string(), "--model", "coarse"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("unknown model resolution 'coarse'"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir));
+}
+
+TEST(ExportCli, UnknownScenarioIsAnInputError) {
+  const auto dir = TempDir("scenario");
+  const auto r = RunCli({"export", "tests/export/small_drive.json", "--modelica", dir.string(), "--scenario", "nope"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("unknown scenario 'nope': use one of rupture_wtb, jam_gra_1"), std::string::npos) << r.err;
+  std::filesystem::remove_all(dir);
+}
+
+TEST(ExportCli, OutputFolderIsRequired) {
+  const auto r = RunCli({"export", "tests/export/first.json"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--modelica"), std::string::npos) << r.err;
+}
+
+}  // namespace
+}  // namespace highlift

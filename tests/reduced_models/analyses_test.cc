@@ -1,0 +1,94 @@
+#include "highlift/reduced_models/analyses.h"
+
+#include <cmath>
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "highlift/core/error.h"
+#include "test_project.h"
+
+namespace highlift::reduced_models {
+namespace {
+
+TEST(Modes, ReducedModelsStayCloseToFullResolution) {
+  const ModesReport r = AnalyseModes(test_projects::OneWingProject(), {8, 4});
+  ASSERT_EQ(r.models.size(), 3u);
+  EXPECT_GT(r.models[0].degrees_of_freedom, r.models[1].degrees_of_freedom);
+  for (const auto& m : r.models) {
+    ASSERT_FALSE(m.clamped_hz.empty());
+    EXPECT_LT(std::abs(m.first_clamped_error), 0.05) << ToString(m.reduction);
+    EXPECT_LT(std::abs(m.first_free_error), 0.05) << ToString(m.reduction);
+  }
+  EXPECT_NEAR(FirstEigenfrequency(test_projects::OneWingProject()) / (2 * 3.141592653589793),
+              AnalyseModes(test_projects::OneWingProject()).models[0].clamped_hz[0], 1e-9);
+}
+
+TEST(Peak, JamAndRuptureCasesWithEnclosuresAndRanking) {
+  const PeakReport r = AnalysePeaks(test_projects::OneWingProject());
+  int jams = 0, ruptures = 0;
+  for (const auto& c : r.cases) {
+    (c.kind == "jam" ? jams : ruptures)++;
+    EXPECT_NEAR(c.tau_dynamic.nominal, c.w_max * std::sqrt(c.c_star * c.J_star), 1e-9 * c.tau_dynamic.nominal);
+    EXPECT_TRUE(c.tau_dynamic.bounds.contains(c.tau_dynamic.nominal)) << c.name;
+    EXPECT_GT(c.tau_dynamic.bounds.width(), 0.0) << c.name;
+    ASSERT_FALSE(c.ranking.empty()) << c.name;
+    double sum = 0.0;
+    for (const auto& p : c.ranking) sum += p.share;
+    EXPECT_NEAR(sum, 1.0, 1e-12);
+  }
+  EXPECT_EQ(jams, 3);
+  EXPECT_EQ(ruptures, 3);  // shaft_1..3; the tip shaft has the brake itself beyond it
+  const PeakCase& rupture = r.cases.back();
+  EXPECT_EQ(rupture.acts_at, "wtb");
+  EXPECT_GT(rupture.w_max, 25.3);
+  EXPECT_FALSE(r.worst.empty());
+}
+
+TEST(Peak, EnclosureContainsSampledPointResults) {
+  const Project base = test_projects::OneWingProject();
+  PeakOptions options;
+  options.only_case = "jam_gra_2";
+  options.rank = false;
+  const PeakReport wide = AnalysePeaks(base, options);
+  ASSERT_EQ(wide.cases.size(), 1u);
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  options.intervals = false;
+  for (int sample = 0; sample < 10; ++sample) {
+    Project p = base;
+    for (Component& c : p.components)
+      for (const ParameterSpec& spec : FindComponentType(c.type)->parameters) {
+        if (spec.kind != ParameterKind::kScalar || !spec.nominal) continue;
+        Parameter q;
+        if (c.parameters.count(spec.name)) {
+          q = c.parameters[spec.name];
+        } else {
+          q.nominal = spec.nominal;
+          q.domain = spec.default_domain;
+        }
+        if (!q.domain.bounded() || q.domain.is_point()) continue;
+        q.nominal = q.domain.lo + unit(random) * q.domain.width();
+        c.parameters[spec.name] = q;
+      }
+    const double tau = AnalysePeaks(p, options).cases[0].tau_dynamic.nominal;
+    EXPECT_TRUE(wide.cases[0].tau_dynamic.bounds.contains(tau))
+        << tau << " not in [" << wide.cases[0].tau_dynamic.bounds.lo << ", " << wide.cases[0].tau_dynamic.bounds.hi << "]";
+  }
+}
+
+TEST(Peak, UnknownCaseListsTheCases) {
+  PeakOptions options;
+  options.only_case = "jam_gra_9";
+  try {
+    AnalysePeaks(test_projects::OneWingProject(), options);
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("peak case 'jam_gra_9' does not exist; the cases are: jam_gra_1"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace highlift::reduced_models

@@ -1,0 +1,413 @@
+// Analytic and hand-derived checks of the element laws and of the solver: free vibration,
+// energy balance with friction, power through an ideal gear, a gear with a moving support,
+// IdealPlanetary, OneWayClutch, LossyGear with bearing friction, time events, failure reports.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "highlift/core/error.h"
+#include "highlift/sim/simulator.h"
+
+namespace highlift::sim {
+namespace {
+
+using Scalars = std::map<std::string, double>;
+
+ElementParameters P(Scalars s, std::map<std::string, std::vector<std::vector<double>>> t = {}) {
+  return {std::move(s), std::move(t)};
+}
+
+struct RunResult {
+  MemorySink sink;
+  SimulationReport report;
+  std::vector<double> Col(const std::string& name) const { return sink.Series(name); }
+  const std::vector<double>& t() const { return sink.times(); }
+};
+
+RunResult Simulate(const Network& net, double stop, double dt, double rtol = 1e-8) {
+  RunResult r;
+  Simulator sim(net);
+  SimulationOptions o;
+  o.stop_time = stop;
+  o.output_interval = dt;
+  o.relative_tolerance = rtol;
+  o.absolute_tolerance = 1e-10;
+  r.report = sim.Run(o, r.sink);
+  return r;
+}
+
+// Single-DOF oscillator J*phi'' + c*phi = 0, phi(0) = 0.1: phi = 0.1*cos(w0*t), w0 = sqrt(c/J).
+TEST(Oscillator, FreeVibrationMatchesCosine) {
+  Network net;
+  net.AddElement("Fixed", "fixed");
+  net.AddElement("Spring", "spring", P({{"c", 800}}));
+  net.AddElement("Inertia", "inertia", P({{"J", 2}, {"phi_start", 0.1}, {"w_start", 0}}));
+  net.Connect("fixed.flange", "spring.flange_a");
+  net.Connect("spring.flange_b", "inertia.flange_a");
+  const RunResult r = Simulate(net, 1.0, 1e-3);
+  ASSERT_TRUE(r.report.ok()) << r.report.FullReport();
+  const auto phi = r.Col("inertia.phi");
+  const auto phi_rel = r.Col("spring.phi_rel");
+  const double w0 = 20.0;
+  double worst = 0.0;
+  for (std::size_t i = 0; i < phi.size(); ++i) {
+    worst = std::max(worst, std::abs(phi[i] - 0.1 * std::cos(w0 * r.t()[i])));
+    EXPECT_NEAR(phi_rel[i], phi[i], 1e-9);  // relative-twist state agrees with the angle
+  }
+  EXPECT_LT(worst, 1e-6) << "largest deviation from 0.1*cos(20 t)";
+}
+
+// Work of the source = kinetic + potential energy + dissipation (damper and friction).
+TEST(EnergyBalance, WorkEqualsStoredPlusDissipatedWithFriction) {
+  Network net;
+  net.AddElement("Fixed", "fixed");
+  net.AddElement("Sine", "drive", P({{"amplitude", 6}, {"f", 1}}));
+  net.AddElement("Torque", "torque");
+  net.AddElement("Inertia", "inertia1", P({{"J", 1}, {"phi_start", 0}, {"w_start", 0}}));
+  net.AddElement("SpringDamper", "spring", P({{"c", 400}, {"d", 2}}));
+  net.AddElement("Inertia", "inertia2", P({{"J", 0.5}, {"phi_start", 0}, {"w_start", 0}}));
+  net.AddElement("BearingFriction", "bearing", P({{"peak", 1.2}}, {{"tau_pos", {{0, 1.0}, {10, 1.5}}}}));
+  net.Connect("drive.y", "torque.tau");
+  net.Connect("torque.flange", "inertia1.flange_a");
+  net.Connect("inertia1.flange_b", "spring.flange_a");
+  net.Connect("spring.flange_b", "inertia2.flange_a");
+  net.Connect("inertia2.flange_b", "bearing.flange_a");
+  net.Connect("bearing.support", "fixed.flange");
+  net.Connect("torque.support", "fixed.flange");
+  const RunResult r = Simulate(net, 2.0, 1e-4);
+  ASSERT_TRUE(r.report.ok()) << r.report.FullReport();
+  const auto u = r.Col("torque.tau"), w1 = r.Col("inertia1.w"), w2 = r.Col("inertia2.w");
+  const auto phi_rel = r.Col("spring.phi_rel"), w_rel = r.Col("spring.w_rel");
+  const auto tau_f = r.Col("bearing.tau"), mode = r.Col("bearing.mode");
+  double work = 0, dissipated = 0;
+  for (std::size_t i = 1; i < u.size(); ++i) {
+    const double h = r.t()[i] - r.t()[i - 1];
+    if (h == 0) continue;  // event rows
+    work += 0.5 * h * (u[i] * w1[i] + u[i - 1] * w1[i - 1]);
+    dissipated += 0.5 * h * (2 * w_rel[i] * w_rel[i] + 2 * w_rel[i - 1] * w_rel[i - 1]);
+    dissipated += 0.5 * h * (tau_f[i] * w2[i] + tau_f[i - 1] * w2[i - 1]);
+  }
+  const std::size_t n = u.size() - 1;
+  const double stored = 0.5 * 1 * w1[n] * w1[n] + 0.5 * 0.5 * w2[n] * w2[n] + 0.5 * 400 * phi_rel[n] * phi_rel[n];
+  bool stuck_seen = false, sliding_seen = false;
+  for (double m : mode) stuck_seen |= m == 0, sliding_seen |= std::abs(m) == 1;
+  EXPECT_TRUE(stuck_seen && sliding_seen) << "the test should exercise stick and slip";
+  EXPECT_GT(work, 1.0);
+  EXPECT_NEAR(work, stored + dissipated, 2e-4 * work)
+      << "work " << work << " stored " << stored << " dissipated " << dissipated;
+}
+
+// Ideal gear: power in = power out at every instant, and the reflected inertia
+// (J2 + i^2 J1) a2 = i u - d w2 gives w2 = (i u / d) (1 - exp(-d t / (J2 + i^2 J1))).
+TEST(IdealGear, ConservesPowerAndReflectsInertia) {
+  const double i = 4, J1 = 0.1, J2 = 3, d = 5, u = 10;
+  Network net;
+  net.AddElement("Fixed", "fixed");
+  net.AddElement("ConstantTorque", "torque", P({{"tau_constant", u}}));
+  net.AddElement("Inertia", "inertia1", P({{"J", J1}}));
+  net.AddElement("IdealGear", "gear", P({{"ratio", i}}));
+  net.AddElement("Inertia", "inertia2", P({{"J", J2}, {"phi_start", 0}, {"w_start", 0}}));
+  net.AddElement("Damper", "damper", P({{"d", d}}));
+  net.Connect("torque.flange", "inertia1.flange_a");
+  net.Connect("inertia1.flange_b", "gear.flange_a");
+  net.Connect("gear.flange_b", "inertia2.flange_a");
+  net.Connect("inertia2.flange_b", "damper.flange_a");
+  net.Connect("damper.flange_b", "fixed.flange");
+  const RunResult r = Simulate(net, 2.0, 1e-2);
+  ASSERT_TRUE(r.report.ok()) << r.report.FullReport();
+  const auto w1 = r.Col("inertia1.w"), w2 = r.Col("inertia2.w");
+  const auto ta = r.Col("gear.flange_a.tau"), tb = r.Col("gear.flange_b.tau");
+  const double T = (J2 + i * i * J1) / d;
+  for (std::size_t k = 0; k < w1.size(); ++k) {
+    const double scale = std::abs(ta[k] * w1[k]) + 1e-12;
+    EXPECT_NEAR(ta[k] * w1[k] + tb[k] * w2[k], 0.0, 1e-9 * scale) << "power not conserved";
+    EXPECT_NEAR(w1[k], i * w2[k], 1e-9 * (1 + std::abs(w1[k])));
+    EXPECT_NEAR(w2[k], i * u / d * (1 - std::exp(-r.t()[k] / T)), 1e-6);
+  }
+}
+
+// Gear with a moving support: the housing is an inertia, not grounded. Angular momentum of the
+// three bodies grows with the applied torque only; kinematics relative to the housing hold.
+TEST(IdealGear, MovingSupportConservesMomentumAndKinematics) {
+  const double i = 3, J1 = 0.2, J2 = 1.5, Jh = 2, u = 4;
+  Network net;
+  net.AddElement("Fixed", "fixed");
+  net.AddElement("ConstantTorque", "torque", P({{"tau_constant", u}}));
+  net.AddElement("Inertia", "inertia1", P({{"J", J1}, {"phi_start", 0}, {"w_start", 0}}));
+  net.AddElement("IdealGear", "gear", P({{"ratio", i}}));
+  net.AddElement("Inertia", "inertia2", P({{"J", J2}, {"w_start", 0}}));
+  net.AddElement("Inertia", "housing", P({{"J", Jh}, {"phi_start", 0}, {"w_start", 0}}));
+  net.Connect("torque.flange", "inertia1.flange_a");
+  net.Connect("torque.support", "fixed.flange");
+  net.Connect("inertia1.flange_b", "gear.flange_a");
+  net.Connect("gear.flange_b", "inertia2.flange_a");
+  net.Connect("gear.support", "housing.flange_a");
+  const RunResult r = Simulate(net, 1.0, 1e-2);
+  ASSERT_TRUE(r.report.ok()) << r.report.FullReport();
+  const auto w1 = r.Col("inertia1.w"), w2 = r.Col("inertia2.w"), wh = r.Col("housing.w");
+  const auto ta = r.Col("gear.flange_a.tau");
+  // Hand-derived: with tau_a the gear torque at a, J1 a1 = u - tau_a, J2 a2 = i tau_a,
+  // Jh ah = (1 - i) tau_a and a1 - ah = i (a2 - ah).
+  const double tau_a = u / (1 + J1 * (i * i / J2 + (1 - i) * (1 - i) / Jh));
+  for (std::size_t k = 0; k < w1.size(); ++k) {
+    const double t = r.t()[k];
+    EXPECT_NEAR(J1 * w1[k] + J2 * w2[k] + Jh * wh[k], u * t, 1e-8);
+    EXPECT_NEAR(w1[k] - wh[k], i * (w2[k] - wh[k]), 1e-8);
+    EXPECT_NEAR(ta[k], tau_a, 1e-8);
+    EXPECT_NEAR(wh[k], (1 - i) * tau_a / Jh * t, 1e-7);
+  }
+  EXPECT_GT(std::abs(wh.back()), 0.1) << "the housing must move";
+}
+
+// IdealPlanetary with the ring fixed: w_carrier = w_sun / (1 + r); inertia at the sun
+// Js + Jc/(1+r)^2; carrier torque -(1 + r) * sun torque.
+TEST(IdealPlanetary, RingFixedReducesSpeedByOnePlusRatio) {
+  const double r_ = 3, Js = 0.1, Jc = 1.6, u = 2;
+  Network net;
+  net.AddElement("Fixed", "fixed");
+  net.AddElement("ConstantTorque", "torque", P({{"tau_constant", u}}));
+  net.AddElement("Inertia", "sun_inertia", P({{"J", Js}, {"phi_start", 0}, {"w_start", 0}}));
+  net.AddElement("IdealPlanetary", "planetary", P({{"ratio", r_}}));
+  net.AddElement("Inertia", "carrier_inertia", P({{"J", Jc}}));
+  net.Connect("torque.flange", "sun_inertia.flange_a");
+  net.Connect("sun_inertia.flange_b", "planetary.sun");
+  net.Connect("planetary.carrier", "carrier_inertia.flange_a");
+  net.Connect("planetary.ring", "fixed.flange");
+  const RunResult r = Simulate(net, 1.0, 0.05);
+  ASSERT_TRUE(r.report.ok()) << r.report.FullReport();
+  const double a_sun = u / (Js + Jc / ((1 + r_) * (1 + r_)));
+  const auto ws = r.Col("sun_inertia.w"), wc = r.Col("carrier_inertia.w");
+  const auto ts = r.Col("planetary.sun.tau"), tc = r.Col("planetary.carrier.tau");
+  for (std::size_t k = 0; k < ws.size(); ++k) {
+    EXPECT_NEAR(ws[k], a_sun * r.t()[k], 1e-7);
+    EXPECT_NEAR(wc[k], ws[k] / (1 + r_), 1e-9);
+    EXPECT_NEAR(tc[k], -(1 + r_) * ts[k], 1e-9);
+    EXPECT_NEAR(tc[k], -Jc * a_sun / (1 + r_), 1e-7);  // carrier accelerates its inertia
+  }
+}
+
+// OneWayClutch (freewheel, disengaged clutch): a drives b while b would lag (locked); when the
+// drive reverses at t = 1 s, b overruns freely.
+TEST(OneWayClutch, LocksWhenDrivingAndOverrunsFreely) {
+  Network net;
+  net.AddElement("Fixed", "fixed");
+  net.AddElement("TorqueStep", "drive", P({{"stepTorque", -3}, {"offsetTorque", 2}, {"startTime", 1}}));
+  net.AddElement("Inertia", "inertia1", P({{"J", 1}, {"phi_start", 0}, {"w_start", 0}}));
+  net.AddElement("OneWayClutch", "freewheel", P({{"fn_max", 100}}));
+  net.AddElement("Constant", "engage", P({{"k", 0}}));
+  net.AddElement("Inertia", "inertia2", P({{"J", 1}, {"phi_start", 0}, {"w_start", 0}}));
+  net.AddElement("TorqueStep", "load", P({{"stepTorque", 1}, {"offsetTorque", -1}, {"startTime", 1}}));
+  net.Connect("drive.flange", "inertia1.flange_a");
+  net.Connect("inertia1.flange_b", "freewheel.flange_a");
+  net.Connect("freewheel.flange_b", "inertia2.flange_a");
+  net.Connect("inertia2.flange_b", "load.flange");
+  net.Connect("engage.y", "freewheel.f_normalized");
+  const RunResult r = Simulate(net, 2.0, 0.01);
+  ASSERT_TRUE(r.report.ok()) << r.report.FullReport();
+  const auto w1 = r.Col("inertia1.w"), w2 = r.Col("inertia2.w"), stuck = r.Col("freewheel.stuck");
+  for (std::size_t k = 0; k < w1.size(); ++k) {
+    const double t = r.t()[k];
+    if (t < 1 - 1e-9) {
+      EXPECT_NEAR(w1[k], 0.5 * t, 1e-7) << "locked: both accelerate at (2 - 1) / 2";
+      EXPECT_NEAR(w2[k], 0.5 * t, 1e-7);
+      EXPECT_EQ(stuck[k], 1.0);
+    } else if (t > 1 + 1e-9) {
+      EXPECT_NEAR(w1[k], 0.5 - (t - 1), 1e-6) << "free: a decelerates at -1";
+      EXPECT_NEAR(w2[k], 0.5, 1e-6) << "free: b keeps its speed (no load, no drag)";
+      EXPECT_EQ(stuck[k], 0.0);
+    }
+  }
+}
+
+// LossyGear with bearing friction, hand-derived. Forward rolling with flange_a driving (Q1):
+// tau_loss = (1 - eta1) tau_a + tau_bf1 and a_a = i^2 (eta1 u - tau_bf1) / (J2 + i^2 eta1 J1).
+// Below the breakaway torque the gear stays stuck.
+Network LossyGearRig(double u) {
+  Network net;
+  net.AddElement("Fixed", "fixed");
+  net.AddElement("ConstantTorque", "torque", P({{"tau_constant", u}}));
+  net.AddElement("Inertia", "inertia1", P({{"J", 1}}));
+  net.AddElement("LossyGear", "gear", P({{"ratio", 2}}, {{"lossTable", {{0, 0.9, 0.8, 2, 1}}}}));
+  net.AddElement("Inertia", "inertia2", P({{"J", 4}, {"phi_start", 0}, {"w_start", 0}}));
+  net.Connect("torque.flange", "inertia1.flange_a");
+  net.Connect("inertia1.flange_b", "gear.flange_a");
+  net.Connect("gear.flange_b", "inertia2.flange_a");
+  return net;
+}
+
+TEST(LossyGear, RollsForwardWithMeshLossAndBearingFriction) {
+  for (double u : {10.0, 3.0}) {
+    const RunResult r = Simulate(LossyGearRig(u), 1.0, 0.05);
+    ASSERT_TRUE(r.report.ok()) << r.report.FullReport();
+    const double a_a = 4 * (0.9 * u - 2) / (4 + 4 * 0.9 * 1);
+    const double tau_a = u - a_a;
+    const auto w1 = r.Col("inertia1.w"), loss = r.Col("gear.tauLoss"), mode = r.Col("gear.mode");
+    for (std::size_t k = 1; k < w1.size(); ++k) {
+      EXPECT_NEAR(w1[k], a_a * r.t()[k], 1e-7) << "u = " << u;
+      EXPECT_NEAR(loss[k], 0.1 * tau_a + 2, 1e-7) << "u = " << u;
+      EXPECT_EQ(mode[k], 1.0);
+    }
+  }
+}
+
+TEST(LossyGear, StaysStuckBelowBreakaway) {
+  // u = 1: the holding loss torque 1 N*m is below the forward capacity 0.1*1 + 2 = 2.1 N*m.
+  const RunResult r = Simulate(LossyGearRig(1.0), 1.0, 0.05);
+  ASSERT_TRUE(r.report.ok()) << r.report.FullReport();
+  const auto w1 = r.Col("inertia1.w"), loss = r.Col("gear.tauLoss"), mode = r.Col("gear.mode");
+  for (std::size_t k = 0; k < w1.size(); ++k) {
+    EXPECT_EQ(w1[k], 0.0);
+    EXPECT_NEAR(loss[k], 1.0, 1e-9);
+    EXPECT_EQ(mode[k], 0.0);
+  }
+}
+
+// Pulse edges are time events: the integrator stops exactly there.
+TEST(TimeEvents, PulseEdgesAreHitExactly) {
+  Network net;
+  net.AddElement("Pulse", "pulse", P({{"amplitude", 3}, {"width", 30}, {"period", 0.1}, {"startTime", 0.05}}));
+  net.AddElement("Torque", "torque");
+  net.AddElement("Inertia", "inertia", P({{"J", 1}, {"phi_start", 0}, {"w_start", 0}}));
+  net.AddElement("Damper", "damper", P({{"d", 1}}));
+  net.AddElement("Fixed", "fixed");
+  net.Connect("pulse.y", "torque.tau");
+  net.Connect("torque.flange", "inertia.flange_a");
+  net.Connect("inertia.flange_b", "damper.flange_a");
+  net.Connect("damper.flange_b", "fixed.flange");
+  const RunResult r = Simulate(net, 0.3, 0.007);
+  ASSERT_TRUE(r.report.ok()) << r.report.FullReport();
+  std::vector<double> expected = {0.05, 0.08, 0.15, 0.18, 0.25, 0.28};
+  std::vector<double> found;
+  for (const auto& e : r.report.events)
+    if (e.kind == "time") found.push_back(e.time);
+  ASSERT_EQ(found.size(), expected.size());
+  for (std::size_t k = 0; k < found.size(); ++k) EXPECT_NEAR(found[k], expected[k], 1e-12);
+  // Closed form between edges: w' = u - w.
+  const auto w = r.Col("inertia.w");
+  double w_exact = 0;  // integrate the piecewise-constant input exactly
+  double t_prev = 0;
+  std::size_t k = 0;
+  for (double edge : {0.05, 0.08, 0.15, 0.18, 0.25, 0.28, 0.3}) {
+    const double u = (edge == 0.08 || edge == 0.18 || edge == 0.28) ? 3.0 : 0.0;
+    for (; k < w.size() && r.t()[k] <= edge + 1e-12; ++k) {
+      if (r.t()[k] < t_prev) continue;
+      const double expect = u + (w_exact - u) * std::exp(-(r.t()[k] - t_prev));
+      EXPECT_NEAR(w[k], expect, 1e-6) << "t = " << r.t()[k];
+    }
+    w_exact = u + (w_exact - u) * std::exp(-(edge - t_prev));
+    t_prev = edge;
+    while (k < w.size() && r.t()[k] == edge) ++k;  // skip the right-limit row
+  }
+}
+
+TEST(Network, UnknownTypeSuggestsTheClosestName) {
+  Network net;
+  try {
+    net.AddElement("Intertia", "x");
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("unknown element type 'Intertia'; did you mean 'Inertia'?"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
+TEST(Network, MissingRequiredParameterIsNamed) {
+  Network net;
+  try {
+    net.AddElement("Spring", "spring");
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("element 'spring' (Spring): parameter 'c'"), std::string::npos)
+        << e.what();
+    EXPECT_NE(std::string(e.what()).find("is required"), std::string::npos) << e.what();
+  }
+}
+
+TEST(Network, UnconnectedSignalInputIsAnError) {
+  Network net;
+  net.AddElement("Torque", "torque");
+  net.AddElement("Inertia", "inertia", P({{"J", 1}}));
+  net.Connect("torque.flange", "inertia.flange_a");
+  try {
+    Simulator sim(net);
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("signal input 'tau' is not connected"), std::string::npos)
+        << e.what();
+  }
+}
+
+TEST(Network, MasslessFlangeIsReportedWithRemedy) {
+  Network net;
+  net.AddElement("Fixed", "fixed");
+  net.AddElement("Spring", "spring", P({{"c", 10}}));
+  net.AddElement("Damper", "damper", P({{"d", 1}}));
+  net.Connect("fixed.flange", "spring.flange_a");
+  net.Connect("spring.flange_b", "damper.flange_a");
+  net.Connect("damper.flange_b", "fixed.flange");
+  // spring.flange_b / damper.flange_a: no inertia, no constraint.
+  try {
+    Simulator sim(net);
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("has no inertia and no kinematic coupling"), std::string::npos)
+        << e.what();
+    EXPECT_NE(std::string(e.what()).find("connect an Inertia there"), std::string::npos) << e.what();
+  }
+}
+
+TEST(Network, ContradictoryInitialValuesAreNamed) {
+  Network net;
+  net.AddElement("Fixed", "fixed");
+  net.AddElement("IdealGear", "gear", P({{"ratio", 2}}));
+  net.AddElement("Inertia", "a", P({{"J", 1}, {"w_start", 1}}));
+  net.AddElement("Inertia", "b", P({{"J", 1}, {"w_start", 1}}));
+  net.Connect("a.flange_b", "gear.flange_a");
+  net.Connect("gear.flange_b", "b.flange_a");
+  Simulator sim(net);
+  MemorySink sink;
+  SimulationOptions o;
+  try {
+    sim.Run(o, sink);
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("initial speeds contradict"), std::string::npos) << e.what();
+  }
+}
+
+// A failed integration returns a report (time, state, element, flag), it does not throw.
+TEST(Failure, ReportNamesTimeFlagAndState) {
+  Network net;
+  net.AddElement("Fixed", "fixed");
+  net.AddElement("Spring", "spring", P({{"c", 1e6}}));
+  net.AddElement("Inertia", "inertia", P({{"J", 1e-3}, {"phi_start", 1}, {"w_start", 0}}));
+  net.Connect("fixed.flange", "spring.flange_a");
+  net.Connect("spring.flange_b", "inertia.flange_a");
+  Simulator sim(net);
+  MemorySink sink;
+  SimulationOptions o;
+  o.stop_time = 10;
+  o.output_interval = 5;
+  o.max_steps_per_output = 50;
+  const SimulationReport r = sim.Run(o, sink);
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.status, SimulationStatus::kSolverFailure);
+  EXPECT_EQ(r.sundials_flag, "CV_TOO_MUCH_WORK");
+  EXPECT_NE(r.message.find("CVode failed with CV_TOO_MUCH_WORK at t = "), std::string::npos) << r.message;
+  EXPECT_GT(r.time, 0.0);
+  EXPECT_LT(r.time, 10.0);
+  EXPECT_FALSE(r.state.empty());
+  EXPECT_FALSE(r.element.empty());
+}
+
+TEST(Options, DefaultsAreValid) {
+  EXPECT_NO_THROW(SimulationOptions{}.Validate());
+  SimulationOptions o;
+  o.stop_time = -1;
+  EXPECT_THROW(o.Validate(), InputError);
+}
+
+}  // namespace
+}  // namespace highlift::sim
