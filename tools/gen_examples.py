@@ -504,7 +504,7 @@ def a380_flaps():
         "pdu_description": ("power drive unit on the centre line: two hydraulic motors summed by a "
                             "speed-summing differential, pressure-off brakes (domain.md s1 P, s3 E)"),
         "pdu": {
-            "motor_count": 2,
+            "motor_count": {"value": 2, "note": "domain.md s1 (P): two motors summed by a differential"},
             "motor_inertia": q("3e-4 kg*m^2", f"{E}: per motor, domain [2, 4]e-4", "2e-4 kg*m^2",
                                "4e-4 kg*m^2"),
             "ratio": q(20, f"{E}: i_PCU = 20, motor speed / output speed"),
@@ -616,7 +616,7 @@ def a320_flaps():
                             "pressure-off brakes; one motor lost: half speed, full torque "
                             "(domain.md s1 P)"),
         "pdu": {
-            "motor_count": 2,
+            "motor_count": {"value": 2, "note": "domain.md s1 (P): two motors summed by a differential"},
             "motor_inertia": q("1.5e-4 kg*m^2", f"{E}: per motor (PCU node 0.087 = 2 x 1.5e-4 x "
                                "16^2 + 0.01)", "1e-4 kg*m^2", "2e-4 kg*m^2"),
             "ratio": q(16, f"{E}: motor speed / output speed"),
@@ -732,7 +732,7 @@ def a320_slats():
         "pdu_description": ("power control unit: two hydraulic motors summed by a differential, "
                             "pressure-off brakes (domain.md s1 P)"),
         "pdu": {
-            "motor_count": 2,
+            "motor_count": {"value": 2, "note": "domain.md s1 (P): two motors summed by a differential"},
             "motor_inertia": q("1.5e-4 kg*m^2", "domain.md s4 (E): like the flap PCU motors",
                                "1e-4 kg*m^2", "2e-4 kg*m^2"),
             "ratio": q(22, f"{E}: about 4600 rpm motor speed (s4) / 206 rpm output speed"),

@@ -15,13 +15,15 @@ using highlift::sim::Network;
 Network Chain(int n) {
   Network net;
   net.AddElement("Fixed", "fixed");
-  net.AddElement("Sine", "w_ref", {{{"amplitude", 0.5}, {"f", 2.0}, {"offset", 10.0}}, {}});
+  net.AddElement("Sine", "w_ref", {{{"amplitude", 0.1}, {"f", 2.0}, {"offset", 10.0}}, {}});
   net.AddElement("Speed", "speed", {{{"f_crit", 50.0}}, {}});
   net.Connect("w_ref.y", "speed.w_ref");
   net.Connect("speed.support", "fixed.flange");
   for (int i = 0; i < n; ++i) {
     const std::string k = std::to_string(i);
-    net.AddElement("Inertia", "inertia" + k, {{{"J", 0.01}, {"phi_start", 0.0}, {"w_start", 10.0}}, {}});
+    ElementParameters inertia{{{"J", 0.01}, {"w_start", 10.0}}, {}};
+    if (i == 0) inertia.scalars["phi_start"] = 0.0;
+    net.AddElement("Inertia", "inertia" + k, inertia);
     net.AddElement("BearingFriction", "bearing" + k, {{}, {{"tau_pos", {{0.0, 0.05}, {100.0, 0.1}}}}});
     net.Connect("inertia" + k + ".flange_b", "bearing" + k + ".flange_a");
     net.Connect("bearing" + k + ".support", "fixed.flange");
@@ -30,7 +32,10 @@ Network Chain(int n) {
     } else {
       const std::string prev = std::to_string(i - 1);
       net.AddElement("ElastoBacklash", "backlash" + k,
-                     {{{"c", 1e4}, {"d", 5.0}, {"b", 1e-3}}, {}});
+                     {{{"c", 1e4}, {"d", 5.0}, {"b", 1e-3},
+                       // start in contact, loaded by the drag of the nodes downstream
+                       {"phi_rel_start", -(0.5e-3 + (n - i) * 0.055 / 1e4)}},
+                      {}});
       net.Connect("inertia" + prev + ".flange_b", "backlash" + k + ".flange_a");
       net.Connect("backlash" + k + ".flange_b", "inertia" + k + ".flange_a");
     }

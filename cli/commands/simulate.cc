@@ -116,6 +116,7 @@ class SimulateCommand : public Command {
     else if (!signals_.empty())
       throw InputError("--signals selects CSV columns; give --out FILE as well");
     CountingSink sink(csv.get());
+    const std::size_t selected = SplitSignals(signals_).size();
     Progress progress;
     const bool terminal = isatty(fileno(stderr)) != 0;
     const sim::SimulationReport report =
@@ -138,7 +139,9 @@ class SimulateCommand : public Command {
         for (const auto& [name, value] : report.state) state[name] = value;
         j["state"] = state;
       }
-      j["output"] = {{"file", out_}, {"columns", sink.columns()}, {"rows", sink.rows()}};
+      j["output"] = {{"file", out_},
+                     {"columns", selected > 0 ? selected : sink.columns()},
+                     {"rows", sink.rows()}};
       const auto& s = report.statistics;
       j["statistics"] = {{"states", s.states},
                          {"linear_solver", s.linear_solver},
@@ -166,7 +169,8 @@ class SimulateCommand : public Command {
     } else {
       std::cout << report.BriefReport() << "\n";
       if (!out_.empty())
-        std::cout << "wrote " << sink.rows() << " rows x " << sink.columns() + 1 << " columns to "
+        std::cout << "wrote " << sink.rows() << " rows x "
+                  << (selected > 0 ? selected : sink.columns()) + 1 << " columns to "
                   << out_ << "\n";
       TextTable table({"element", "peak |tau| [N*m]", "at t [s]"}, {1, 2});
       for (const auto& p : report.peak_torques)

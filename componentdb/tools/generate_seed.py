@@ -108,8 +108,8 @@ for k, (des, prog, tau, src) in enumerate([("STL-A380C", "A380-class flap", 470,
     part("system_torque_limiter", des, prog, "ball-ramp lock-out coupling (EP0873937)", [
         q("lockout_torque_extend", tau, "N*m", "E", src + "; " + S6 + " 1.2-1.4 x", round(0.9 * tau), round(1.1 * tau)),
         q("lockout_torque_retract", tau, "N*m", "E", "symmetric STL"),
-        q("inertia", (1e-3 * (tau / 470) ** (5 / 3) + 2e-4) * wobble(k), "kg*m^2", "E",
-          "gear scaling J ~ T^(5/3) from 1e-3 at 470 N m, x %.2f scatter" % wobble(k))])
+        q("inertia", 1e-3 * (tau / 470) ** 0.5 * wobble(k), "kg*m^2", "E",
+          "J = 1e-3 (T/470 N m)^0.5 (friction-pack device, weak size dependence; catalogue 1e-3), x %.2f scatter" % wobble(k))])
 
 # --- torque shafts (tube stock; length given per segment in a project) -----------------------
 def tube(des, prog, D, t, material, G, rho, tau, tagG, note):
@@ -196,22 +196,28 @@ for k, (des, prog, tau, src) in enumerate([("STTL-A380C", "A380-class flap", 90,
     part("station_torque_limiter", des, prog, "bi-directional ball-ramp limiter with lock-out indicator (TTM 27-50-00, P)", [
         q("lockout_torque_extend", tau, "N*m", "E", src + "; " + S6 + " 1.3-1.6 x", round(0.9 * tau, 1), round(1.1 * tau, 1)),
         q("lockout_torque_retract", 0.7 * tau, "N*m", "E", S3 + ": retract 0.7 x extend; EP4265931 (P) asymmetric"),
-        q("inertia", (5e-4 * (tau / 90) ** (5 / 3) + 5e-5) * wobble(k + 4), "kg*m^2", "E",
-          "gear scaling J ~ T^(5/3) from 5e-4 at 90 N m, x %.2f scatter" % wobble(k + 4))])
+        q("inertia", 5e-4 * (tau / 90) * wobble(k + 4), "kg*m^2", "E",
+          "J = 5e-4 (T/90 N m) (friction-pack device; about 2e-4 at 35 N m, s4), x %.2f scatter" % wobble(k + 4))])
 
 # --- geared rotary actuators: named ones, then a family ---------------------------------------
-K_J = 1e-3 / (20e3 / 200 / 0.85) ** (5 / 3)  # J_in = K_J (T_out / ratio / eta)^(5/3), 1e-3 at 20 kN m, 200:1
+T_IN_REF = 20e3 / 200 / 0.85  # N m: the s3 GRA (20 kN m, 200:1, eta 0.85) has J_in = 1e-3 (s6)
+
+
+def gra_inertia(torque_nm, ratio):
+    """J_in = 3e-4 + 7e-4 (T_in / T_in_ref)^(5/3): gear scaling above a floor for the input
+    shaft, bearings and no-back brake (the same law as estimation/physics.h)."""
+    return 3e-4 + 7e-4 * (torque_nm / ratio / 0.85 / T_IN_REF) ** (5 / 3)
 
 
 def gra(des, prog, ratio, torque_knm, note, scatter=1.0, tag_src=""):
-    J = K_J * (torque_knm * 1e3 / ratio / 0.85) ** (5 / 3) * scatter
+    J = gra_inertia(torque_knm * 1e3, ratio) * scatter
     part("geared_rotary_actuator", des, prog, note, [
         q("ratio", ratio, "1", "E", tag_src or (S6 + ": ratio 100-300:1")),
         q("output_torque_rating", torque_knm, "kN*m", "E", tag_src or (S6 + " family, 2-25 kN m")),
         q("eta_opposing", 0.85, "1", "E", S6 + ": 0.80-0.90", 0.80, 0.90),
         q("eta_aiding", 0.70, "1", "E", S6 + ": 0.60-0.80", 0.60, 0.80),
         q("input_inertia", J, "kg*m^2", "E",
-          "J_in = %.3g (T_out/ratio/0.85)^(5/3) x %.2f scatter; 1e-3 at 20 kN m, 200:1 (%s)" % (K_J, scatter, S6))])
+          "J_in = 3e-4 + 7e-4 (T_out/ratio/0.85/117.6 N m)^(5/3) x %.2f scatter; 1e-3 at 20 kN m, 200:1 (%s)" % (scatter, S6))])
 
 
 gra("GRA-200-A380C", "A380-class flap", 200, 20, "compound planetary (ASME IDETC 2011, P type)", 1.0,
@@ -220,12 +226,12 @@ gra("GRA-300-A320C-FLAP", "A320-class flap", 300, 6, "rotary actuator at a flap 
     S4 + ": station output about 6 kN m, 300:1")
 gra("GRA-150-A320C-SLAT", "A320-class slat", 150, 2, "slat rotary actuator (AMM 27-84-00, P)", 1.0,
     S5 + ": output 2 kN m, 150:1")
-# A family over the section-6 ranges: torque 2-25 kN m log-spaced, ratio rising with torque
-# from 100 to 300 with a deterministic +-20 % wobble; scatter of the inertia +-15 %.
+# A family over the section-6 ranges: torque 2-25 kN m log-spaced, ratio spread over 100-300
+# independently of the torque (deterministic); scatter of the inertia +-15 %.
 n = 19
 for k in range(n):
     T = 2.0 * (25.0 / 2.0) ** (k / (n - 1))
-    ratio = round((100 + 200 * k / (n - 1)) * (1 + 0.2 * math.sin(2.3 * k)) / 5) * 5
+    ratio = round((200 + 100 * math.sin(2.3 * k + 1.0)) / 5) * 5
     ratio = min(300, max(100, ratio))
     scatter = 1 + 0.15 * math.sin(1.7 * k + 0.5)
     gra("GRA-F%02d-%d" % (k + 1, ratio), "family (E)", ratio, round(T, 2), "plausible family member, not a real part", scatter)
@@ -247,8 +253,9 @@ for k, (des, prog, dyn, stat, src) in enumerate([("WTB-A380C", "A380-class flap"
         q("max_dynamic_torque", dyn, "N*m", "E", src),
         q("static_capacity", stat, "N*m", "E", src + "; static above dynamic"),
         q("engagement_latency", 100, "ms", "E", S6 + ": 50-150 ms", 50, 150),
-        q("inertia", 5e-4 * (dyn / 550) ** (5 / 3) * (wobble(k + 8) if k else 1.0), "kg*m^2", "E",
-          S3 + ": rotor 5e-4 at 550 N m, J ~ T^(5/3)" + (", x %.2f scatter" % wobble(k + 8) if k else ""))])
+        q("inertia", 5e-4 * (dyn / 550) ** 0.4 * (wobble(k + 8) if k else 1.0), "kg*m^2", "E",
+          "rotor 5e-4 at 550 N m (s3) and about 3e-4 at 150 N m (s4 node 4.3e-4 less a shaft half): J ~ T^0.4" +
+          (", x %.2f scatter" % wobble(k + 8) if k else ""))])
 
 # --- position sensors ------------------------------------------------------------------------
 part("position_sensor", "APPU-A320C", "A320-class flap", "asymmetry position pick-off at track 4 (TTM 27-50-00, P)", [

@@ -168,7 +168,10 @@ ut_system* UnitSystem() {
   const std::pair<const char*, const char*> aliases[] = {
       {"rev", "revolution"}, {"deg", "arc_degree"}, {"Nm", "newton_meter"}, {"rpm", "revolution/minute"}};
   for (const auto& [symbol, definition] : aliases) {
-    if (ut_get_unit_by_symbol(system, symbol) != nullptr) continue;
+    if (ut_unit* existing = ut_get_unit_by_symbol(system, symbol)) {
+      ut_free(existing);
+      continue;
+    }
     ut_unit* unit = ut_parse(system, definition, UT_ASCII);
     if (unit == nullptr && std::string(definition) == "newton_meter") unit = ut_parse(system, "N.m", UT_ASCII);
     if (unit == nullptr && std::string(definition) == "arc_degree") unit = ut_parse(system, "degree", UT_ASCII);
@@ -243,7 +246,9 @@ UnitPtr SiUnit(ut_system* system, const Dimension& d) {
   UnitPtr result(ut_get_dimensionless_unit_one(system));
   for (std::size_t i = 0; i < kBaseSymbols.size(); ++i) {
     if (d.exponents[i] == 0) continue;
-    UnitPtr raised(ut_raise(ut_get_unit_by_symbol(system, kBaseSymbols[i]), d.exponents[i]));
+    UnitPtr base(ut_get_unit_by_symbol(system, kBaseSymbols[i]));
+    HIGHLIFT_CHECK(base != nullptr, "UDUNITS-2 has no base unit symbol");
+    UnitPtr raised(ut_raise(base.get(), d.exponents[i]));
     HIGHLIFT_CHECK(raised != nullptr, "UDUNITS-2 could not raise a base unit");
     result.reset(ut_multiply(result.get(), raised.get()));
     HIGHLIFT_CHECK(result != nullptr, "UDUNITS-2 could not multiply base units");

@@ -254,8 +254,13 @@ class Validator {
     }
     for (const auto& id : graph.ReachOrder()) {
       const PowerPath* path = graph.PathTo(id);
-      if (!path->reversed) continue;
       const Component* c = project_.FindComponent(id);
+      if ((c->type == "system_torque_limiter" || c->type == "station_torque_limiter") && path->entry_port == "output")
+        Add(Severity::kWarning, id, "output",
+            Describe(*c) + ": reached from the PDU through its port 'output'; its extend and retract lock-out torques "
+                           "refer to power flowing from 'input' to 'output', so swap the connections of its ports",
+            c->where);
+      if (!path->reversed) continue;
       const std::string previous = path->components.size() >= 2 ? path->components[path->components.size() - 2] : "";
       Add(Severity::kError, id, path->entry_port,
           Describe(*c) + ": inconsistent gear-ratio convention: the gearbox is reached from the PDU through its port '" +

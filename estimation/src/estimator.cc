@@ -433,7 +433,7 @@ class Estimator {
     } else if (c.type == "geared_rotary_actuator") {
       const Input T = InputOf(c, "output_torque_rating"), ratio = InputOf(c, "ratio"), eta = InputOf(c, "eta_opposing");
       ApplyLaw(c, "input_inertia", {T, ratio, eta},
-               "physics: gear scaling J_in = 1e-3 kg m2 (tau_out/(ratio eta) / 117.6 N m)^(5/3) (domain.md s6)",
+               "physics: gear scaling J_in = 3e-4 + 7e-4 (tau_out/(ratio eta) / 117.6 N m)^(5/3) kg m2 (domain.md s6)",
                [](const auto& v) { return ActuatorInputInertia(v[0], v[1], v[2]); });
       const auto mass = LabelQuantity(c, "flap_mass", dimensions::Mass());
       const auto stroke = LabelQuantity(c, "flap_stroke", dimensions::Length());
@@ -459,7 +459,7 @@ class Estimator {
     } else if (type.FindParameter("torque_rating") && type.FindParameter("inertia")) {
       // Gearboxes with a torque rating (input side): gear scaling of the inertia.
       ApplyLaw(c, "inertia", {InputOf(c, "torque_rating")},
-               "physics: gear scaling J = 1e-3 kg m2 (tau_in / 117.6 N m)^(5/3) (domain.md s6)",
+               "physics: gear scaling J = 3e-4 + 7e-4 (tau_in / 117.6 N m)^(5/3) kg m2 (domain.md s6)",
                [](const auto& v) { return GearboxInertiaFromTorque(v[0]); });
     }
   }

@@ -485,8 +485,6 @@ void DriveSystemWriter::EmitChains() {
     std::vector<std::pair<const Component*, std::string>> members;  // component, entry port
     const Component* current = first;
     std::string in = entry;
-    std::optional<PortRef> end_a, end_b;
-    if (auto it = peer.find({first->id, entry}); it != peer.end()) end_a = it->second;
     while (true) {
       members.emplace_back(current, in);
       done.insert(current->id);
@@ -494,10 +492,7 @@ void DriveSystemWriter::EmitChains() {
       auto it = peer.find({current->id, out});
       if (it == peer.end()) break;
       const Component* next = project_.FindComponent(it->second.component);
-      if (!next || !IsChainType(next->type) || done.count(next->id)) {
-        end_b = it->second;
-        break;
-      }
+      if (!next || !IsChainType(next->type) || done.count(next->id)) break;
       in = it->second.port;
       current = next;
     }
@@ -564,8 +559,6 @@ void DriveSystemWriter::EmitChains() {
     Map(*first, entry, ref_a);
     const auto& [last, last_in] = members.back();
     Map(*last, last_in == "a" ? "b" : "a", ref_b);
-    (void)end_a;
-    (void)end_b;
   }
 }
 
@@ -667,14 +660,17 @@ void DriveSystemWriter::ComputeSpeedFactors() {
 // With trigger "time" a BooleanStep applies them instead.
 void DriveSystemWriter::EmitMonitoring() {
   if (wtbs_.empty()) return;
-  std::string command;
   if (scenario_ && scenario_->wtb_trigger == "time") {
-    command = Name("wtbCommand");
+    const std::string command = Name("wtbCommand");
     Add("Modelica.Blocks.Sources.BooleanStep", command,
         {{"startTime", FormatModelicaReal(scenario_->wtb_time.value_or(0.0), "wtb time"), {}}},
         "wing-tip brake command at the scenario's time");
-  } else if (pdu_) {
-    command = Name("monitor");
+    for (const auto& wtb : wtb_instances_) writer_.AddConnect(command + ".y", wtb + ".apply");
+    return;
+  }
+  if (!pdu_) return;  // no PDU angle to monitor: the WTBs stay released
+  {
+    const std::string command = Name("monitor");
     // Thresholds from the APPU, else the catalogue defaults of a position sensor.
     const Component* appu = sensors_.empty() ? nullptr : sensors_.front().first;
     auto sensor_value = [&](const std::string& name) {
@@ -740,13 +736,8 @@ void DriveSystemWriter::EmitMonitoring() {
     Add("Modelica.Blocks.Continuous.Integrator", integrator, {}, "commanded PDU angle");
     writer_.AddConnect(speed_table_ + ".y[1]", integrator + ".u");
     writer_.AddConnect(integrator + ".y", command + ".phi_cmd");
-    command += ".wtb";
-    for (const auto& wtb : wtb_instances_) writer_.AddConnect(command, wtb + ".apply");
-    return;
-  } else {
-    return;
+    for (const auto& wtb : wtb_instances_) writer_.AddConnect(command + ".wtb", wtb + ".apply");
   }
-  for (const auto& wtb : wtb_instances_) writer_.AddConnect(command + ".y", wtb + ".apply");
 }
 
 ModelOutput DriveSystemWriter::Run() {

@@ -6,6 +6,7 @@
 
 #include "highlift/core/catalogue.h"
 #include "highlift/core/error.h"
+#include "highlift/export/modelica_check.h"
 #include "model_writer.h"
 #include "writers.h"
 
@@ -68,6 +69,7 @@ ModelOutput WriteElementNetwork(const Project& project, const std::string& model
 
   ModelWriter writer(model_name);
   std::vector<std::pair<std::string, std::string>> extra_connects;
+  std::vector<std::string> initial_equations;
   for (const auto& e : project.elements) {
     const auto cls = ClassOfElementType().find(e.type);
     if (cls == ClassOfElementType().end())
@@ -106,9 +108,21 @@ ModelOutput WriteElementNetwork(const Project& project, const std::string& model
         } else if (p.kind == ParameterKind::kInteger) {
           inst.modifiers.push_back({p.name, FormatInteger(v), {}});
         } else if (p.name.size() > 6 && p.name.substr(p.name.size() - 6) == "_start") {
-          // Initial values: MSL start values with fixed=true.
-          inst.modifiers.push_back({p.name.substr(0, p.name.size() - 6), "",
-                                    {{"start", FormatModelicaReal(v, what)}, {"fixed", "true"}}});
+          // Initial values: MSL start values with fixed=true; a speed the class has no
+          // variable for (Spring: w_rel) becomes an initial equation on the derivative.
+          const std::string variable = p.name.substr(0, p.name.size() - 6);
+          const auto known = MslModifiers(cls->second);
+          const bool msl = cls->second.rfind("Modelica.", 0) == 0;
+          if (!msl || std::find(known.begin(), known.end(), variable) != known.end()) {
+            inst.modifiers.push_back({variable, "", {{"start", FormatModelicaReal(v, what)}, {"fixed", "true"}}});
+          } else if (variable == "w_rel" || variable == "w") {
+            initial_equations.push_back("der(" + inst.name + (variable == "w" ? ".phi" : ".phi_rel") +
+                                        ") = " + FormatModelicaReal(v, what) + ";");
+          } else {
+            throw InputError("element '" + e.id + "' (" + e.type + "): initial value '" + p.name +
+                                 "' has no variable in " + cls->second + "; leave it out",
+                             e.where);
+          }
         } else {
           inst.modifiers.push_back({p.name, FormatModelicaReal(v, what), {}});
         }
@@ -139,6 +153,7 @@ ModelOutput WriteElementNetwork(const Project& project, const std::string& model
     writer.AddConnect(ids.Get(c.a.component) + "." + c.a.port, ids.Get(c.b.component) + "." + c.b.port);
   }
   for (auto& [a, b] : extra_connects) writer.AddConnect(a, b);
+  for (auto& e : initial_equations) writer.AddInitialEquation(std::move(e));
 
   Experiment experiment;
   experiment.tolerance = project.settings.relative_tolerance;

@@ -47,12 +47,37 @@ std::pair<int, int> PortOffset(const std::string& class_path, const std::string&
 
 std::string Point(int x, int y) { return "{" + std::to_string(x) + "," + std::to_string(y) + "}"; }
 
+// Documentation keeps its line breaks; quotes and backslashes are escaped.
+std::string EscapeKeepingNewlines(const std::string& text) {
+  std::string out;
+  std::size_t start = 0;
+  while (true) {
+    const auto nl = text.find('\n', start);
+    out += EscapeModelicaString(text.substr(start, nl == std::string::npos ? std::string::npos : nl - start));
+    if (nl == std::string::npos) break;
+    out += '\n';
+    start = nl + 1;
+  }
+  return out;
+}
+
 std::string RenderModifier(const Modifier& m) {
   if (m.nested.empty()) return m.name + "=" + m.value;
   std::string s = m.name + "(";
   for (std::size_t i = 0; i < m.nested.size(); ++i)
     s += (i ? ", " : "") + m.nested[i].first + "=" + m.nested[i].second;
   return s + ")";
+}
+
+// Grounds (Fixed) connect to many parts; they do not spread the layout and sit below their
+// first placed neighbour.
+bool IsGround(const std::string& class_path) {
+  return class_path.size() >= 6 && class_path.substr(class_path.size() - 6) == ".Fixed";
+}
+
+// Sources start the layout on the left.
+bool IsSignalSource(const std::string& class_path) {
+  return class_path.rfind("Modelica.Blocks.Sources.", 0) == 0;
 }
 
 }  // namespace
@@ -71,48 +96,69 @@ void ModelWriter::AddParameter(std::string type, std::string name, std::string v
 
 void ModelWriter::AddEquation(std::string equation) { equations_.push_back(std::move(equation)); }
 
+void ModelWriter::AddInitialEquation(std::string equation) { initial_equations_.push_back(std::move(equation)); }
+
 bool ModelWriter::HasInstance(const std::string& name) const {
   return std::any_of(instances_.begin(), instances_.end(),
                      [&](const modelica_detail::Instance& i) { return i.name == name; });
 }
 
-// Layered layout: breadth-first from each not yet placed instance (in declaration order) over
-// the connections; the layer is the column, the order of discovery within a layer the row.
-// Separate groups are stacked below each other.
+// Layered layout: breadth-first over the connections from a signal source (else the first
+// instance); the distance is the column, the order of discovery within a column the row.
+// Groups not reached are laid out the same way below. Grounds go below a neighbour.
 std::map<std::string, ModelWriter::Position> ModelWriter::Layout() const {
+  std::map<std::string, std::string> class_of;
+  for (const auto& inst : instances_) class_of[inst.name] = inst.class_path;
   std::map<std::string, std::vector<std::string>> neighbours;
   for (const auto& [a, b] : connects_) {
     const std::string ia = InstanceOf(a), ib = InstanceOf(b);
-    if (ia == ib) continue;
+    if (ia == ib || !class_of.count(ia) || !class_of.count(ib)) continue;
     neighbours[ia].push_back(ib);
     neighbours[ib].push_back(ia);
   }
+  std::vector<std::string> starts;
+  for (const auto& inst : instances_)
+    if (IsSignalSource(inst.class_path)) starts.push_back(inst.name);
+  for (const auto& inst : instances_)
+    if (!IsGround(inst.class_path)) starts.push_back(inst.name);
   std::map<std::string, Position> position;
+  std::map<int, int> rows;  // column -> rows used in the current group
   int group_top = 0;
-  for (const auto& start : instances_) {
-    if (position.count(start.name)) continue;
-    std::map<std::string, int> layer{{start.name, 0}};
-    std::deque<std::string> queue{start.name};
-    std::vector<std::string> order;
+  for (const auto& start : starts) {
+    if (position.count(start)) continue;
+    rows.clear();
+    std::map<std::string, int> layer{{start, 0}};
+    std::deque<std::string> queue{start};
+    int group_rows = 1;
     while (!queue.empty()) {
       const std::string current = queue.front();
       queue.pop_front();
-      order.push_back(current);
+      const int l = layer[current];
+      const int row = rows[l]++;
+      group_rows = std::max(group_rows, row + 1);
+      position[current] = {l * kSpacingX, group_top - row * kSpacingY};
       for (const auto& next : neighbours[current]) {
-        if (layer.count(next) || position.count(next) || !HasInstance(next)) continue;
-        layer[next] = layer[current] + 1;
+        if (layer.count(next) || position.count(next) || IsGround(class_of[next])) continue;
+        layer[next] = l + 1;
         queue.push_back(next);
       }
     }
-    std::map<int, int> rows;  // layer -> rows used
-    int group_rows = 1;
-    for (const auto& name : order) {
-      const int l = layer[name];
-      const int row = rows[l]++;
-      group_rows = std::max(group_rows, row + 1);
-      position[name] = {l * kSpacingX, group_top - row * kSpacingY};
-    }
     group_top -= group_rows * kSpacingY;
+  }
+  // Grounds: below their first placed neighbour, else after everything.
+  int lowest = group_top;
+  for (const auto& [name, p] : position) lowest = std::min(lowest, p.y);
+  for (const auto& inst : instances_) {
+    if (position.count(inst.name)) continue;
+    Position p{0, lowest - kSpacingY};
+    for (const auto& n : neighbours[inst.name]) {
+      if (auto it = position.find(n); it != position.end()) {
+        p = {it->second.x, lowest - kSpacingY};
+        break;
+      }
+    }
+    position[inst.name] = p;
+    lowest = p.y;
   }
   return position;
 }
@@ -151,6 +197,10 @@ std::string ModelWriter::Render() const {
     out << "\n    annotation (Placement(transformation(extent={" << Point(p.x - kHalf, p.y - kHalf) << ","
         << Point(p.x + kHalf, p.y + kHalf) << "})));\n";
   }
+  if (!initial_equations_.empty()) {
+    out << "\ninitial equation\n";
+    for (const auto& e : initial_equations_) out << "  " << e << "\n";
+  }
   out << "\nequation\n";
   std::map<std::string, std::string> class_of;
   for (const auto& inst : instances_) class_of[inst.name] = inst.class_path;
@@ -184,7 +234,7 @@ std::string ModelWriter::Render() const {
       << Point(xmin - 2 * kHalf, ymin - 2 * kHalf) << "," << Point(xmax + 2 * kHalf, ymax + 2 * kHalf)
       << "}))";
   if (!documentation_.empty())
-    out << ",\n    Documentation(info=\"" << EscapeModelicaString(documentation_) << "\")";
+    out << ",\n    Documentation(info=\"" << EscapeKeepingNewlines(documentation_) << "\")";
   out << ");\nend " << name_ << ";\n";
   return out.str();
 }

@@ -42,6 +42,8 @@ class ModelWriter {
   void AddParameter(std::string type, std::string name, std::string value, std::string comment);
   /// An equation written into the equation section after the connects.
   void AddEquation(std::string equation);
+  /// An equation of the initial equation section, e.g. "der(spring.phi_rel) = 0;".
+  void AddInitialEquation(std::string equation);
   void SetExperiment(Experiment experiment) { experiment_ = experiment; }
   void SetDescription(std::string description) { description_ = std::move(description); }
   /// HTML body of the Documentation(info=...) annotation (escaped on output).
@@ -68,6 +70,7 @@ class ModelWriter {
   std::vector<std::pair<std::string, std::string>> connects_;
   std::vector<std::string> parameters_;
   std::vector<std::string> equations_;
+  std::vector<std::string> initial_equations_;
   std::optional<Experiment> experiment_;
 };
 

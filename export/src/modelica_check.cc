@@ -330,6 +330,8 @@ class Collector {
     ++pos_;
     info.path = scope.empty() ? name : scope + "." + name;
     if (scope == within_) top_level.push_back(name);
+    // The description string of the class (possibly concatenated with +).
+    while (pos_ < t_.size() && (t_[pos_].kind == TokenKind::kString || Is(t_[pos_], "+"))) ++pos_;
     if (pos_ < t_.size() && Is(t_[pos_], "=")) {  // short class definition
       std::size_t p = pos_ + 1;
       while (p < t_.size() && t_[p].kind == TokenKind::kIdent &&

@@ -189,6 +189,7 @@ const Entry kEntries[] = {
     {"Modelica.Math.Vectors.interpolate", "function", "", ""},
     {"Modelica.Math.exp", "function", "", ""},
     {"Modelica.Math.tanh", "function", "", ""},
+    {"Modelica", "package", "version", ""},
     {"Modelica.Units.SI", "package", "", ""},
     {"Modelica.Utilities.Files.loadResource", "function", "", ""},
     {"Modelica.Units.NonSI.AngularVelocity_rpm", "type", "", ""},

@@ -10,7 +10,8 @@ namespace highlift::icsp {
 std::string ToString(const Interval& x, int significant) {
   if (IsEmpty(x)) return "[empty]";
   char buf[96];
-  std::snprintf(buf, sizeof buf, "[%.*g, %.*g]", significant, x.lower(), significant, x.upper());
+  // + 0.0 turns -0 into 0 for display.
+  std::snprintf(buf, sizeof buf, "[%.*g, %.*g]", significant, x.lower() + 0.0, significant, x.upper() + 0.0);
   return buf;
 }
 
@@ -84,18 +85,20 @@ std::vector<std::string> Network::VariableNames() const {
 }
 
 std::size_t Network::KeyHash::operator()(const ExprNode& n) const {
-  auto mix = [](std::uint64_t h, std::uint64_t v) {
-    h ^= v + 0x9E3779B97F4A7C15ull + (h << 6) + (h >> 2);
-    return h;
+  // splitmix64 finalizer per field: cheap and well mixed (identifiers are small consecutive
+  // integers, which a plain combine would cluster).
+  auto fmix = [](std::uint64_t z) {
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return z ^ (z >> 31);
   };
-  std::uint64_t h = static_cast<std::uint64_t>(n.op);
-  h = mix(h, static_cast<std::uint32_t>(n.a));
-  h = mix(h, static_cast<std::uint32_t>(n.b));
-  h = mix(h, static_cast<std::uint32_t>(n.n));
-  h = mix(h, std::bit_cast<std::uint64_t>(n.p));
+  std::uint64_t h = fmix(static_cast<std::uint64_t>(n.op) + 0x9E3779B97F4A7C15ull);
+  h = fmix(h ^ (static_cast<std::uint64_t>(static_cast<std::uint32_t>(n.a)) |
+                (static_cast<std::uint64_t>(static_cast<std::uint32_t>(n.b)) << 32)));
+  h = fmix(h ^ static_cast<std::uint32_t>(n.n) ^ std::bit_cast<std::uint64_t>(n.p));
   if (n.op == Op::kConst) {
-    h = mix(h, std::bit_cast<std::uint64_t>(n.value.lower()));
-    h = mix(h, std::bit_cast<std::uint64_t>(n.value.upper()));
+    h = fmix(h ^ std::bit_cast<std::uint64_t>(n.value.lower()));
+    h = fmix(h ^ std::bit_cast<std::uint64_t>(n.value.upper()));
   }
   return static_cast<std::size_t>(h);
 }
@@ -111,9 +114,39 @@ bool Network::KeyEqual::operator()(const ExprNode& x, const ExprNode& y) const {
 }
 
 ExprId Network::Intern(const ExprNode& node) {
-  auto [it, inserted] = interned_.try_emplace(node, static_cast<int>(nodes_.size()));
-  if (inserted) nodes_.push_back(node);
-  return ExprId{it->second};
+  if ((nodes_.size() + 1) * 2 > interned_.size()) {
+    // Grow and re-insert: linear probing over a power-of-two table at most half full.
+    std::vector<int> table(std::max<std::size_t>(1024, interned_.size() * 2), -1);
+    const std::size_t mask = table.size() - 1;
+    for (std::size_t id = 0; id < nodes_.size(); ++id) {
+      std::size_t i = KeyHash{}(nodes_[id]) & mask;
+      while (table[i] >= 0) i = (i + 1) & mask;
+      table[i] = static_cast<int>(id);
+    }
+    interned_.swap(table);
+  }
+  const std::size_t mask = interned_.size() - 1;
+  std::size_t i = KeyHash{}(node) & mask;
+  while (true) {
+    const int id = interned_[i];
+    if (id < 0) {
+      interned_[i] = static_cast<int>(nodes_.size());
+      nodes_.push_back(node);
+      return ExprId{interned_[i]};
+    }
+    if (KeyEqual{}(nodes_[id], node)) return ExprId{id};
+    i = (i + 1) & mask;
+  }
+}
+
+void Network::Reserve(int variables, int nodes, int constraints) {
+  variables_.reserve(variables);
+  variable_index_.reserve(variables);
+  adjacency_.reserve(variables);
+  nodes_.reserve(nodes);
+  constraints_.reserve(constraints);
+  topo_.reserve(nodes);
+  scope_.reserve(static_cast<std::size_t>(constraints) * 3);
 }
 
 ExprId Network::Var(VariableId v) {

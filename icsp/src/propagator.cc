@@ -6,9 +6,11 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <unordered_map>
 
 #include "highlift/core/error.h"
 #include "highlift/core/text_table.h"
+#include "highlift/core/units.h"
 
 namespace highlift::icsp {
 
@@ -226,10 +228,13 @@ double Up(const MonotoneFunction& m, double y) {
 
 class Engine {
  public:
+  using Step = Propagator::Step;
   Engine(const Network& net, const PropagationOptions& opt, std::vector<BoundReason>& lo_reason,
-         std::vector<BoundReason>& hi_reason)
-      : net_(net), opt_(opt), lo_reason_(lo_reason), hi_reason_(hi_reason) {
-    val_.resize(net.num_nodes());
+         std::vector<BoundReason>& hi_reason, const std::vector<Step>& tape, const std::vector<int>& tape_begin,
+         const std::vector<Interval>& constants, int max_steps)
+      : net_(net), opt_(opt), lo_reason_(lo_reason), hi_reason_(hi_reason), tape_(tape),
+        tape_begin_(tape_begin), constants_(constants) {
+    val_.resize(static_cast<std::size_t>(max_steps) + 1);
   }
 
   PropagationReport Run(Box& box, const std::vector<char>& enabled) {
@@ -254,8 +259,10 @@ class Engine {
     for (int c = 0; c < nc; ++c) {
       if (!enabled_ || (*enabled_)[c]) agenda.Push(c);
     }
-    RoundingGuard guard;  // upward rounding for the whole loop (FastInterval arithmetic)
     box_ = &box;
+    bool out_of_time = false;
+    {
+    RoundingGuard guard;  // upward rounding for the whole loop (FastInterval arithmetic)
     while (!agenda.empty()) {
       if (report.revisions >= opt_.max_revisions) {
         report.status = Status::kStoppedAtLimit;
@@ -265,7 +272,7 @@ class Engine {
       if ((report.revisions & 1023) == 1023 &&
           std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() > opt_.max_seconds) {
         report.status = Status::kStoppedAtLimit;
-        report.message = "reached max_seconds = " + FormatNumber(opt_.max_seconds, 3) + " s";
+        out_of_time = true;
         break;
       }
       const int c = agenda.Pop();
@@ -293,6 +300,8 @@ class Engine {
         }
       }
     }
+    }  // rounding mode restored: formatting below runs in round-to-nearest
+    if (out_of_time) report.message = "reached max_seconds = " + FormatNumber(opt_.max_seconds, 3) + " s";
     report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (report.status == Status::kFixedPoint) {
       report.message = opt_.ratio > 0.0 ? "no domain shrinks by more than the ratio " + FormatNumber(opt_.ratio, 3)
@@ -339,86 +348,87 @@ class Engine {
     empty_variable_ = -1;
     const Constraint& k = net_.constraint(ConstraintId{c});
     if (k.kind == Constraint::Kind::kMonotone) return ReviseMonotone(c, k, time);
-    const auto topo = net_.TopoOf(ConstraintId{c});
+    const Step* steps = tape_.data() + tape_begin_[c];
+    const int count = tape_begin_[c + 1] - tape_begin_[c];
     const Box& box = *box_;
+    FI* val = val_.data();
     // Forward: evaluate every node once (operands first).
-    for (int id : topo) {
-      const ExprNode& n = net_.node(ExprId{id});
-      FI& y = val_[id];
+    for (int k = 0; k < count; ++k) {
+      const Step& n = steps[k];
+      FI& y = val[k];
       switch (n.op) {
         case Op::kVar: y = ToFast(box[n.a]); break;
-        case Op::kConst: y = ToFast(n.value); break;
-        case Op::kAdd: y = val_[n.a] + val_[n.b]; break;
-        case Op::kSub: y = val_[n.a] - val_[n.b]; break;
-        case Op::kMul: y = val_[n.a] * val_[n.b]; break;
-        case Op::kDiv: y = icsp::Div(val_[n.a], val_[n.b]); break;
-        case Op::kNeg: y = -val_[n.a]; break;
-        case Op::kSqr: y = icsp::Sqr(val_[n.a]); break;
-        case Op::kPowInt: y = icsp::PowInt(val_[n.a], n.n); break;
-        case Op::kPowReal: y = icsp::PowReal(val_[n.a], n.p); break;
-        case Op::kSqrt: y = icsp::Sqrt(val_[n.a]); break;
-        case Op::kExp: y = icsp::Exp(val_[n.a]); break;
-        case Op::kLog: y = icsp::Log(val_[n.a]); break;
-        case Op::kAbs: y = icsp::Abs(val_[n.a]); break;
-        case Op::kMin: y = icsp::Min(val_[n.a], val_[n.b]); break;
-        case Op::kMax: y = icsp::Max(val_[n.a], val_[n.b]); break;
-        case Op::kSin: y = icsp::Sin(val_[n.a]); break;
-        case Op::kCos: y = icsp::Cos(val_[n.a]); break;
+        case Op::kConst: y = ToFast(constants_[n.aux]); break;
+        case Op::kAdd: y = val[n.a] + val[n.b]; break;
+        case Op::kSub: y = val[n.a] - val[n.b]; break;
+        case Op::kMul: y = val[n.a] * val[n.b]; break;
+        case Op::kDiv: y = icsp::Div(val[n.a], val[n.b]); break;
+        case Op::kNeg: y = -val[n.a]; break;
+        case Op::kSqr: y = icsp::Sqr(val[n.a]); break;
+        case Op::kPowInt: y = icsp::PowInt(val[n.a], n.aux); break;
+        case Op::kPowReal: y = icsp::PowReal(val[n.a], constants_[n.aux].lower()); break;
+        case Op::kSqrt: y = icsp::Sqrt(val[n.a]); break;
+        case Op::kExp: y = icsp::Exp(val[n.a]); break;
+        case Op::kLog: y = icsp::Log(val[n.a]); break;
+        case Op::kAbs: y = icsp::Abs(val[n.a]); break;
+        case Op::kMin: y = icsp::Min(val[n.a], val[n.b]); break;
+        case Op::kMax: y = icsp::Max(val[n.a], val[n.b]); break;
+        case Op::kSin: y = icsp::Sin(val[n.a]); break;
+        case Op::kCos: y = icsp::Cos(val[n.a]); break;
       }
       if (IsEmpty(y)) return false;
     }
-    // The relation.
-    FI& root = val_[k.root];
+    // The relation (the root is the last step).
+    FI& root = val[count - 1];
     root = Meet(root, RelationRange(k.relation));
     if (IsEmpty(root)) return false;
     // Backward: project each node's narrowed value onto its operands (parents before children).
-    for (auto it = topo.rbegin(); it != topo.rend(); ++it) {
-      const int id = *it;
-      const ExprNode& n = net_.node(ExprId{id});
-      const FI& y = val_[id];
+    for (int k2 = count - 1; k2 >= 0; --k2) {
+      const Step& n = steps[k2];
+      const FI& y = val[k2];
       switch (n.op) {
         case Op::kVar:
         case Op::kConst: continue;
         case Op::kAdd: {
-          FI& a = val_[n.a];
-          a = AddBackward(y, a, val_[n.b]);
+          FI& a = val[n.a];
+          a = AddBackward(y, a, val[n.b]);
           if (IsEmpty(a)) return false;
-          FI& b = val_[n.b];
-          b = AddBackward(y, b, val_[n.a]);
+          FI& b = val[n.b];
+          b = AddBackward(y, b, val[n.a]);
           if (IsEmpty(b)) return false;
           continue;
         }
         case Op::kSub: {
-          FI& a = val_[n.a];
-          a = SubBackwardLeft(y, a, val_[n.b]);
+          FI& a = val[n.a];
+          a = SubBackwardLeft(y, a, val[n.b]);
           if (IsEmpty(a)) return false;
-          FI& b = val_[n.b];
-          b = SubBackwardRight(y, val_[n.a], b);
+          FI& b = val[n.b];
+          b = SubBackwardRight(y, val[n.a], b);
           if (IsEmpty(b)) return false;
           continue;
         }
         case Op::kMul: {
-          FI& a = val_[n.a];
-          a = MulBackward(y, a, val_[n.b]);
+          FI& a = val[n.a];
+          a = MulBackward(y, a, val[n.b]);
           if (IsEmpty(a)) return false;
-          FI& b = val_[n.b];
-          b = MulBackward(y, b, val_[n.a]);
+          FI& b = val[n.b];
+          b = MulBackward(y, b, val[n.a]);
           if (IsEmpty(b)) return false;
           continue;
         }
         case Op::kDiv: {
-          FI& a = val_[n.a];
-          a = DivBackwardLeft(y, a, val_[n.b]);
+          FI& a = val[n.a];
+          a = DivBackwardLeft(y, a, val[n.b]);
           if (IsEmpty(a)) return false;
-          FI& b = val_[n.b];
-          b = DivBackwardRight(y, val_[n.a], b);
+          FI& b = val[n.b];
+          b = DivBackwardRight(y, val[n.a], b);
           if (IsEmpty(b)) return false;
           continue;
         }
         case Op::kMin:
         case Op::kMax: {
-          FI& a = val_[n.a];
-          FI& b = val_[n.b];
+          FI& a = val[n.a];
+          FI& b = val[n.b];
           const FI a0 = a;
           a = n.op == Op::kMin ? MinBackward(y, a, b) : MaxBackward(y, a, b);
           if (IsEmpty(a)) return false;
@@ -428,12 +438,12 @@ class Engine {
         }
         default: break;
       }
-      FI& a = val_[n.a];
+      FI& a = val[n.a];
       switch (n.op) {
         case Op::kNeg: a = NegBackward(y, a); break;
         case Op::kSqr: a = SqrBackward(y, a); break;
-        case Op::kPowInt: a = PowIntBackward(y, a, n.n); break;
-        case Op::kPowReal: a = PowRealBackward(y, a, n.p); break;
+        case Op::kPowInt: a = PowIntBackward(y, a, n.aux); break;
+        case Op::kPowReal: a = PowRealBackward(y, a, constants_[n.aux].lower()); break;
         case Op::kSqrt: a = SqrtBackward(y, a); break;
         case Op::kExp: a = ExpBackward(y, a); break;
         case Op::kLog: a = LogBackward(y, a); break;
@@ -445,10 +455,9 @@ class Engine {
       if (IsEmpty(a)) return false;
     }
     // Write back the variables.
-    for (int id : topo) {
-      const ExprNode& n = net_.node(ExprId{id});
-      if (n.op != Op::kVar) continue;
-      if (!Update(n.a, val_[id], c, time)) return false;
+    for (int k3 = 0; k3 < count; ++k3) {
+      if (steps[k3].op != Op::kVar) continue;
+      if (!Update(steps[k3].a, val[k3], c, time)) return false;
     }
     return true;
   }
@@ -522,6 +531,9 @@ class Engine {
   const PropagationOptions& opt_;
   std::vector<BoundReason>& lo_reason_;
   std::vector<BoundReason>& hi_reason_;
+  const std::vector<Step>& tape_;
+  const std::vector<int>& tape_begin_;
+  const std::vector<Interval>& constants_;
   std::vector<FI> val_;
   std::vector<std::pair<int, bool>> changed_;
   Box* box_ = nullptr;
@@ -534,6 +546,53 @@ class Engine {
 Propagator::Propagator(const Network& network, PropagationOptions options)
     : network_(network), options_(options) {
   options_.Validate();
+  Compile();
+}
+
+void Propagator::Compile() {
+  // Each expression constraint becomes a contiguous tape of steps over its DAG nodes, so that a
+  // revision reads one short array and a small scratch buffer instead of the whole node table.
+  const int nc = network_.num_constraints();
+  tape_.clear();
+  tape_begin_.assign(static_cast<std::size_t>(nc) + 1, 0);
+  std::vector<int> local(static_cast<std::size_t>(network_.num_nodes()), -1);
+  for (int c = 0; c < nc; ++c) {
+    tape_begin_[c] = static_cast<int>(tape_.size());
+    const Constraint& k = network_.constraint(ConstraintId{c});
+    if (k.kind != Constraint::Kind::kExpression) continue;
+    const auto topo = network_.TopoOf(ConstraintId{c});
+    for (std::size_t i = 0; i < topo.size(); ++i) {
+      const ExprNode& n = network_.node(ExprId{topo[i]});
+      Step s;
+      s.op = n.op;
+      switch (n.op) {
+        case Op::kVar: s.a = n.a; break;
+        case Op::kConst:
+          s.aux = static_cast<int>(constants_.size());
+          constants_.push_back(n.value);
+          break;
+        case Op::kPowInt:
+          s.a = local[n.a];
+          s.aux = n.n;
+          break;
+        case Op::kPowReal:
+          s.a = local[n.a];
+          s.aux = static_cast<int>(constants_.size());
+          constants_.push_back(Interval(n.p, n.p, true));
+          break;
+        default:
+          s.a = local[n.a];
+          s.b = n.b >= 0 ? local[n.b] : -1;
+          break;
+      }
+      local[topo[i]] = static_cast<int>(i);
+      tape_.push_back(s);
+    }
+    HIGHLIFT_CHECK(!topo.empty() && topo.back() == k.root, "icsp: the root must end the evaluation order");
+    for (int id : topo) local[id] = -1;
+    max_steps_ = std::max(max_steps_, static_cast<int>(topo.size()));
+  }
+  tape_begin_[nc] = static_cast<int>(tape_.size());
 }
 
 void Propagator::set_options(const PropagationOptions& o) {
@@ -546,7 +605,7 @@ PropagationReport Propagator::Propagate(Box& box, const std::vector<char>& enabl
                  "icsp: box size differs from the number of variables");
   HIGHLIFT_CHECK(enabled.empty() || static_cast<int>(enabled.size()) == network_.num_constraints(),
                  "icsp: enabled mask size differs from the number of constraints");
-  Engine engine(network_, options_, lower_reason_, upper_reason_);
+  Engine engine(network_, options_, lower_reason_, upper_reason_, tape_, tape_begin_, constants_, max_steps_);
   return engine.Run(box, enabled);
 }
 
@@ -567,9 +626,16 @@ std::string Describe(const Network& net, int c) {
   s += ": " + net.ConstraintText(ConstraintId{c});
   return s;
 }
+/// A bound in the variable's display unit, e.g. "263.8 rpm" (SI when the unit is not known).
 std::string Value(const Network& net, int v, double x) {
   const auto& var = net.variable(VariableId{v});
-  return FormatNumber(x, 6) + (var.unit.empty() ? "" : " (SI)");
+  if (var.unit.empty() || var.unit == "1") return FormatNumber(x, 6);
+  try {
+    const UnitConversion u = ParseUnit(var.unit);
+    return FormatNumber((x - u.offset) / u.scale, 6) + " " + var.unit;
+  } catch (const InputError&) {
+    return FormatNumber(x, 6) + " (SI)";
+  }
 }
 }  // namespace
 
@@ -643,7 +709,8 @@ Explanation Explain(const Network& net, const Box& initial, PropagationOptions o
     t += ex.conflict.size() == 1 ? "This requirement cannot be met:\n"
                                  : "These requirements cannot be met together:\n";
     for (int c : ex.conflict) t += "  - " + Describe(net, c) + "\n";
-    t += "Dropping any one of them removes this conflict.\n";
+    t += ex.conflict.size() == 1 ? "Dropping it removes this conflict.\n"
+                                 : "Dropping any one of them removes this conflict.\n";
   }
   t += "How the conflict arises:\n";
   int k = 1;

@@ -149,6 +149,8 @@ std::string ToNetText(const ReferenceNetwork& net) {
 
 Network BuildNetwork(const ReferenceNetwork& ref) {
   Network net;
+  net.Reserve(static_cast<int>(ref.variables.size()), static_cast<int>(ref.variables.size() + 7 * ref.constraints.size()),
+              static_cast<int>(ref.constraints.size()));
   std::vector<ExprId> var;
   var.reserve(ref.variables.size());
   for (const auto& v : ref.variables) var.push_back(net.Var(net.AddVariable(v.name, Interval(v.lo, v.hi))));

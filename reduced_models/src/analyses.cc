@@ -183,8 +183,32 @@ struct ModeData {
   detail::Flow<Interval> drag;   ///< friction only
 };
 
+/// Parameters that only change the monitor and brake timing, or only inertias and stiffnesses:
+/// a single-parameter evaluation reuses the nominal values of what they cannot change.
+bool TimingOnly(const std::string& name) {
+  return name == "engagement_latency" || name == "time_to_max_torque" || name == "latency" ||
+         name == "asymmetry_threshold" || name == "overspeed_factor" || name == "max_output_speed";
+}
+bool InertiaOrStiffnessOnly(const std::string& name) {
+  return name == "inertia" || name == "input_inertia" || name == "load_inertia" || name == "motor_inertia" ||
+         name == "gear_inertia" || name == "stiffness" || name == "stiffness_normal" || name == "shear_modulus" ||
+         name == "density" || name == "linear_density";
+}
+
+bool FrictionOnly(const std::string& name) {
+  return name == "coulomb_torque" || name == "viscous_coefficient" || name == "stribeck_torque" ||
+         name == "stribeck_decay" || name == "drag_per_length";
+}
+
 ModeData Evaluate(const detail::Graph& g, const detail::ParameterMode& mode, const std::map<std::string, double>& aiding,
-                  double w) {
+                  double w, const ModeData* nominal = nullptr) {
+  if (nominal && (TimingOnly(mode.parameter) || FrictionOnly(mode.parameter))) {
+    ModeData d = *nominal;
+    d.mode = mode;
+    // Friction changes only the drag flow (the back-drive flow is computed without friction).
+    if (FrictionOnly(mode.parameter)) d.drag = detail::SolveFlow<Interval>(g, mode, {}, w, true);
+    return d;
+  }
   ModeData d;
   d.mode = mode;
   const auto n = detail::SpeedRatios<Interval>(g, mode);
@@ -202,6 +226,11 @@ ModeData Evaluate(const detail::Graph& g, const detail::ParameterMode& mode, con
     }
     d.J[i] = detail::ComponentInertia<Interval>(c, mode) * n2;
     if (const auto stiffness = detail::ComponentStiffness<Interval>(c, mode)) d.link_c[i] = *stiffness * n2;
+  }
+  if (nominal && InertiaOrStiffnessOnly(mode.parameter)) {
+    d.back = nominal->back;
+    d.drag = nominal->drag;
+    return d;
   }
   d.back = detail::SolveFlow<Interval>(g, mode, aiding, w, false);
   d.drag = detail::SolveFlow<Interval>(g, mode, {}, w, true);
@@ -308,7 +337,7 @@ PeakReport AnalysePeaks(const Project& project, const PeakOptions& options) {
     at_all = Evaluate(g, all, aiding, w_operating);
     if (options.rank)
       for (const auto& [component, parameter] : detail::UncertainParameters(g))
-        singles.push_back(Evaluate(g, {detail::ParameterMode::kOne, component, parameter}, aiding, w_operating));
+        singles.push_back(Evaluate(g, {detail::ParameterMode::kOne, component, parameter}, aiding, w_operating, &at_nominal));
   }
 
   auto scenario_name = [&](const std::string& kind, const std::string& component) {

@@ -24,16 +24,13 @@ bool IsNearPort(const std::string& type, const std::string& port) {
 
 }  // namespace
 
-std::optional<Parameter> FindParameter(const Component& c, std::string_view name) {
+std::optional<ParameterView> FindParameter(const Component& c, std::string_view name) {
   auto it = c.parameters.find(std::string(name));
-  if (it != c.parameters.end()) return it->second;
+  if (it != c.parameters.end()) return ParameterView{it->second.nominal, it->second.domain, it->second.provenance};
   const ComponentTypeSpec* type = FindComponentType(c.type);
   const ParameterSpec* spec = type ? type->FindParameter(name) : nullptr;
   if (!spec) return std::nullopt;
-  Parameter p;
-  p.nominal = spec->nominal;
-  p.domain = spec->default_domain;
-  return p;
+  return ParameterView{spec->nominal, spec->default_domain, Provenance::kDefault};
 }
 
 bool HasValue(const Component& c, std::string_view name) {
@@ -119,7 +116,8 @@ std::vector<std::pair<std::string, std::string>> UncertainParameters(const Graph
     for (const ParameterSpec& spec : type->parameters) {
       if (!used.count(spec.name) || spec.kind != ParameterKind::kScalar) continue;
       const auto p = FindParameter(*node.component, spec.name);
-      if (p && p->domain.bounded() && !p->domain.empty() && !p->domain.is_point())
+      if (p && (p->nominal || p->provenance != Provenance::kDefault) && p->domain.bounded() && !p->domain.empty() &&
+          !p->domain.is_point())
         out.push_back({node.component->id, spec.name});
     }
   }

@@ -63,7 +63,13 @@ struct ParameterMode {
 
 /// The value of a parameter: the component's own Parameter, else the catalogue default.
 /// Throws InputError naming the component and parameter when no value is known.
-std::optional<Parameter> FindParameter(const Component& c, std::string_view name);
+/// What the laws read of a parameter (no strings: this is on the hot path of every evaluation).
+struct ParameterView {
+  std::optional<double> nominal;
+  Domain domain;
+  Provenance provenance = Provenance::kDefault;
+};
+std::optional<ParameterView> FindParameter(const Component& c, std::string_view name);
 double NominalValue(const Component& c, std::string_view name);
 bool HasValue(const Component& c, std::string_view name);
 

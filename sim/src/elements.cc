@@ -211,9 +211,6 @@ class ElastoBacklash : public Compliant {
     g[0] = delta - b_total / 2;
     g[1] = delta + b_total / 2;
   }
-  std::string ModeText() const override {
-    return "";
-  }
   double c, d, b_total, phi_rel0;
 };
 
@@ -414,7 +411,7 @@ class Friction : public Element {
       const double w_eps = 1e-9 * (1.0 + std::abs(e.w[p]) + std::abs(e.w[m]));
       const double a = AF(e);
       const double a_eps = 1e-9 * (1.0 + std::abs(e.acc[p]) + std::abs(e.acc[m]));
-      if (std::abs(w) <= w_eps && a * mode < -a_eps) return std::abs(a) / (a_eps * 1e9);
+      if (std::abs(w) <= w_eps && a * mode < -a_eps) return 1.0;
     }
     return 0.0;
   }
@@ -598,7 +595,6 @@ class LossyGear : public Element {
                          "in (0, 1]; fix columns 2 and 3");
       if (r[1] != 1 || r[2] != 1 || r[3] != 0 || r[4] != 0) ideal = false;
     }
-    mode = ideal ? kFree : kFree;
   }
   std::vector<std::string> Flanges() const override { return {"flange_a", "flange_b", "support"}; }
   void Bind(const std::function<int(const std::string&)>& node_of,

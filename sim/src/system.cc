@@ -69,8 +69,14 @@ Eigen::VectorXd MinimumNorm(const std::vector<Element::InitialEquation>& rows,
   EEt += I * (1e-13 * std::max(scale, 1.0));
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(EEt);
   if (ldlt.info() != Eigen::Success) return x;
-  Eigen::VectorXd mu = ldlt.solve(d);
-  x = E.transpose() * mu;
+  // Iterative refinement removes the bias of the regularization (long chains of relative
+  // initial angles make E*E^T ill-conditioned).
+  x.setZero();
+  for (int pass = 0; pass < 5; ++pass) {
+    const Eigen::VectorXd r = d - E * x;
+    if (r.norm() <= 1e-14 * (1.0 + d.norm())) break;
+    x += E.transpose() * ldlt.solve(r);
+  }
   return x;
 }
 
@@ -231,9 +237,10 @@ System::System(const Network& network) {
     std::vector<int> lo(nodes_.size(), std::numeric_limits<int>::max()), hi(nodes_.size(), -1);
     for (const auto& el : elements_) {
       int emin = std::numeric_limits<int>::max(), emax = -1;
+      // Node angles are pure integrators (phi' = w, read by no law): only the speeds count.
       for (int n : el->Nodes())
         if (!nodes_[n].ground) {
-          emin = std::min(emin, nodes_[n].s_phi);
+          emin = std::min(emin, nodes_[n].s_w);
           emax = std::max(emax, nodes_[n].s_w);
         }
       if (el->NumStates() > 0) {
@@ -251,6 +258,7 @@ System::System(const Network& network) {
     }
     for (std::size_t r = 0; r < nodes_.size(); ++r)
       if (hi[r] >= 0) bandwidth_ = std::max(bandwidth_, hi[r] - lo[r]);
+    bandwidth_ = std::max(bandwidth_, 1);  // phi' = w within each node's pair
   }
   // Workspace.
   eval_.phi.assign(nodes_.size(), 0.0);
@@ -269,25 +277,13 @@ std::vector<double> System::InitialState(double t0) {
   eval_.initial = true;
   EvaluateSignals();
   std::vector<Element::InitialEquation> position, speed, holonomic;
-  std::vector<int> position_owner, speed_owner;
+  std::vector<int> position_owner, speed_owner, holonomic_owner;
   for (const auto& el : elements_) {
-    const std::size_t p0 = position.size(), s0 = speed.size();
     el->InitialEquations(position, speed);
     el->HolonomicRows(holonomic);
     position_owner.resize(position.size(), el->index);
     speed_owner.resize(speed.size(), el->index);
-    (void)p0;
-    (void)s0;
-  }
-  std::vector<int> holonomic_owner;
-  {
-    std::vector<Element::InitialEquation> tmp;
-    for (const auto& el : elements_) {
-      const std::size_t before = tmp.size();
-      el->HolonomicRows(tmp);
-      holonomic_owner.resize(tmp.size(), el->index);
-      (void)before;
-    }
+    holonomic_owner.resize(holonomic.size(), el->index);
   }
   std::vector<int> unknown(nodes_.size(), -1);
   std::vector<double> known_phi(nodes_.size(), 0.0), known_w(nodes_.size(), 0.0);

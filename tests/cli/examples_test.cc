@@ -197,7 +197,6 @@ TEST(Examples, EveryGivenValueCarriesItsProvenanceTag) {
     for (const auto& c : p.components)
       for (const auto& [name, parameter] : c.parameters) {
         if (parameter.provenance != Provenance::kUser) continue;
-        if (name == "motor_count") continue;  // a plain count
         ++given;
         EXPECT_TRUE(std::regex_search(parameter.note, tag)) << c.id << "." << name << ": '" << parameter.note << "'";
       }

@@ -40,8 +40,8 @@ TEST(ComponentDatabaseInterruptedImport, KilledChildLeavesIntactDatabaseWithTheR
     before = db.CountRows();
     exported = db.Export();
   }  // no connection is open across fork()
-  const Records big = ManyParts(20000, "BULK-");
-  constexpr std::size_t kSignalAfter = 15000;
+  const Records big = ManyParts(6000, "BULK-");
+  constexpr std::size_t kSignalAfter = 4500;
   int pipe_fds[2];
   ASSERT_EQ(::pipe(pipe_fds), 0);
   const pid_t child = ::fork();

@@ -73,6 +73,22 @@ TEST(Catalogue, EveryDefaultLiesInsideItsValidRange) {
   }
 }
 
+TEST(Catalogue, ElementTypeDefaultsLieInsideTheirValidRanges) {
+  for (const auto& t : ElementTypes()) {
+    EXPECT_EQ(FindElementType(t.name), &t);
+    for (const auto& p : t.parameters) {
+      const std::string what = t.name + "." + p.name;
+      if (p.kind == ParameterKind::kText || p.kind == ParameterKind::kTable) continue;
+      EXPECT_LE(p.valid_range.lo, p.default_domain.lo) << what;
+      EXPECT_GE(p.valid_range.hi, p.default_domain.hi) << what;
+      if (p.nominal) {
+        EXPECT_TRUE(p.default_domain.contains(*p.nominal)) << what;
+      }
+      EXPECT_EQ(ParseUnit(p.unit.empty() ? "1" : p.unit).dimension, p.dimension) << what << " unit " << p.unit;
+    }
+  }
+}
+
 TEST(Catalogue, ParametersTheOtherModulesReadExist) {
   const std::map<std::string, std::vector<std::string>> needed = {
       {"torque_shaft", {"length", "outer_diameter", "wall_thickness", "shear_modulus", "density",

@@ -331,3 +331,23 @@ TEST(ProjectIo, DocumentedExampleIsValid) {
 
 }  // namespace
 }  // namespace highlift
+
+namespace highlift {
+namespace {
+
+// Every bundled example survives load -> save -> load unchanged.
+TEST(ProjectIo, ExamplesRoundTrip) {
+  const std::filesystem::path examples = std::filesystem::path(HIGHLIFT_SOURCE_DIR) / "examples";
+  int count = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(examples)) {
+    if (entry.path().extension() != ".json") continue;
+    const Project first = LoadProject(entry.path());
+    const Project second = ParseProject(ProjectToJson(first).dump(2), "saved");
+    EXPECT_EQ(DescribeDifference(first, second), "") << entry.path();
+    ++count;
+  }
+  if (count == 0) GTEST_SKIP() << "no examples in " << examples;
+}
+
+}  // namespace
+}  // namespace highlift

@@ -115,6 +115,16 @@ TEST(Validate, GearboxReachedThroughItsOutput) {
             "the PDU (ratio = input speed / output speed); swap the connections of its ports\n");
 }
 
+TEST(Validate, TorqueLimiterTheWrongWayRoundIsAWarning) {
+  std::string text = Edit("[\"pdu.left\", \"stl.input\"], [\"stl.output\", \"shaft_1.a\"]",
+                          "[\"pdu.left\", \"stl.output\"], [\"stl.input\", \"shaft_1.a\"]");
+  EXPECT_EQ(Issues(text),
+            "W [stl.output] component 'stl' (system_torque_limiter): reached from the PDU through its port 'output'; "
+            "its extend and retract lock-out torques refer to power flowing from 'input' to 'output', so swap the "
+            "connections of its ports\n");
+  EXPECT_TRUE(ValidateProject(ParseProject(text)).ok());
+}
+
 TEST(Validate, PduMissingOrTwice) {
   EXPECT_NE(Issues(Edit("{\"id\": \"wtb\", \"type\": \"wing_tip_brake\"}",
                         "{\"id\": \"wtb\", \"type\": \"wing_tip_brake\"}, {\"id\": \"pdu2\", \"type\": \"pdu\"}"))

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "common/run_cli.h"
+#include "highlift/componentdb/database.h"
 #include "highlift/core/project_io.h"
 
 namespace highlift {
@@ -40,10 +41,21 @@ std::filesystem::path Scratch(const std::string& name) {
   return dir / name;
 }
 
+// A database made from this build's seed (the default database in the data directory may have
+// been created by an older build and is never replaced behind the user's back).
+std::string FreshSeedDatabase() {
+  static const std::string path = [] {
+    const auto file = Scratch("seed.sqlite");
+    if (!std::filesystem::exists(file)) componentdb::CreateDatabaseFromSeed(file);
+    return file.string();
+  }();
+  return path;
+}
+
 TEST(EstimateCli, ReportsValuesWithProvenanceAsJson) {
   const auto file = Scratch("rig.json");
   std::ofstream(file) << kProject;
-  const auto r = RunCli({"estimate", file.string(), "--json"});
+  const auto r = RunCli({"estimate", file.string(), "--json", "--db", FreshSeedDatabase()});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto doc = nlohmann::json::parse(r.out);
   EXPECT_EQ(doc["status"], "ok");
@@ -63,7 +75,7 @@ TEST(EstimateCli, WrittenProjectLoadsAgainWithTheEstimates) {
   const auto file = Scratch("rig2.json");
   const auto out = Scratch("rig2_estimated.json");
   std::ofstream(file) << kProject;
-  const auto r = RunCli({"estimate", file.string(), "--write", out.string()});
+  const auto r = RunCli({"estimate", file.string(), "--write", out.string(), "--db", FreshSeedDatabase()});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("shaft_1"), std::string::npos);
   EXPECT_NE(r.out.find("estimated"), std::string::npos);
@@ -74,9 +86,10 @@ TEST(EstimateCli, WrittenProjectLoadsAgainWithTheEstimates) {
   EXPECT_NEAR(*c.nominal, 1914.0, 0.5);
   EXPECT_EQ(p.FindComponent("gra_1")->parameters.at("input_inertia").provenance, Provenance::kFit);
   // Estimating the written project again changes nothing.
-  const auto again = RunCli({"estimate", out.string(), "--json"});
+  const auto again = RunCli({"estimate", out.string(), "--json", "--db", FreshSeedDatabase()});
   ASSERT_EQ(again.exit_code, 0) << again.err;
-  for (const auto& q : nlohmann::json::parse(again.out)["parameters"])
+  const auto again_doc = nlohmann::json::parse(again.out);
+  for (const auto& q : again_doc["parameters"])
     EXPECT_FALSE(q["changed"].get<bool>()) << q.dump();
 }
 
@@ -86,7 +99,7 @@ TEST(EstimateCli, ConflictExitsOneAndNamesBothSources) {
   text.replace(text.find("\"shear_modulus\": \"44 GPa\""), std::string("\"shear_modulus\": \"44 GPa\"").size(),
                "\"shear_modulus\": \"44 GPa\", \"stiffness\": \"3000 N*m/rad\"");
   std::ofstream(file) << text;
-  const auto r = RunCli({"estimate", file.string()});
+  const auto r = RunCli({"estimate", file.string(), "--db", FreshSeedDatabase()});
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.err.find("conflict: component 'shaft_1' (torque_shaft): parameter 'stiffness': the user value 3000 N*m/rad"),
             std::string::npos)
@@ -94,6 +107,27 @@ TEST(EstimateCli, ConflictExitsOneAndNamesBothSources) {
   const auto bad = RunCli({"estimate", file.string(), "--db", Scratch("missing.sqlite").string()});
   EXPECT_EQ(bad.exit_code, 2);
   EXPECT_NE(bad.err.find("does not exist"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace highlift
+
+namespace highlift {
+namespace {
+
+// Regression: the shipped examples and the shipped seed database agree (both are domain.md
+// estimates); a change to either that makes them conflict shows up here.
+TEST(EstimateCli, ShippedExamplesEstimateWithoutConflicts) {
+  for (const char* example : {"examples/a380_class_flaps.json", "examples/a320_class_flaps.json",
+                              "examples/a320_class_slats.json"}) {
+    if (!std::filesystem::exists(std::filesystem::path(HIGHLIFT_SOURCE_DIR) / example)) continue;
+    const auto r = highlift::testing::RunCli({"estimate", example, "--json", "--db", FreshSeedDatabase()});
+    EXPECT_EQ(r.exit_code, 0) << example << "\n" << r.err.substr(0, 2000);
+    if (r.exit_code != 0) continue;
+    const auto doc = nlohmann::json::parse(r.out);
+    EXPECT_EQ(doc["status"], "ok") << example;
+    EXPECT_GT(doc["parameters"].size(), 100u) << example;
+  }
 }
 
 }  // namespace

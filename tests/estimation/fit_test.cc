@@ -83,7 +83,7 @@ TEST(FitParameter, SeedDatabaseGivesGraInertiaAroundTheSectionSixValue) {
   // domain.md s6: GRA input J about 1e-3 kg m^2 at 20 kN m.
   const Domain at20 = fit.PredictionInterval(Domain::Point(20e3));
   EXPECT_TRUE(at20.contains(1e-3)) << at20.lo << " " << at20.hi;
-  EXPECT_GT(fit.law.exponent, 1.0);
+  EXPECT_GT(fit.law.exponent, 0.2);  // rises with torque, slower than 5/3 above the floor
 }
 
 }  // namespace

@@ -35,7 +35,7 @@ TEST(ElementNetworkExport, FrictionMatchesGolden) {
   const auto report = ExportFile("friction.json");
   ExpectGolden("Friction.mo", FileOf(report, "Friction.mo").content);
   EXPECT_EQ(CheckIssues(report), "");
-  const std::string& text = FileOf(report, "Friction.mo").content;
+  const std::string text = testing::Flatten(FileOf(report, "Friction.mo").content);
   // Supports connected to the ground switch useSupport on; start values are fixed.
   EXPECT_NE(text.find("Modelica.Mechanics.Rotational.Components.Brake brake(fn_max=1600, useSupport=true)"),
             std::string::npos);
@@ -111,7 +111,7 @@ TEST(ElementNetworkExport, KeywordNamesAreRenamedAndDocumented) {
   EXPECT_EQ(report.model_name, "KeywordTestNet");
   EXPECT_EQ(report.renamed.at("end"), "end_");
   EXPECT_EQ(report.renamed.at("time"), "time_2");
-  const std::string& text = FileOf(report, "KeywordTestNet.mo").content;
+  const std::string text = testing::Flatten(FileOf(report, "KeywordTestNet.mo").content);
   EXPECT_NE(text.find("model KeywordTestNet \"keyword \\\"test\\\" <net>\""), std::string::npos) << text;
   EXPECT_NE(text.find("connect(time_2.flange_b, end_.flange_a)"), std::string::npos) << text;
   EXPECT_NE(text.find("keyword \\\"test\\\" &lt;net&gt;"), std::string::npos) << text;
@@ -141,6 +141,41 @@ TEST(ElementNetworkExport, EmptyProjectIsAnInputError) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("has neither components nor elements"), std::string::npos);
   }
+}
+
+}  // namespace
+}  // namespace highlift
+
+namespace highlift {
+namespace {
+
+// Every element type of the catalogue (core/src/element_types.cc) maps to a class of the MSL
+// list, and every parameter it declares becomes a modifier (or an initial equation) that the
+// MSL 4.0.0 class accepts: the element catalogue and the exporter's list stay in step.
+TEST(ElementNetworkExport, EveryElementTypeExportsToKnownClassesAndModifiers) {
+  Project project;
+  project.name = "all element types";
+  int n = 0;
+  for (const ComponentTypeSpec& type : ElementTypes()) {
+    Component c;
+    c.id = "e" + std::to_string(n++);
+    c.type = type.name;
+    for (const ParameterSpec& p : type.parameters) {
+      if (p.kind == ParameterKind::kTable) {
+        c.tables[p.name] = {{0, 1}};
+      } else if (p.kind != ParameterKind::kText) {
+        c.parameters[p.name] = Given(p.name == "useHeatPort" ? 1.0 : p.nominal.value_or(1.0));
+      }
+    }
+    project.elements.push_back(c);
+  }
+  ASSERT_GT(n, 20);
+  const auto report = GenerateModelica(project, ModelicaExportOptions{});
+  EXPECT_EQ(CheckIssues(report), "");
+  EXPECT_EQ(report.component_count, n + 1);  // plus the heat capacitor of the eddy current brake
+  const std::string text = FileOf(report, "AllElementTypes.mo").content;
+  EXPECT_NE(text.find("initial equation"), std::string::npos);  // Spring's w_rel_start
+  EXPECT_NE(text.find("Modelica.Thermal.HeatTransfer.Components.HeatCapacitor"), std::string::npos);
 }
 
 }  // namespace

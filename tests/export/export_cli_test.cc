@@ -22,13 +22,16 @@ std::filesystem::path TempDir(const std::string& name) {
 }
 
 TEST(ExportCli, WritesLibraryAndModel) {
-  const auto dir = TempDir("first");
-  const auto r = RunCli({"export", "tests/export/first.json", "--modelica", dir.string()});
+  const auto dir = TempDir("rig");
+  const auto r = RunCli({"export", "tests/export/small_drive.json", "--modelica", dir.string()});
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_NE(r.out.find("Modelica model 'First' (element network)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("Modelica model 'OneStationRig' (drive system, full, scenario 'rupture_wtb')"),
+            std::string::npos)
+      << r.out;
   EXPECT_TRUE(std::filesystem::exists(dir / "HighLift" / "package.mo"));
   EXPECT_TRUE(std::filesystem::exists(dir / "HighLift" / "Mechanical" / "TorqueLimiter.mo"));
-  EXPECT_EQ(ReadText(dir / "First.mo"), ReadText(testing::ExportTestDir() / "golden" / "First.mo"));
+  EXPECT_EQ(ReadText(dir / "OneStationRig.mo"),
+            ReadText(testing::ExportTestDir() / "golden" / "OneStationRig_full.mo"));
   std::filesystem::remove_all(dir);
 }
 

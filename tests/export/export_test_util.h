@@ -66,6 +66,16 @@ inline const GeneratedFile& FileOf(const ModelicaExportReport& report, const std
   throw std::runtime_error("no generated file " + path);
 }
 
+/// The model text with wrapped modifier lists joined onto one line, for searching.
+inline std::string Flatten(std::string text) {
+  for (const std::string& from : {std::string("(\n    "), std::string(",\n    ")}) {
+    const std::string to = from[0] == '(' ? "(" : ", ";
+    for (auto pos = text.find(from); pos != std::string::npos; pos = text.find(from, pos))
+      text.replace(pos, from.size(), to);
+  }
+  return text;
+}
+
 /// All issues of the structural check of every .mo file of the report, one per line.
 inline std::string CheckIssues(const ModelicaExportReport& report) {
   std::string text;

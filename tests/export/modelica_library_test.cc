@@ -52,8 +52,8 @@ TEST(HighLiftLibrary, HasThePapersComponents) {
 TEST(HighLiftLibrary, EveryClassIsDocumentedAndUsesSiTypes) {
   for (const auto& f : HighLiftLibraryFiles()) {
     if (f.path.find(".mo") == std::string::npos || f.path.find("package.mo") != std::string::npos) continue;
-    if (f.path.find("/Interfaces/Port.mo") == std::string::npos)
-      EXPECT_NE(f.content.find("Documentation(info="), std::string::npos) << f.path << " has no documentation";
+    if (f.path.find("/Interfaces/Port.mo") != std::string::npos) continue;
+    EXPECT_NE(f.content.find("Documentation(info="), std::string::npos) << f.path << " has no documentation";
   }
   // The paper's laws appear in the code, not only in the documentation.
   const auto text = [](const std::string& path) {

@@ -32,7 +32,7 @@ TEST(Network, ScopesAndAdjacency) {
   const VariableId y = net.AddVariable("y", Interval(0, 1));
   const VariableId z = net.AddVariable("z", Interval(0, 1));
   const ConstraintId c0 = AddConstraintText(net, "x + y == 1", {});
-  const ConstraintId c1 = AddConstraintText(net, "y * y <= z", {});
+  const ConstraintId c1 = AddConstraintText(net, "y^2 <= z", {});
   EXPECT_EQ(net.ScopeOf(c0).size(), 2u);
   EXPECT_EQ(net.ScopeOf(c1).size(), 2u);
   EXPECT_EQ(net.ConstraintsOf(y).size(), 2u);

@@ -86,6 +86,7 @@ T FlapInertiaAtInput(const T& m, const T& s, const T& phi_travel, const T& ratio
 struct GearScaling {
   /// Input inertia of a geared actuator or gearbox of input torque rating tau_in_ref [N*m].
   double inertia_reference = 1e-3;                 // kg*m^2, domain.md s6: GRA input J about 1e-3
+  double inertia_floor = 3e-4;  // kg*m^2: input shaft, bearings and no-back brake of even a small unit
   double input_torque_reference = 20e3 / 200 / 0.85;  // N*m: 20 kN*m, 200:1, eta 0.85 (s3)
   /// Mass of a gearbox or actuator of output torque rating tau_out_ref.
   double mass_reference = 20.0;                    // kg, estimate for a 20 kN*m GRA (1 kN*m/kg)
@@ -94,13 +95,16 @@ struct GearScaling {
 };
 
 /// Gearbox input inertia from its input torque rating: geometrically similar gears at equal
-/// stress have volume ~ tau, radius ~ tau^(1/3), so J ~ m r^2 ~ tau^(5/3):
-/// J_in = J_ref (tau_in / tau_in_ref)^(5/3) [kg*m^2]. tau_in [N*m]. Uses exp and log.
+/// stress have volume ~ tau, radius ~ tau^(1/3), so their J ~ m r^2 ~ tau^(5/3); the input
+/// shaft, bearings and brake add a floor J_0:
+/// J_in = J_0 + (J_ref - J_0) (tau_in / tau_in_ref)^(5/3) [kg*m^2]. tau_in [N*m]. Uses exp, log.
+/// With the defaults: 1e-3 kg*m^2 for a 20 kN*m, 200:1 GRA; 3.5e-4 for 6 kN*m, 300:1 (s4).
 template <class T>
 T GearboxInertiaFromTorque(const T& tau_in, const GearScaling& k = {}) {
   using std::exp;
   using std::log;
-  return T(k.inertia_reference) * exp(T(5.0 / 3.0) * log(tau_in / T(k.input_torque_reference)));
+  return T(k.inertia_floor) + T(k.inertia_reference - k.inertia_floor) *
+                                  exp(T(5.0 / 3.0) * log(tau_in / T(k.input_torque_reference)));
 }
 
 /// Gearbox or actuator mass from its output torque rating:

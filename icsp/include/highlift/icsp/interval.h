@@ -235,29 +235,44 @@ inline I SqrtBackward(const I& y, const I& a) {
   if (IsEmpty(yp)) return yp;
   return Meet(a, boost::numeric::square(yp));
 }
-// y = a^n  =>  a in the n-th root of y (both signs for even n; 1/y for negative n)
+/// n-th root (n >= 2) of the non-negative part of x, rounded outward; empty when x < 0.
+template <class I>
+inline I Root(const I& x, int n) {
+  const I xp = Meet(x, I(0.0, kInf, true));
+  if (IsEmpty(xp)) return xp;
+  const bool inf = !std::isfinite(xp.upper());
+  const I r = boost::numeric::nth_root(I(xp.lower(), inf ? std::max(xp.lower(), 1.0) : xp.upper(), true), n);
+  const double lo = r.lower() == 0.0 ? 0.0 : std::max(0.0, std::nextafter(r.lower(), 0.0));
+  return I(lo, inf ? kInf : std::nextafter(r.upper(), kInf), true);
+}
+// y = a^n  =>  a in the n-th root of y (both signs for even n; for negative n, a^-n in 1/y,
+// split in two half-lines when 0 is inside y)
 template <class I>
 inline I PowIntBackward(const I& y, const I& a, int n) {
   if (IsEmpty(y) || IsEmpty(a)) return I::empty();
-  if (n == 0) return ZeroIn(y) || (y.lower() <= 1.0 && 1.0 <= y.upper()) ? a : I::empty();
+  if (n == 0) return (y.lower() <= 1.0 && 1.0 <= y.upper()) ? a : I::empty();
   if (n == 1) return Meet(a, y);
   if (n == 2) return SqrBackward(y, a);
-  if (n < 0) {  // a^-m = y  =>  a^m in 1/y
-    const I inv = MeetQuotient(I::whole(), I(1.0, 1.0, true), y);
-    return PowIntBackward(inv, a, -n);
+  if (n < 0) {
+    const I one(1.0, 1.0, true);
+    if (!ZeroIn(y)) return PowIntBackward(one / y, a, -n);
+    I r = I::empty();
+    bool unused = false;
+    if (y.lower() < 0.0) r = Join(r, PowIntBackward(bi::division_part1(one, I(y.lower(), 0.0, true), unused), a, -n));
+    if (y.upper() > 0.0) r = Join(r, PowIntBackward(bi::division_part1(one, I(0.0, y.upper(), true), unused), a, -n));
+    return r;
   }
   if (n % 2 == 0) {
-    const I yp = Meet(y, I(0.0, kInf, true));
-    if (IsEmpty(yp)) return yp;
-    const I r = Meet(WidenUlp(boost::numeric::nth_root(yp, n)), I(0.0, kInf, true));
+    const I r = Root(y, n);
+    if (IsEmpty(r)) return r;
     return Join(Meet(a, r), Meet(a, -r));
   }
   // odd n: a = sign(y) * |y|^(1/n), monotone
-  const I pos = Meet(y, I(0.0, kInf, true));
-  const I neg = Meet(-y, I(0.0, kInf, true));
   I r = I::empty();
-  if (!IsEmpty(pos)) r = Join(r, WidenUlp(boost::numeric::nth_root(pos, n)));
-  if (!IsEmpty(neg)) r = Join(r, -WidenUlp(boost::numeric::nth_root(neg, n)));
+  const I pos = Root(y, n);
+  const I neg = Root(-y, n);
+  if (!IsEmpty(pos)) r = Join(r, pos);
+  if (!IsEmpty(neg)) r = Join(r, -neg);
   return Meet(a, r);
 }
 // y = a^p (real p, a >= 0)  =>  a in y^(1/p) over a >= 0

@@ -102,6 +102,8 @@ class Network {
   /// Adds a variable; names must be unique and non-empty. Throws InputError otherwise.
   VariableId AddVariable(std::string name, Interval initial, std::string unit = "",
                          std::string provenance = "");
+  /// Reserves memory for the given numbers of variables, expression nodes and constraints.
+  void Reserve(int variables, int nodes, int constraints);
   /// The variable named `name`, or an id with value -1.
   VariableId FindVariable(std::string_view name) const;
   int num_variables() const { return static_cast<int>(variables_.size()); }
@@ -164,7 +166,7 @@ class Network {
   std::vector<VariableInfo> variables_;
   std::unordered_map<std::string, int> variable_index_;
   std::vector<ExprNode> nodes_;
-  std::unordered_map<ExprNode, int, KeyHash, KeyEqual> interned_;
+  std::vector<int> interned_;               ///< open-addressing hash table of node ids (-1: free)
   std::vector<Constraint> constraints_;
   std::vector<int> topo_;                   ///< concatenated topological orders
   std::vector<int> scope_;                  ///< concatenated scopes

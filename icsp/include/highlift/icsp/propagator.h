@@ -82,9 +82,23 @@ class Propagator {
   const std::vector<BoundReason>& lower_reasons() const { return lower_reason_; }
   const std::vector<BoundReason>& upper_reasons() const { return upper_reason_; }
 
+ /// One step of a constraint's compiled evaluation order (operands refer to earlier steps).
+  struct Step {
+    Op op = Op::kConst;
+    int a = -1;    ///< operand step, or the variable index for kVar
+    int b = -1;    ///< second operand step
+    int aux = 0;   ///< kConst/kPowReal: index into constants; kPowInt: the exponent
+  };
+
  private:
+  void Compile();
+
   const Network& network_;
   PropagationOptions options_;
+  std::vector<Step> tape_;             ///< all constraints' steps, contiguous per constraint
+  std::vector<int> tape_begin_;        ///< constraint c uses tape_[tape_begin_[c] .. tape_begin_[c+1])
+  std::vector<Interval> constants_;
+  int max_steps_ = 0;
   std::vector<BoundReason> lower_reason_, upper_reason_;
 };
 

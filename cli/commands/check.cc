@@ -1,0 +1,104 @@
+// `highlift check PROJECT.json [--json]`: interval constraint propagation over the project.
+// Prints every parameter (initial domain, final domain, narrowing, provenance), then either "all
+// requirements can be met" (exit 0) or the requirements that cannot be met together with the
+// chain of constraints through which the conflict arises (exit 1).
+#include <cmath>
+#include <iostream>
+
+#include <nlohmann/json.hpp>
+
+#include "command.h"
+#include "highlift/core/project_io.h"
+#include "highlift/core/text_table.h"
+#include "highlift/icsp/drive_system.h"
+
+namespace highlift::cli {
+namespace {
+
+using icsp::Interval;
+
+std::string Range(const Interval& x) {
+  if (icsp::IsEmpty(x)) return "empty";
+  if (x.lower() == x.upper()) return FormatNumber(x.lower(), 5);
+  return "[" + FormatNumber(x.lower(), 5) + ", " + FormatNumber(x.upper(), 5) + "]";
+}
+nlohmann::json RangeJson(const Interval& x) {
+  if (icsp::IsEmpty(x)) return nullptr;
+  auto num = [](double v) -> nlohmann::json {
+    if (std::isfinite(v)) return v;
+    return v > 0 ? "inf" : "-inf";
+  };
+  return nlohmann::json::array({num(x.lower()), num(x.upper())});
+}
+
+class CheckCommand : public Command {
+ public:
+  void Setup(CLI::App& app) override {
+    options_.AddTo(app);
+    app.add_option("--ratio", ratio_, "stop re-revising when no domain shrinks by more than this fraction (0: exact fixed point)")
+        ->check(CLI::Range(0.0, 0.999));
+  }
+
+  int Run() override {
+    const Project project = LoadProject(options_.project);
+    const icsp::DriveSystemNetwork net = icsp::BuildDriveSystemNetwork(project);
+    icsp::PropagationOptions po;
+    po.ratio = ratio_;
+    const icsp::CheckResult r = icsp::CheckDriveSystem(net, po);
+    std::vector<std::string> violated;
+    for (int c : r.explanation.conflict) violated.push_back(net.network.constraint(icsp::ConstraintId{c}).info.label);
+    if (options_.json) {
+      nlohmann::json params = nlohmann::json::array();
+      for (const auto& p : r.parameters) {
+        params.push_back({{"name", p.name}, {"unit", p.unit}, {"provenance", p.provenance},
+                          {"initial", RangeJson(p.initial)}, {"final", RangeJson(p.final)},
+                          {"narrowing_percent", p.narrowing_percent}});
+      }
+      nlohmann::json doc = {{"project", project.name},
+                            {"status", icsp::ToString(r.report.status)},
+                            {"all_requirements_met", r.feasible},
+                            {"revisions", r.report.revisions},
+                            {"seconds", r.report.seconds},
+                            {"physics_constraints", net.physics_constraints},
+                            {"requirements", net.requirement_constraints},
+                            {"parameters", params}};
+      if (!r.feasible) {
+        doc["violated_requirements"] = violated;
+        doc["physics_alone"] = r.explanation.physics_alone;
+        doc["explanation"] = r.explanation.text;
+      }
+      std::cout << doc.dump(2) << "\n";
+    } else {
+      TextTable t({"parameter", "unit", "initial", "final", "narrowed %", "provenance"}, {4});
+      for (const auto& p : r.parameters) {
+        t.AddRow({p.name, p.unit, Range(p.initial), Range(p.final), FormatNumber(p.narrowing_percent, 3), p.provenance});
+      }
+      std::cout << t.ToString() << "\n";
+      std::cout << net.physics_constraints << " physics constraints, " << net.requirement_constraints
+                << " requirements: " << r.report.BriefReport() << "\n\n";
+      if (r.feasible) {
+        std::cout << "all requirements can be met\n";
+      } else {
+        std::cout << "requirements violated: ";
+        for (std::size_t i = 0; i < violated.size(); ++i) std::cout << (i ? ", " : "") << violated[i];
+        std::cout << (violated.empty() ? "(none: the component data alone conflict)" : "") << "\n\n";
+        std::cout << r.explanation.text;
+      }
+    }
+    if (r.report.status == icsp::Status::kStoppedAtLimit) {
+      std::cerr << "highlift check: warning: propagation stopped at a limit: " << r.report.message << "\n";
+    }
+    return r.feasible ? kSuccess : kViolated;
+  }
+
+ private:
+  CommonOptions options_;
+  double ratio_ = 0.0;
+};
+
+}  // namespace
+
+HIGHLIFT_REGISTER_COMMAND(CheckCommand, "check",
+                          "narrow every parameter domain by interval propagation and check the requirements")
+
+}  // namespace highlift::cli

@@ -1,0 +1,183 @@
+model OneStationRig "one-station rig"
+  HighLift.Drives.PDU pdu(
+    n_m=2,
+    J_m=3e-04,
+    ratio=20,
+    J_g=0.02,
+    w_max=25.3,
+    tau_stall=1000,
+    P_max=18000,
+    t_ramp=0.4,
+    tauPOB=1100)
+    annotation (Placement(transformation(extent={{30,-10},{50,10}})));
+  Modelica.Blocks.Sources.CombiTimeTable pdu_speed(
+    table=[0, 0; 0.4, 25.3; 3, 25.3],
+    extrapolation=Modelica.Blocks.Types.Extrapolation.HoldLastPoint)
+    "PDU output speed command [rad/s] of load case extend_opposing"
+    annotation (Placement(transformation(extent={{-10,-10},{10,10}})));
+  HighLift.Mechanical.TorqueLimiter stl(
+    tau1_ext=470,
+    tau1_ret=470,
+    tau2_ext=587.5,
+    tau2_ret=587.5,
+    c1=20000,
+    c2=1000,
+    c3=1e+05,
+    tauB_max=940,
+    J=0.001)
+    annotation (Placement(transformation(extent={{70,-10},{90,10}})));
+  HighLift.Mechanical.BranchGearbox gbx_1(
+    ratio=2,
+    elastic=false,
+    J=0.001,
+    tau_C=0.1,
+    d_vis=1e-04,
+    tau_S=0.034999999999999996,
+    f_exp=10,
+    eta_GE=0.97)
+    annotation (Placement(transformation(extent={{230,-10},{250,10}})));
+  HighLift.Mechanical.TorqueLimiter stl_1(
+    tau1_ext=90,
+    tau1_ret=62.99999999999999,
+    tau2_ext=112.5,
+    tau2_ret=78.74999999999999,
+    c1=20000,
+    c2=1000,
+    c3=1e+05,
+    tauB_max=180,
+    J=5e-04)
+    annotation (Placement(transformation(extent={{270,-10},{290,10}})));
+  HighLift.Mechanical.GearedRotaryActuator gra_1(
+    ratio=200,
+    eta_op=0.85,
+    eta_ai=0.7,
+    J_in=0.001,
+    J_load=0.0097,
+    phi_eta=3.141592653589793,
+    w_eta=0.1,
+    tau_C=0.2,
+    d_vis=2e-04,
+    tau_S=0.06999999999999999,
+    f_exp=10)
+    annotation (Placement(transformation(extent={{310,-10},{330,10}})));
+  Modelica.Mechanics.Rotational.Components.Inertia appu(J=1e-05)
+    annotation (Placement(transformation(extent={{150,-50},{170,-30}})));
+  HighLift.Mechanical.WingTipBrake wtb(tauB_max=550, tauB_lim=700, t_B=0.03, t_lat=0.1, J=5e-04)
+    annotation (Placement(transformation(extent={{110,-130},{130,-110}})));
+  HighLift.Mechanical.LossyInertia shaft_1_shaft_2_massA(J=0.0019479110579574883, tau_C=0.675)
+    "lumped: shaft_1, brg_1, shaft_2"
+    annotation (Placement(transformation(extent={{110,-10},{130,10}})));
+  HighLift.Mechanical.Disconnector shaft_1_shaft_2(c=1531.3680823552847, d=0, t_disconnect=1)
+    "series stiffness of shaft_1, brg_1, shaft_2 (ruptures)"
+    annotation (Placement(transformation(extent={{150,-10},{170,10}})));
+  HighLift.Mechanical.LossyInertia shaft_1_shaft_2_massB(J=0.0019479110579574883, tau_C=0.675)
+    "lumped: shaft_1, brg_1, shaft_2"
+    annotation (Placement(transformation(extent={{190,-10},{210,10}})));
+  HighLift.Mechanical.LossyInertia shaft_3_massA(J=0.0003784865835377719, tau_C=0.1875)
+    "lumped: shaft_3"
+    annotation (Placement(transformation(extent={{270,-50},{290,-30}})));
+  Modelica.Mechanics.Rotational.Components.SpringDamper shaft_3(c=3349.1019961110032, d=0)
+    "series stiffness of shaft_3"
+    annotation (Placement(transformation(extent={{230,-50},{250,-30}})));
+  HighLift.Mechanical.LossyInertia shaft_3_massB(J=0.0003784865835377719, tau_C=0.1875)
+    "lumped: shaft_3"
+    annotation (Placement(transformation(extent={{190,-50},{210,-30}})));
+  Modelica.Mechanics.Rotational.Sources.Torque gra_1_load
+    "airload on gra_1 (positive table values oppose the motion)"
+    annotation (Placement(transformation(extent={{350,-10},{370,10}})));
+  Modelica.Mechanics.Rotational.Sensors.AngleSensor gra_1_angle
+    "output angle of gra_1"
+    annotation (Placement(transformation(extent={{350,-50},{370,-30}})));
+  Modelica.Blocks.Tables.CombiTable1Ds gra_1_loadTable(
+    table=[0, -5000; 2.2, -20000],
+    extrapolation=Modelica.Blocks.Types.Extrapolation.HoldLastPoint)
+    "airload [N*m] against the output angle of gra_1 [rad]"
+    annotation (Placement(transformation(extent={{390,-10},{410,10}})));
+  HighLift.Control.Monitoring monitor(
+    phi_asym=12.566370614359172,
+    w_over=32.89,
+    phi_unc=12.566370614359172,
+    t_detect=0.01)
+    "failure monitoring: asymmetry, overspeed, uncommanded movement"
+    annotation (Placement(transformation(extent={{70,-50},{90,-30}})));
+  Modelica.Mechanics.Rotational.Sensors.AngleSensor appu_phi
+    "shaft angle at appu"
+    annotation (Placement(transformation(extent={{110,-50},{130,-30}})));
+  Modelica.Mechanics.Rotational.Sensors.SpeedSensor appu_w
+    "shaft speed at appu"
+    annotation (Placement(transformation(extent={{110,-90},{130,-70}})));
+  Modelica.Blocks.Continuous.Integrator commandedAngle
+    "commanded PDU angle"
+    annotation (Placement(transformation(extent={{30,-50},{50,-30}})));
+
+equation
+  connect(pdu_speed.y[1], pdu.w_ref)
+    annotation (Line(points={{0,0},{28,0}}, color={0,0,127}));
+  connect(shaft_1_shaft_2_massA.flange_b, shaft_1_shaft_2.flange_a)
+    annotation (Line(points={{130,0},{150,0}}));
+  connect(shaft_1_shaft_2.flange_b, shaft_1_shaft_2_massB.flange_a)
+    annotation (Line(points={{170,0},{190,0}}));
+  connect(shaft_3_massA.flange_b, shaft_3.flange_a)
+    annotation (Line(points={{290,-40},{230,-40}}));
+  connect(shaft_3.flange_b, shaft_3_massB.flange_a)
+    annotation (Line(points={{250,-40},{190,-40}}));
+  connect(pdu.flange_left, stl.flange_a)
+    annotation (Line(points={{40,10},{70,0}}));
+  connect(stl.flange_b, shaft_1_shaft_2_massA.flange_a)
+    annotation (Line(points={{90,0},{110,0}}));
+  connect(shaft_1_shaft_2_massB.flange_b, gbx_1.flange_a)
+    annotation (Line(points={{210,0},{230,0}}));
+  connect(gbx_1.flange_branch, stl_1.flange_a)
+    annotation (Line(points={{240,10},{270,0}}));
+  connect(stl_1.flange_b, gra_1.flange_a)
+    annotation (Line(points={{290,0},{310,0}}));
+  connect(gbx_1.flange_b, shaft_3_massA.flange_a)
+    annotation (Line(points={{250,0},{270,-40}}));
+  connect(shaft_3_massB.flange_b, appu.flange_a)
+    annotation (Line(points={{210,-40},{150,-40}}));
+  connect(appu.flange_b, wtb.flange_a)
+    annotation (Line(points={{170,-40},{110,-120}}));
+  connect(gra_1_load.flange, gra_1.flange_b)
+    annotation (Line(points={{370,0},{330,0}}));
+  connect(gra_1.flange_b, gra_1_angle.flange)
+    annotation (Line(points={{330,0},{370,-40}}));
+  connect(gra_1_angle.phi, gra_1_loadTable.u)
+    annotation (Line(points={{371,-46},{388,0}}, color={0,0,127}));
+  connect(gra_1_loadTable.y[1], gra_1_load.tau)
+    annotation (Line(points={{400,0},{348,0}}, color={0,0,127}));
+  connect(appu.flange_a, appu_phi.flange)
+    annotation (Line(points={{150,-40},{130,-40}}));
+  connect(appu.flange_a, appu_w.flange)
+    annotation (Line(points={{150,-40},{130,-80}}));
+  connect(appu_phi.phi, monitor.phi_left)
+    annotation (Line(points={{131,-46},{80,-40}}, color={0,0,127}));
+  connect(appu_w.w, monitor.w_left)
+    annotation (Line(points={{131,-89},{80,-40}}, color={0,0,127}));
+  connect(appu_phi.phi, monitor.phi_right)
+    annotation (Line(points={{131,-46},{80,-40}}, color={0,0,127}));
+  connect(appu_w.w, monitor.w_right)
+    annotation (Line(points={{131,-89},{80,-40}}, color={0,0,127}));
+  connect(pdu.phi, monitor.phi_pdu)
+    annotation (Line(points={{51,-6},{80,-40}}, color={0,0,127}));
+  connect(pdu_speed.y[1], commandedAngle.u)
+    annotation (Line(points={{0,0},{28,-40}}, color={0,0,127}));
+  connect(commandedAngle.y, monitor.phi_cmd)
+    annotation (Line(points={{51,-40},{80,-40}}, color={0,0,127}));
+  connect(monitor.wtb, wtb.apply)
+    annotation (Line(points={{80,-40},{120,-108}}, color={0,0,127}));
+
+  annotation (
+    experiment(StopTime=3, Tolerance=1e-06, Interval=0.001),
+    Diagram(coordinateSystem(preserveAspectRatio=false, extent={{-20,-140},{420,20}})),
+    Documentation(info="<html>
+<p>Drive system of the highlift project <strong>one-station rig</strong>, exported by <code>highlift export</code> at reduced resolution (inertias lumped at gearboxes and stations).</p>
+<p>A PDU drives one wing transmission: system torque limiter, two shaft segments with a steady bearing, a station (T-gearbox, station torque limiter, geared rotary actuator) and the outboard shaft to the APPU and the wing-tip brake. Numbers: domain.md s3 (E) and the catalogue defaults.</p>
+<p>Scenario <strong>rupture_wtb</strong> (rupture), load case <strong>extend_opposing</strong> (extend).</p>
+<p>Positive rotation is the extend direction. The initial state is the drive at rest.</p>
+<p>Lumped chains (spring-damper or inertia: members):</p>
+<ul>
+<li>shaft_1_shaft_2: shaft_1, brg_1, shaft_2</li>
+<li>shaft_3: shaft_3</li>
+</ul>
+</html>"));
+end OneStationRig;

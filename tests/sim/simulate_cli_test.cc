@@ -1,0 +1,61 @@
+// `highlift simulate`: CSV with time + instance-path columns, --signals, --json summary,
+// errors with exit code 2.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "common/run_cli.h"
+
+namespace {
+
+std::filesystem::path TempCsv(const std::string& name) {
+  return std::filesystem::temp_directory_path() / ("highlift_sim_" + std::to_string(::getpid()) + "_" + name);
+}
+
+TEST(SimulateCli, WritesSelectedColumnsAndJsonSummary) {
+  const auto csv = TempCsv("friction.csv");
+  const auto r = highlift::testing::RunCli({"simulate", "tests/sim/msl/Friction.json", "--scenario", "msl",
+                                            "--out", csv.string(), "--signals", "clutch.w_rel,brake.mode",
+                                            "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["status"], "success");
+  EXPECT_EQ(j["output"]["columns"], 2);
+  EXPECT_GT(j["output"]["rows"].get<long>(), 6000);
+  // Brake engages at the step (time event at 0.5 s) and holds 800 N*m (cgeo*fn_max*mu).
+  bool brake_event = false;
+  for (const auto& e : j["events"])
+    if (e["element"] == "brake" && e["kind"] == "time") brake_event = std::abs(e["time"].get<double>() - 0.5) < 1e-12;
+  EXPECT_TRUE(brake_event) << j["events"].dump();
+  bool brake_peak = false;
+  for (const auto& p : j["peak_torques"])
+    if (p["element"] == "brake") brake_peak = std::abs(p["abs_tau"].get<double>() - 800) < 1e-6;
+  EXPECT_TRUE(brake_peak) << j["peak_torques"].dump();
+  std::ifstream in(csv);
+  std::string header;
+  std::getline(in, header);
+  EXPECT_EQ(header, "\"time\",\"clutch.w_rel\",\"brake.mode\"");
+  std::filesystem::remove(csv);
+}
+
+TEST(SimulateCli, UnknownSignalIsInvalidInputWithSuggestion) {
+  const auto csv = TempCsv("bad.csv");
+  const auto r = highlift::testing::RunCli({"simulate", "tests/sim/msl/First.json", "--out", csv.string(),
+                                            "--signals", "inertia3.ww"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("signal 'inertia3.ww' is not an output of this network; closest: inertia3.w"),
+            std::string::npos)
+      << r.err;
+  std::filesystem::remove(csv);
+}
+
+TEST(SimulateCli, UnknownScenarioListsTheScenarios) {
+  const auto r = highlift::testing::RunCli({"simulate", "tests/sim/msl/First.json", "--scenario", "nope"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("scenario 'nope' is not in the project; choose one of: msl"), std::string::npos) << r.err;
+}
+
+}  // namespace
