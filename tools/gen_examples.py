@@ -329,9 +329,10 @@ def requirements(wings, stations, d):
     for st in stations:
         reqs.append(requirement(
             f"station_limiter_{st}",
-            f"stl_{st}.lockout_torque_extend >= 1.3 * {n['station']} N*m",
+            f"stl_{st}.lockout_torque_extend >= 1.3 * {n['station']} N*m * {n.get('limiter_ratio', 1)}",
             f"station limiter trips above 1.3 x the maximum operating station input torque "
-            f"({n['station']} N*m); domain.md s6 (E) 1.3-1.6"))
+            f"({n['station']} N*m at the shaft, x {n.get('limiter_ratio', 1)} for the gearbox "
+            "ahead of the limiter); domain.md s6 (E) 1.3-1.6"))
     reqs.append(requirement(
         "extension_time", f"travel_time.extension <= {n['time']} s",
         f"full extension within {n['time']} s ({tag})"))
@@ -450,9 +451,14 @@ def a380_flaps():
             "inertia": q("1e-3 kg*m^2", f"{E}: station input 1e-3 kg m2"),
         },
         "limiter": {
-            "lockout_torque_extend": pm10(90, "N*m", f"{E}: 1.5 x 58.8 N m station input torque"),
-            "lockout_torque_retract": pm10(63, "N*m", f"{E}: 0.7 x extend (asymmetric limiter, "
+            # domain.md s3 sets the limiter at 1.5 x 58.8 = 90 N m on the shaft side; it sits behind
+            # the 2:1 station gearbox, where the same setting reads 2 x 90 = 180 N m.
+            "lockout_torque_extend": pm10(180, "N*m", f"{E}: 1.5 x 58.8 N m station input torque "
+                                          "(90 N m at the shaft), x 2 behind the 2:1 station gearbox"),
+            "lockout_torque_retract": pm10(126, "N*m", f"{E}: 0.7 x extend (asymmetric limiter, "
                                            "domain.md s1 P)"),
+            "end_stop_torque": pm10(225, "N*m", f"{E}: 1.25 x the 180 N m lock-out torque (catalogue "
+                                    "rule for the end stop of figure 4 in the paper)"),
         },
         "gra": {
             "ratio": q(gra_ratio, f"{E}: GRA 200:1 (s6: 100-300:1)"),
@@ -523,7 +529,7 @@ def a380_flaps():
         "revolutions": 140,
         "extend_load": [[0, 5], [0.25, 8], [0.5, 12], [0.75, 16], [1, 20]],
         "wing": wing,
-        "numbers": {"root": 360, "station": 58.8, "time": 40},
+        "numbers": {"root": 360, "station": 58.8, "time": 40, "limiter_ratio": 2},
     }
     return build_project(d)
 

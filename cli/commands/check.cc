@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "command.h"
+#include "estimated_project.h"
 #include "highlift/core/project_io.h"
 #include "highlift/core/text_table.h"
 #include "highlift/icsp/drive_system.h"
@@ -35,12 +36,15 @@ class CheckCommand : public Command {
  public:
   void Setup(CLI::App& app) override {
     options_.AddTo(app);
+    app.add_flag("--no-estimate", no_estimate_,
+                 "Use the project's own domains only: no database, fit or physics estimates");
     app.add_option("--ratio", ratio_, "stop re-revising when no domain shrinks by more than this fraction (0: exact fixed point)")
         ->check(CLI::Range(0.0, 0.999));
   }
 
   int Run() override {
-    const Project project = LoadProject(options_.project);
+    const EstimatedProject loaded = LoadEstimatedProject(options_, !no_estimate_);
+    const Project& project = loaded.project;
     const icsp::DriveSystemNetwork net = icsp::BuildDriveSystemNetwork(project);
     icsp::PropagationOptions po;
     po.ratio = ratio_;
@@ -61,6 +65,7 @@ class CheckCommand : public Command {
                             {"seconds", r.report.seconds},
                             {"physics_constraints", net.physics_constraints},
                             {"requirements", net.requirement_constraints},
+                            {"estimation", loaded.estimation_brief},
                             {"parameters", params}};
       if (!r.feasible) {
         doc["violated_requirements"] = violated;
@@ -74,6 +79,7 @@ class CheckCommand : public Command {
         t.AddRow({p.name, p.unit, Range(p.initial), Range(p.final), FormatNumber(p.narrowing_percent, 3), p.provenance});
       }
       std::cout << t.ToString() << "\n";
+      if (!loaded.estimation_brief.empty()) std::cout << "domains: " << loaded.estimation_brief << "\n";
       std::cout << net.physics_constraints << " physics constraints, " << net.requirement_constraints
                 << " requirements: " << r.report.BriefReport() << "\n\n";
       if (r.feasible) {
@@ -93,6 +99,7 @@ class CheckCommand : public Command {
 
  private:
   CommonOptions options_;
+  bool no_estimate_ = false;  // skip the estimator (domains as given and catalogue defaults)
   double ratio_ = 0.0;
 };
 

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "command.h"
+#include "estimated_project.h"
 #include "highlift/core/error.h"
 #include "highlift/core/project_io.h"
 #include "highlift/core/text_table.h"
@@ -34,6 +35,8 @@ class TradeoffCommand : public Command {
  public:
   void Setup(CLI::App& app) override {
     options_.AddTo(app);
+    app.add_flag("--no-estimate", no_estimate_,
+                 "Use the project's own domains only: no database, fit or physics estimates");
     app.add_option("--vary", vary_, "NAME=LO:HI:N, LO and HI in the quantity's display unit")->required();
     app.add_option("--show", show_, "NAME[,NAME...] quantities to print")->required()->delimiter(',');
   }
@@ -60,7 +63,8 @@ class TradeoffCommand : public Command {
     if (!(lo < hi) || n < 1 || n > 1000) {
       throw InputError("--vary '" + vary_ + "': need LO < HI and 1 <= N <= 1000");
     }
-    const Project project = LoadProject(options_.project);
+    const EstimatedProject loaded = LoadEstimatedProject(options_, !no_estimate_);
+    const Project& project = loaded.project;
     const icsp::DriveSystemNetwork dn = icsp::BuildDriveSystemNetwork(project);
     const icsp::Network& net = dn.network;
     const icsp::VariableId varied = Lookup(net, name, "--vary");
@@ -109,6 +113,7 @@ class TradeoffCommand : public Command {
 
  private:
   CommonOptions options_;
+  bool no_estimate_ = false;  // skip the estimator (domains as given and catalogue defaults)
   std::string vary_;
   std::vector<std::string> show_;
 };

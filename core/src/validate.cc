@@ -156,8 +156,11 @@ class Validator {
       }
       (void)ends_ok;
     }
+    // A drive-system flange takes one connection (a shaft branches only through a gearbox). In an
+    // element network, as in Modelica, any number of connections may meet at one flange (e.g.
+    // several elements grounded on one `Fixed`): the connected flanges form one node.
     for (const auto& [port, list] : uses) {
-      if (list.size() < 2) continue;
+      if (element || list.size() < 2) continue;
       std::vector<std::string> others;
       for (const Connection* k : list) others.push_back("'" + (k->a == port ? k->b : k->a).ToString() + "'");
       const Component* c = by_id.at(port.component);

@@ -192,5 +192,25 @@ TEST(Validate, FloatingElementIslandIsAWarning) {
       << r.FullReport();
 }
 
+TEST(Validate, ElementFlangeMayTakeSeveralConnections) {
+  // As in Modelica: fixed.flange grounds two elements (MSL Rotational.Examples.First does so).
+  const std::string text = R"json({
+    "format": "highlift-project/1", "name": "elements",
+    "elements": [
+      {"id": "fixed", "type": "Fixed"},
+      {"id": "inertia1", "type": "Inertia", "parameters": {"J": 1}},
+      {"id": "spring", "type": "Spring", "parameters": {"c": 100}},
+      {"id": "damper", "type": "Damper", "parameters": {"d": 1}}
+    ],
+    "element_connections": [
+      ["fixed.flange", "spring.flange_a"], ["fixed.flange", "damper.flange_a"],
+      ["spring.flange_b", "inertia1.flange_a"], ["damper.flange_b", "inertia1.flange_a"]
+    ]
+  })json";
+  const std::string issues = Issues(text);
+  EXPECT_EQ(issues.find("connected 2 times"), std::string::npos) << issues;
+  EXPECT_EQ(issues.find("E "), std::string::npos) << issues;
+}
+
 }  // namespace
 }  // namespace highlift

@@ -21,6 +21,15 @@ std::filesystem::path TempDir(const std::string& name) {
   return dir;
 }
 
+TEST(ExportCli, ExportsAnElementNetworkWithAFlangeConnectedTwice) {
+  // MSL First grounds several elements on fixed.flange; the CLI validates and exports it.
+  const auto dir = TempDir("first");
+  const auto r = RunCli({"export", "tests/export/first.json", "--modelica", dir.string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(ReadText(dir / "First.mo"), ReadText(testing::ExportTestDir() / "golden" / "First.mo"));
+  std::filesystem::remove_all(dir);
+}
+
 TEST(ExportCli, WritesLibraryAndModel) {
   const auto dir = TempDir("rig");
   const auto r = RunCli({"export", "tests/export/small_drive.json", "--modelica", dir.string()});

@@ -88,6 +88,29 @@ TEST(CheckCommand, JsonHasTheSameContent) {
   EXPECT_TRUE(doc["parameters"][0].contains("provenance"));
 }
 
+TEST(CheckCommand, UsesEstimatedDomainsWhereTheProjectGivesNone) {
+  // Shaft stiffness is not given in the example: the estimator derives it from the tube
+  // geometry and material (provenance "estimated"); --no-estimate leaves the catalogue default.
+  const auto r = testing::RunCli({"check", "examples/a380_class_flaps.json", "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto doc = nlohmann::json::parse(r.out);
+  EXPECT_NE(doc["estimation"].get<std::string>().find("0 conflicts"), std::string::npos) << doc["estimation"];
+  std::string provenance;
+  for (const auto& p : doc["parameters"])
+    if (p["name"] == "shaft_l1.stiffness") provenance = p["provenance"];
+  EXPECT_EQ(provenance, "estimated");
+
+  const auto raw = testing::RunCli({"check", "examples/a380_class_flaps.json", "--json", "--no-estimate"});
+  ASSERT_EQ(raw.exit_code, 0) << raw.err;
+  const auto raw_doc = nlohmann::json::parse(raw.out);
+  EXPECT_EQ(raw_doc["estimation"], "");
+  for (const auto& p : raw_doc["parameters"]) {
+    if (p["name"] == "shaft_l1.stiffness") {
+      EXPECT_NE(p["provenance"], "estimated");
+    }
+  }
+}
+
 TEST(TradeoffCommand, SlicesTheSpeedDomain) {
   const auto r = testing::RunCli({"tradeoff", "examples/a380_class_flaps_infeasible.json", "--vary",
                                   "pdu.max_output_speed=20:32:4", "--show", "travel_time.extension,peak.jam_l1.torque",

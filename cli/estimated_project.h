@@ -1,0 +1,23 @@
+// Loading a project for the analyses that work on interval domains (check, tradeoff): the
+// parameters without a user value take the estimator's domains (database part, fit, physics
+// law, default, in that trust order), with their provenance.
+#pragma once
+
+#include <string>
+
+#include "command.h"
+#include "highlift/core/project.h"
+
+namespace highlift::cli {
+
+struct EstimatedProject {
+  Project project;
+  std::string estimation_brief;  ///< "estimated N parameters (...)", empty when not estimated
+  int conflicts = 0;             ///< estimates that disagreed with a more trusted source
+};
+
+/// Loads `options.project`; unless `estimate` is false, runs the estimator with the database
+/// `options.db` (the shipped default when empty).
+EstimatedProject LoadEstimatedProject(const CommonOptions& options, bool estimate);
+
+}  // namespace highlift::cli
