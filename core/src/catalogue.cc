@@ -722,4 +722,27 @@ std::vector<std::string> Suggest(std::string_view name, const std::vector<std::s
   return out;
 }
 
+std::string DidYouMean(std::string_view name, const std::vector<std::string>& candidates) {
+  const auto close = Suggest(name, candidates);
+  if (close.empty()) return "";
+  std::string out = "; did you mean ";
+  for (std::size_t i = 0; i < close.size(); ++i) {
+    if (i > 0) out += (i + 1 == close.size()) ? " or " : ", ";
+    out += "'" + close[i] + "'";
+  }
+  return out + "?";
+}
+
+std::string SuggestionHint(std::string_view name, const std::vector<std::string>& candidates,
+                           const std::string& label) {
+  std::string list;
+  for (std::size_t i = 0; i < candidates.size(); ++i) list += (i ? ", " : "") + candidates[i];
+  if (candidates.empty()) list = "(none)";
+  const std::string suggestion = DidYouMean(name, candidates);
+  if (suggestion.empty()) return "; " + label + ": " + list;
+  std::string capital = label;
+  capital[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(capital[0])));
+  return suggestion + " " + capital + ": " + list;
+}
+
 }  // namespace highlift

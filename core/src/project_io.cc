@@ -26,37 +26,6 @@ constexpr const char* kFormat = "highlift-project/1";
 // ---------------------------------------------------------------------------------------------
 // Small helpers
 
-std::string Join(const std::vector<std::string>& items, const std::string& separator = ", ") {
-  std::string out;
-  for (std::size_t i = 0; i < items.size(); ++i) {
-    if (i > 0) out += separator;
-    out += items[i];
-  }
-  return out;
-}
-
-// "; did you mean 'a'?" / "; did you mean 'a' or 'b'?" / "" when there is no close name.
-std::string DidYouMean(std::string_view name, const std::vector<std::string>& candidates) {
-  const auto close = Suggest(name, candidates);
-  if (close.empty()) return "";
-  std::string out = "; did you mean ";
-  for (std::size_t i = 0; i < close.size(); ++i) {
-    if (i > 0) out += (i + 1 == close.size()) ? " or " : ", ";
-    out += "'" + close[i] + "'";
-  }
-  return out + "?";
-}
-
-// "; did you mean 'x'? Allowed keys: a, b" or, without a close name, "; allowed keys: a, b".
-std::string Hint(std::string_view name, const std::vector<std::string>& candidates, const std::string& label) {
-  const std::string list = candidates.empty() ? "(none)" : Join(candidates);
-  const std::string suggestion = DidYouMean(name, candidates);
-  if (suggestion.empty()) return "; " + label + ": " + list;
-  std::string capital = label;
-  capital[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(capital[0])));
-  return suggestion + " " + capital + ": " + list;
-}
-
 std::string TypeName(const json& v) {
   switch (v.type()) {
     case json::value_t::object: return "an object";
@@ -222,7 +191,7 @@ void ReadNoteAndProvenance(const json& v, Parameter& p) {
     const std::vector<std::string> names = {"user", "database", "fit", "estimated", "default", "propagated"};
     if (!prov)
       throw QuantityError{"/provenance", "unknown provenance '" + pv.get<std::string>() + "'" +
-                                             Hint(pv.get<std::string>(), names, "valid provenances")};
+                                             SuggestionHint(pv.get<std::string>(), names, "valid provenances")};
     p.provenance = *prov;
   }
 }
@@ -231,7 +200,7 @@ void CheckObjectKeys(const json& v, const std::vector<std::string>& allowed, con
   for (const auto& [key, value] : v.items()) {
     if (std::find(allowed.begin(), allowed.end(), key) == allowed.end())
       throw QuantityError{"/" + detail::EscapePointerToken(key),
-                          "unknown key '" + key + "' in " + what + Hint(key, allowed, "allowed keys"),
+                          "unknown key '" + key + "' in " + what + SuggestionHint(key, allowed, "allowed keys"),
                           true};
   }
 }
@@ -369,7 +338,7 @@ class Reader {
     for (const auto& [key, value] : n.value.items()) {
       if (std::find(allowed.begin(), allowed.end(), key) != allowed.end()) continue;
       const std::string pointer = n.pointer + "/" + detail::EscapePointerToken(key);
-      throw InputError("unknown key '" + key + "' in " + what + Hint(key, allowed, "allowed keys"),
+      throw InputError("unknown key '" + key + "' in " + what + SuggestionHint(key, allowed, "allowed keys"),
                        doc_.AtKey(file_, pointer));
     }
   }
@@ -476,7 +445,7 @@ class Reader {
     if (spec == nullptr) {
       std::vector<std::string> names;
       for (const auto& t : element ? ElementTypes() : ComponentTypes()) names.push_back(t.name);
-      Fail(n["type"], named + ": unknown " + kind + " type '" + c.type + "'" + Hint(c.type, names, "valid types"));
+      Fail(n["type"], named + ": unknown " + kind + " type '" + c.type + "'" + SuggestionHint(c.type, names, "valid types"));
     }
     const std::string context = named + " (" + c.type + "): ";
     if (n.has("description")) c.description = String(n["description"], context + "'description'");
@@ -496,7 +465,7 @@ class Reader {
         const ParameterSpec* ps = spec->FindParameter(key);
         const Node item = parameters[key];
         if (ps == nullptr)
-          throw InputError(context + "unknown parameter '" + key + "'" + Hint(key, names, "parameters of " + c.type),
+          throw InputError(context + "unknown parameter '" + key + "'" + SuggestionHint(key, names, "parameters of " + c.type),
                            doc_.AtKey(file_, item.pointer));
         ReadParameter(item, *ps, context, c);
         given.insert(key);
@@ -801,7 +770,7 @@ class Reader {
       Require(item, "kind", what);
       s.kind = String(item["kind"], what + ": 'kind'");
       if (std::find(kinds.begin(), kinds.end(), s.kind) == kinds.end())
-        Fail(item["kind"], what + ": unknown kind '" + s.kind + "'" + Hint(s.kind, kinds, "valid kinds"));
+        Fail(item["kind"], what + ": unknown kind '" + s.kind + "'" + SuggestionHint(s.kind, kinds, "valid kinds"));
       if (item.has("description")) s.description = String(item["description"], what + ": 'description'");
       if (item.has("load_case")) s.load_case = String(item["load_case"], what + ": 'load_case'");
       if (item.has("stop_time")) {

@@ -48,27 +48,6 @@ std::string Join(const std::vector<std::string>& items) {
   return out;
 }
 
-std::string DidYouMean(std::string_view name, const std::vector<std::string>& candidates) {
-  const auto close = Suggest(name, candidates);
-  if (close.empty()) return "";
-  std::string out = "; did you mean ";
-  for (std::size_t i = 0; i < close.size(); ++i) {
-    if (i > 0) out += (i + 1 == close.size()) ? " or " : ", ";
-    out += "'" + close[i] + "'";
-  }
-  return out + "?";
-}
-
-// "; did you mean 'x'? Allowed keys: a, b" or, without a close name, "; allowed keys: a, b".
-std::string Hint(std::string_view name, const std::vector<std::string>& candidates, const std::string& label) {
-  const std::string list = candidates.empty() ? "(none)" : Join(candidates);
-  const std::string suggestion = DidYouMean(name, candidates);
-  if (suggestion.empty()) return "; " + label + ": " + list;
-  std::string capital = label;
-  capital[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(capital[0])));
-  return suggestion + " " + capital + ": " + list;
-}
-
 bool IsActuator(const std::string& type) { return type == "geared_rotary_actuator" || type == "ballscrew_actuator"; }
 
 // Element types that ground or drive a network (an island without one floats).
@@ -121,7 +100,7 @@ class Validator {
         std::vector<std::string> names;
         for (const auto& t : element ? ElementTypes() : ComponentTypes()) names.push_back(t.name);
         Add(Severity::kError, c.id, "",
-            kind + " '" + c.id + "': unknown " + kind + " type '" + c.type + "'" + Hint(c.type, names, "valid types"),
+            kind + " '" + c.id + "': unknown " + kind + " type '" + c.type + "'" + SuggestionHint(c.type, names, "valid types"),
             c.where);
         continue;
       }
@@ -147,7 +126,7 @@ class Validator {
           std::vector<std::string> ports;
           for (const auto& p : spec->ports) ports.push_back(p.name);
           Add(Severity::kError, end->component, end->port,
-              Describe(*it->second) + " has no port '" + end->port + "'" + Hint(end->port, ports, "ports"),
+              Describe(*it->second) + " has no port '" + end->port + "'" + SuggestionHint(end->port, ports, "ports"),
               k.where);
           ends_ok = false;
           continue;
@@ -188,7 +167,7 @@ class Validator {
     auto check_name = [&](const std::string& name) {
       if (spec.FindParameter(name) != nullptr) return true;
       Add(Severity::kError, c.id, "",
-          Describe(c) + ": unknown parameter '" + name + "'" + Hint(name, names, "parameters of " + c.type),
+          Describe(c) + ": unknown parameter '" + name + "'" + SuggestionHint(name, names, "parameters of " + c.type),
           c.where);
       return false;
     };
@@ -345,7 +324,7 @@ class Validator {
     for (const auto& s : project_.scenarios) {
       if (!s.load_case.empty() && project_.FindLoadCase(s.load_case) == nullptr)
         Add(Severity::kError, "", "",
-            "scenario '" + s.name + "': unknown load case '" + s.load_case + "'" + Hint(s.load_case, load_cases, "load cases"),
+            "scenario '" + s.name + "': unknown load case '" + s.load_case + "'" + SuggestionHint(s.load_case, load_cases, "load cases"),
             s.where);
       CheckReference(s, s.jam_component, "jam",
                      {"jam", "geared_rotary_actuator", "ballscrew_actuator", "station_torque_limiter", "branch_gearbox"});

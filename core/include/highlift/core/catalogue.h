@@ -82,4 +82,12 @@ std::string CatalogueMarkdown();
 std::vector<std::string> Suggest(std::string_view name, const std::vector<std::string>& candidates,
                                  std::size_t max_results = 3);
 
+/// "; did you mean 'a'?" / "; did you mean 'a' or 'b'?", or "" when no candidate is close.
+std::string DidYouMean(std::string_view name, const std::vector<std::string>& candidates);
+
+/// A message tail naming the valid choices: "; did you mean 'x'? Allowed keys: a, b" or, without
+/// a close name, "; allowed keys: a, b" (`label` is "allowed keys", "valid types", ...).
+std::string SuggestionHint(std::string_view name, const std::vector<std::string>& candidates,
+                           const std::string& label);
+
 }  // namespace highlift
