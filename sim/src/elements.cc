@@ -217,11 +217,13 @@ class ElastoBacklash : public Compliant {
 // ------------------------------------------------------------------------------------------
 // Ideal gears
 
-class IdealGear : public Element {
+// The two-flange-plus-support bookkeeping of a gear: the ratio (checked once) and the kinematic
+// row w_a - ratio * w_b + (ratio - 1) * w_support = 0. IdealGear and LossyGear add their laws.
+class GearBase : public Element {
  public:
-  explicit IdealGear(const NetworkElement& e) : ratio(Param(e, "ratio")) {
+  GearBase(const NetworkElement& e, const char* type) : ratio(Param(e, "ratio")) {
     if (ratio == 0.0)
-      throw InputError("element '" + e.id + "' (IdealGear): ratio = 0 is not a gear; give the "
+      throw InputError("element '" + e.id + "' (" + type + "): ratio = 0 is not a gear; give the "
                        "speed ratio w_a / w_b (non-zero)");
   }
   std::vector<std::string> Flanges() const override { return {"flange_a", "flange_b", "support"}; }
@@ -239,6 +241,13 @@ class IdealGear : public Element {
   void HolonomicRows(std::vector<InitialEquation>& rows) const override {
     rows.push_back({Row(), 0.0});
   }
+  double ratio;
+  int a = -1, b = -1, s = -1;
+};
+
+class IdealGear : public GearBase {
+ public:
+  explicit IdealGear(const NetworkElement& e) : GearBase(e, "IdealGear") {}
   void Constraints(Eval& e) override {
     Constraint& c = e.NewConstraint(index);
     c.row = Row();
@@ -254,8 +263,7 @@ class IdealGear : public Element {
   double PeakTorque(const Eval&) const override {
     return std::abs(ratio) >= 1 ? -ratio * tau_a : tau_a;
   }
-  double ratio;
-  int a = -1, b = -1, s = -1, constraint = -1;
+  int constraint = -1;
   double tau_a = 0.0;
 };
 
@@ -581,13 +589,10 @@ class Clutch : public SurfaceFriction {
 // mode. Multiplier of the kinematic constraint = flange_a.tau; when stuck a second constraint
 // w_a = 0 with multiplier tauLoss.
 
-class LossyGear : public Element {
+class LossyGear : public GearBase {
  public:
   explicit LossyGear(const NetworkElement& e)
-      : ratio(Param(e, "ratio")), table(TableOr(e, "lossTable", {{0, 1, 1, 0, 0}}, 5)) {
-    if (ratio == 0.0)
-      throw InputError("element '" + e.id + "' (LossyGear): ratio = 0 is not a gear; give the "
-                       "speed ratio w_a / w_b (non-zero)");
+      : GearBase(e, "LossyGear"), table(TableOr(e, "lossTable", {{0, 1, 1, 0, 0}}, 5)) {
     ideal = true;
     for (const auto& r : table) {
       if (r[1] <= 0 || r[1] > 1 || r[2] <= 0 || r[2] > 1)
@@ -595,21 +600,6 @@ class LossyGear : public Element {
                          "in (0, 1]; fix columns 2 and 3");
       if (r[1] != 1 || r[2] != 1 || r[3] != 0 || r[4] != 0) ideal = false;
     }
-  }
-  std::vector<std::string> Flanges() const override { return {"flange_a", "flange_b", "support"}; }
-  void Bind(const std::function<int(const std::string&)>& node_of,
-            const std::function<int(const std::string&)>&) override {
-    a = node_of("flange_a");
-    b = node_of("flange_b");
-    s = node_of("support");
-  }
-  std::vector<int> Nodes() const override { return {a, b, s}; }
-  std::vector<int> CoupledNodes() const override { return {a, b, s}; }
-  std::vector<std::pair<int, double>> Row() const {
-    return {{a, 1.0}, {b, -ratio}, {s, ratio - 1.0}};
-  }
-  void HolonomicRows(std::vector<InitialEquation>& rows) const override {
-    rows.push_back({Row(), 0.0});
   }
   double WA(const Eval& e) const { return e.w[a] - e.w[s]; }
 
@@ -801,10 +791,8 @@ class LossyGear : public Element {
     return std::abs(ratio) >= 1 ? -ratio * (tau_a - tau_loss) : tau_a;
   }
 
-  double ratio;
   Table table;
   bool ideal = false;
-  int a = -1, b = -1, s = -1;
   int mode = kFree;
   int quadrant = 1;
   int flips = 0;
