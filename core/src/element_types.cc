@@ -11,88 +11,13 @@
 #include <cmath>
 #include <limits>
 
+#include "element_type_builders.h"
 #include "highlift/core/catalogue.h"
 
 namespace highlift {
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
-
-Dimension Temperature() {
-  Dimension d;
-  d.exponents[4] = 1;
-  return d;
-}
-Dimension HeatCapacity() { return dimensions::Energy() / Temperature(); }
-Dimension PerKelvin() { return Dimension{} / Temperature(); }
-
-PortSpec Flange(std::string name, std::string description, bool required = true) {
-  return {std::move(name), PortKind::kFlange, required, std::move(description)};
-}
-PortSpec Signal(std::string name, std::string description, bool required = true) {
-  return {std::move(name), PortKind::kSignal, required, std::move(description)};
-}
-PortSpec Support() {
-  return Flange("support",
-                "housing flange; grounded (phi = 0) when left unconnected (MSL useSupport=false)",
-                false);
-}
-
-ParameterSpec Scalar(std::string name, Dimension dimension, std::string unit,
-                     std::optional<double> nominal, Domain valid, std::string description) {
-  ParameterSpec p;
-  p.kind = ParameterKind::kScalar;
-  p.name = name;
-  p.symbol = std::move(name);
-  p.dimension = dimension;
-  p.unit = std::move(unit);
-  p.nominal = nominal;
-  p.default_domain = nominal ? Domain::Point(*nominal) : valid;
-  p.valid_range = valid;
-  p.description = std::move(description);
-  p.source = "Modelica Standard Library 4.0.0";
-  return p;
-}
-/// An optional initial value: given means fixed (MSL start value with fixed=true).
-ParameterSpec Start(std::string name, Dimension dimension, std::string unit,
-                    std::string description) {
-  ParameterSpec p = Scalar(std::move(name), dimension, std::move(unit), std::nullopt,
-                           Domain::Whole(), std::move(description));
-  p.optional = true;
-  return p;
-}
-ParameterSpec Flag(std::string name, bool nominal, std::string description) {
-  ParameterSpec p = Scalar(std::move(name), {}, "1", nominal ? 1.0 : 0.0, {0, 1},
-                           std::move(description));
-  p.kind = ParameterKind::kBoolean;
-  return p;
-}
-ParameterSpec Integer(std::string name, double nominal, Domain valid, std::string description) {
-  ParameterSpec p = Scalar(std::move(name), {}, "1", nominal, valid, std::move(description));
-  p.kind = ParameterKind::kInteger;
-  return p;
-}
-ParameterSpec TableParameter(std::string name, std::string description) {
-  ParameterSpec p;
-  p.kind = ParameterKind::kTable;
-  p.name = name;
-  p.symbol = std::move(name);
-  p.unit = "SI";
-  p.description = std::move(description);
-  p.source = "Modelica Standard Library 4.0.0";
-  return p;
-}
-
-ComponentTypeSpec Type(std::string name, std::string description, std::vector<PortSpec> ports,
-                       std::vector<ParameterSpec> parameters) {
-  ComponentTypeSpec t;
-  t.display_name = name;
-  t.name = std::move(name);
-  t.description = std::move(description);
-  t.ports = std::move(ports);
-  t.parameters = std::move(parameters);
-  return t;
-}
+using namespace element_types;  // the builders of element_type_builders.h
 
 std::vector<ComponentTypeSpec> MakeElementTypes() {
   using namespace dimensions;
@@ -143,7 +68,7 @@ std::vector<ComponentTypeSpec> MakeElementTypes() {
     return Scalar("startTime", Time(), "s", 0.0, any, "output = offset for time < startTime");
   };
   auto offset = [&] { return Scalar("offset", Dimensionless(), "1", 0.0, any, "output offset"); };
-  auto output = [] { return Signal("y", "output signal"); };
+  auto output = [] { return SignalOutput("y", "output signal"); };
 
   std::vector<ComponentTypeSpec> t;
   // --- Mechanical components -------------------------------------------------------------
@@ -301,6 +226,10 @@ std::vector<ComponentTypeSpec> MakeElementTypes() {
   t.push_back(Type("Feedback", "y = u1 - u2",
                    {Signal("u1", "commanded input"), Signal("u2", "feedback input"), output()},
                    {}));
+  AppendBrakeTypes(t);
+  AppendGearTypes(t);
+  AppendDriveTypes(t);
+  AppendHydraulicTypes(t);
   return t;
 }
 

@@ -50,7 +50,7 @@ struct Eval {
   const double* y = nullptr;
   double* ydot = nullptr;  ///< may be null (output evaluation)
   std::vector<double> phi, w, acc, force;  ///< per node
-  std::vector<double> signal;              ///< per element (signal blocks' outputs)
+  std::vector<double> signal;              ///< per signal output slot (Element::signal_offset)
   std::vector<Constraint> constraints;
   int n_constraints = 0;  ///< used entries of `constraints`
 
@@ -87,6 +87,14 @@ class Element {
   /// Signal input ports.
   virtual std::vector<std::string> SignalInputs() const { return {}; }
   virtual bool IsSignalBlock() const { return false; }
+  /// Signal output ports. A signal block has the one output "y"; any element may declare
+  /// outputs that depend on time, node angles and speeds, its own states and its inputs
+  /// (a sensor, a limiter's lock-out indicator, a monitor's brake command).
+  virtual std::vector<std::string> SignalOutputs() const {
+    return IsSignalBlock() ? std::vector<std::string>{"y"} : std::vector<std::string>{};
+  }
+  /// First slot of this element's outputs in Eval::signal (-1 if it has none).
+  int signal_offset = -1;
   /// Called once ports are resolved: node index per flange, signal source element per input.
   virtual void Bind(const std::function<int(const std::string&)>& node_of,
                     const std::function<int(const std::string&)>& signal_of) {
@@ -127,6 +135,8 @@ class Element {
     (void)e;
     return 0.0;
   }
+  /// Values of the outputs of SignalOutputs(), in order; by default the one output Signal().
+  virtual void Signals(const Eval& e, double* out) const { out[0] = Signal(e); }
   virtual void Forces(Eval& e) { (void)e; }
   virtual void Constraints(Eval& e) { (void)e; }
   virtual void AfterSolve(Eval& e) { (void)e; }
@@ -187,5 +197,17 @@ class Element {
 
 /// Creates the element law for a network element (throws InputError for unsupported options).
 std::unique_ptr<Element> MakeElement(const NetworkElement& element);
+
+/// The laws of the HighLift library, by family; each returns nullptr for a type not its own.
+/// Brakes, limiters and friction (brake_elements.cc): StribeckFriction, LossyInertia,
+/// ShaftBrake, WingTipBrake, BrakeActuation, NonlinearSpring, TorqueLimiter.
+std::unique_ptr<Element> MakeBrakeElement(const NetworkElement& element);
+/// Gears and failures (gear_elements.cc): GearedRotaryActuator, BranchGearbox,
+/// GeneralRotationalElement, Disconnector, Jam.
+std::unique_ptr<Element> MakeGearElement(const NetworkElement& element);
+/// Drive and control (drive_elements.cc): PDU, Monitoring, Airload.
+std::unique_ptr<Element> MakeDriveElement(const NetworkElement& element);
+/// Hydraulics (hydraulic_elements.cc).
+std::unique_ptr<Element> MakeHydraulicElement(const NetworkElement& element);
 
 }  // namespace highlift::sim::detail

@@ -91,6 +91,19 @@ System::System(const Network& network) {
     element_index[ne.id] = el->index;
     elements_.push_back(std::move(el));
   }
+  // Signal output slots.
+  std::map<std::string, int> output_slot;  // "element.port" -> slot
+  std::vector<int> slot_owner;             // slot -> element
+  for (auto& el : elements_) {
+    const auto outputs = el->SignalOutputs();
+    if (outputs.empty()) continue;
+    el->signal_offset = static_cast<int>(slot_owner.size());
+    for (const auto& o : outputs) {
+      output_slot[el->id + "." + o] = static_cast<int>(slot_owner.size());
+      slot_owner.push_back(el->index);
+    }
+  }
+  n_signal_slots_ = static_cast<int>(slot_owner.size());
   // Flange ports and their union.
   std::map<std::string, int> port_index;
   std::vector<std::string> port_name;
@@ -124,15 +137,16 @@ System::System(const Network& network) {
                        "(y, u, tau, f_normalized, w_ref) to each other");
     const PortRef* out = nullptr;
     const PortRef* in = nullptr;
-    if (c.a.port == "y") out = &c.a, in = &c.b;
-    else if (c.b.port == "y") out = &c.b, in = &c.a;
-    if (out == nullptr || in->port == "y")
+    const bool a_out = output_slot.count(a) > 0, b_out = output_slot.count(b) > 0;
+    if (a_out && !b_out) out = &c.a, in = &c.b;
+    else if (b_out && !a_out) out = &c.b, in = &c.a;
+    if (out == nullptr)
       throw InputError("connection " + a + " - " + b +
-                       ": a signal connection joins one output 'y' to one input");
+                       ": a signal connection joins one output (such as 'y') to one input");
     const std::string key = in->ToString();
     if (signal_source.count(key))
       throw InputError("signal input '" + key + "' is connected twice; connect it to one output");
-    signal_source[key] = element_index.at(out->component);
+    signal_source[key] = output_slot.at(out->ToString());
   }
   // Nodes.
   std::map<int, int> root_to_node;
@@ -184,13 +198,13 @@ System::System(const Network& network) {
       state[i] = 1;
       for (const auto& in : elements_[i]->SignalInputs()) {
         auto it = signal_source.find(elements_[i]->id + "." + in);
-        if (it != signal_source.end()) visit(it->second);
+        if (it != signal_source.end()) visit(slot_owner[it->second]);
       }
       state[i] = 2;
-      if (elements_[i]->IsSignalBlock()) signal_order_.push_back(i);
+      if (elements_[i]->signal_offset >= 0) signal_order_.push_back(i);
     };
     for (std::size_t i = 0; i < elements_.size(); ++i)
-      if (elements_[i]->IsSignalBlock()) visit(static_cast<int>(i));
+      if (elements_[i]->signal_offset >= 0) visit(static_cast<int>(i));
   }
   // States: node angle and speed at first use, then the element's own states.
   auto assign_node = [&](int n) {
@@ -265,7 +279,7 @@ System::System(const Network& network) {
   eval_.w.assign(nodes_.size(), 0.0);
   eval_.acc.assign(nodes_.size(), 0.0);
   eval_.force.assign(nodes_.size(), 0.0);
-  eval_.signal.assign(elements_.size(), 0.0);
+  eval_.signal.assign(n_signal_slots_, 0.0);
   parent_.resize(nodes_.size());
   local_.assign(nodes_.size(), -1);
 }
@@ -332,7 +346,7 @@ std::vector<double> System::InitialState(double t0) {
 }
 
 void System::EvaluateSignals() {
-  for (int i : signal_order_) eval_.signal[i] = elements_[i]->Signal(eval_);
+  for (int i : signal_order_) elements_[i]->Signals(eval_, &eval_.signal[elements_[i]->signal_offset]);
 }
 
 bool System::Evaluate(double t, const double* y, double* ydot) {

@@ -59,6 +59,7 @@ class System {
   std::vector<std::unique_ptr<Element>> elements_;
   std::vector<Node> nodes_;
   std::vector<int> signal_order_;
+  int n_signal_slots_ = 0;
   int n_states_ = 0;
   int n_roots_ = 0;
   int bandwidth_ = 0;

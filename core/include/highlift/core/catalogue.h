@@ -24,6 +24,7 @@ struct PortSpec {
   PortKind kind = PortKind::kFlange;
   bool required = true;     ///< validation reports a required port left open
   std::string description;
+  bool output = false;      ///< a signal output (y, phi, w, ...); other signal ports are inputs
 };
 
 /// What a parameter holds. Scalars (the default) are quantities with a unit and an interval

@@ -1,0 +1,2 @@
+// Benchmarks of the drive-system scenarios (sim/src/drive_network.cc).
+#include <benchmark/benchmark.h>

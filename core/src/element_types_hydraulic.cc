@@ -1,0 +1,8 @@
+// Hydraulic components of the HighLift library, as element types.
+#include "element_type_builders.h"
+
+namespace highlift::element_types {
+
+void AppendHydraulicTypes(std::vector<ComponentTypeSpec>& types) { (void)types; }
+
+}  // namespace highlift::element_types

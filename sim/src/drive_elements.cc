@@ -1,0 +1,12 @@
+// The power drive unit, monitoring and airloads of the HighLift library.
+#include "model.h"
+#include "msl_elements.h"
+
+namespace highlift::sim::detail {
+
+std::unique_ptr<Element> MakeDriveElement(const NetworkElement& element) {
+  (void)element;
+  return nullptr;
+}
+
+}  // namespace highlift::sim::detail

@@ -1,0 +1,2 @@
+// Drive-system projects (catalogue components) as simulation models.
+#include "highlift/sim/drive_network.h"

@@ -1,0 +1,2 @@
+// HighLift gears and failure elements (sim/src/gear_elements.cc).
+#include <gtest/gtest.h>
