@@ -188,6 +188,24 @@ class Element {
     (void)e;
     (void)out;
   }
+  // --- energy (evaluated after a solve; the kinetic energy of node inertias is the system's) ---
+  /// Potential energy stored in the element's springs (J).
+  virtual double StoredEnergy(const Eval& e) const {
+    (void)e;
+    return 0.0;
+  }
+  /// Power dissipated by friction, damping, brakes and losses (W, >= 0).
+  virtual double LossPower(const Eval& e) const {
+    (void)e;
+    return 0.0;
+  }
+  /// Power the element puts into the network: motors, torque and speed sources, airloads (W;
+  /// negative when it absorbs, like a load or an eddy-current brake).
+  virtual double SourcePower(const Eval& e) const {
+    (void)e;
+    return 0.0;
+  }
+
   /// The element torque for the peak statistics (NaN if the element carries none).
   virtual double PeakTorque(const Eval& e) const {
     (void)e;

@@ -119,6 +119,20 @@ class Compliant : public TwoFlange {
   }
   /// The law: element torque from relative angle and speed.
   virtual double Tau(double phi_rel, double w_rel) const = 0;
+  /// The conservative part: potential energy and its derivative (the spring torque).
+  virtual double Potential(double phi_rel) const {
+    (void)phi_rel;
+    return 0.0;
+  }
+  virtual double SpringTorque(double phi_rel) const {
+    (void)phi_rel;
+    return 0.0;
+  }
+  double StoredEnergy(const Eval& e) const override { return Potential(PhiRel(e)); }
+  /// Power taken from the flanges, tau * w_rel, less the rate of the potential energy.
+  double LossPower(const Eval& e) const override {
+    return (tau - SpringTorque(PhiRel(e))) * WRel(e);
+  }
 
   int NumStates() const override { return 1; }
   std::vector<std::string> StateNames() const override { return {id + ".phi_rel"}; }
@@ -153,6 +167,10 @@ class Spring : public Compliant {
   explicit Spring(const NetworkElement& e)
       : Compliant(e), c(Param(e, "c")), phi_rel0(Param(e, "phi_rel0")) {}
   double Tau(double phi_rel, double) const override { return c * (phi_rel - phi_rel0); }
+  double Potential(double phi_rel) const override {
+    return 0.5 * c * (phi_rel - phi_rel0) * (phi_rel - phi_rel0);
+  }
+  double SpringTorque(double phi_rel) const override { return c * (phi_rel - phi_rel0); }
   double c, phi_rel0;
 };
 
@@ -170,6 +188,10 @@ class SpringDamper : public Compliant {
   double Tau(double phi_rel, double w_rel) const override {
     return c * (phi_rel - phi_rel0) + d * w_rel;
   }
+  double Potential(double phi_rel) const override {
+    return 0.5 * c * (phi_rel - phi_rel0) * (phi_rel - phi_rel0);
+  }
+  double SpringTorque(double phi_rel) const override { return c * (phi_rel - phi_rel0); }
   double c, d, phi_rel0;
 };
 
@@ -196,6 +218,18 @@ class ElastoBacklash : public Compliant {
     }
     return 0.0;
   }
+  /// Penetration beyond the free play (0 inside the gap).
+  double Penetration(double phi_rel) const {
+    const double delta = phi_rel - phi_rel0;
+    if (b_total <= 1e-10) return delta;
+    const double g = b_total / 2;
+    return delta > g ? delta - g : (delta < -g ? delta + g : 0.0);
+  }
+  double Potential(double phi_rel) const override {
+    const double x = Penetration(phi_rel);
+    return 0.5 * c * x * x;
+  }
+  double SpringTorque(double phi_rel) const override { return c * Penetration(phi_rel); }
   int NumRoots() const override { return b_total <= 1e-10 ? 0 : 2; }
   void Roots(const Eval& e, double* g) const override {
     const double delta = PhiRel(e) - phi_rel0;
@@ -434,6 +468,8 @@ class Friction : public Element {
 
   int OutputMode() const { return mode == kUnknown ? kStuck : mode; }
   double PeakTorque(const Eval&) const override { return tau; }
+  /// The friction torque acts -tau on p and +tau on m: it takes tau * w_f from the nodes.
+  double LossPower(const Eval& e) const override { return tau * WF(e); }
 
   double peak = 1.0;
   bool can_be_free = false;
@@ -781,6 +817,7 @@ class LossyGear : public GearBase {
   double PeakTorque(const Eval&) const override {
     return std::abs(ratio) >= 1 ? -ratio * (tau_a - tau_loss) : tau_a;
   }
+  double LossPower(const Eval& e) const override { return tau_loss * WA(e); }
 
   Table table;
   bool ideal = false;
@@ -819,6 +856,7 @@ class TorqueSource : public Element {
     out[1] = W(e);
   }
   double PeakTorque(const Eval&) const override { return tau; }
+  double SourcePower(const Eval& e) const override { return tau * W(e); }
   int n = -1, s = -1;
   mutable double tau = 0.0;
 };
@@ -954,6 +992,7 @@ class Speed : public Element {
     out[2] = e.signal[u];
   }
   double PeakTorque(const Eval&) const override { return tau; }
+  double SourcePower(const Eval& e) const override { return tau * (e.w[n] - e.w[s]); }
   double w_crit;
   double phi_start = NAN;
   int n = -1, s = -1, u = -1, constraint = -1;

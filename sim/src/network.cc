@@ -86,8 +86,18 @@ const NetworkElement* Network::Find(std::string_view id) const {
   return nullptr;
 }
 
+void Network::Adopt(const NetworkElement& element) {
+  if (Find(element.id) != nullptr)
+    throw InputError("element id '" + element.id + "' is used twice; give each element its own id");
+  elements_.push_back(element);
+}
+
+void Network::Adopt(const NetworkConnection& connection) {
+  Connect(connection.a.ToString(), connection.b.ToString());
+}
+
 PortRef Network::ParsePort(std::string_view text) const {
-  const auto dot = text.find('.');
+  const auto dot = text.rfind('.');
   if (dot == std::string_view::npos)
     throw InputError("port '" + std::string(text) + "' must be written 'element.port'");
   PortRef ref{std::string(text.substr(0, dot)), std::string(text.substr(dot + 1))};

@@ -40,6 +40,12 @@ std::string ToString(SimulationStatus status) {
   return "unknown";
 }
 
+double EnergyBalance::Scale() const {
+  return std::max({std::abs(source_work), std::abs(dissipated), impulsive_loss,
+                   std::abs(kinetic_end - kinetic_start), std::abs(potential_end - potential_start),
+                   std::abs(kinetic_start) + std::abs(potential_start)});
+}
+
 std::string SimulationReport::BriefReport() const {
   std::ostringstream s;
   s << ToString(status) << ": t = " << time << " s, " << statistics.steps << " steps, "
@@ -60,6 +66,12 @@ std::string SimulationReport::FullReport() const {
     s << "  event t = " << e.time << " (" << e.kind << ") " << e.element << " " << e.what << "\n";
   for (const auto& p : peak_torques)
     s << "  peak |tau| " << p.element << " = " << std::abs(p.tau) << " N*m at " << p.time << " s\n";
+  if (energy.computed)
+    s << "energy: source work " << energy.source_work << " J = kinetic "
+      << energy.kinetic_end - energy.kinetic_start << " J + potential "
+      << energy.potential_end - energy.potential_start << " J + dissipated " << energy.dissipated
+      << " J + impulsive " << energy.impulsive_loss << " J; residual " << energy.Residual()
+      << " J\n";
   if (!ok()) {
     s << "failure: " << message << "\n";
     if (!sundials_flag.empty()) s << "  flag " << sundials_flag << "\n";
@@ -199,8 +211,45 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
     sink.End();
     return report;
   };
+  const std::size_t n_element_outputs = sys.OutputNames().size();
+  std::vector<std::string> columns = sys.OutputNames();
+  if (options.energy) {
+    for (const char* name : {"energy.kinetic", "energy.potential", "energy.loss_power",
+                             "energy.source_power", "energy.impulsive_loss"})
+      columns.push_back(name);
+    out.resize(columns.size());
+    report.energy.computed = true;
+  }
+  bool first_row = true;
+  double last_t = options.start_time, last_loss = 0.0, last_source = 0.0, impulsive_base = 0.0;
   auto write_row = [&](double t) {
     sys.Outputs(out.data());
+    if (options.energy) {
+      const System::EnergyState s = sys.Energy();
+      double* x = out.data() + n_element_outputs;
+      x[0] = s.kinetic;
+      x[1] = s.potential;
+      x[2] = s.loss_power;
+      x[3] = s.source_power;
+      EnergyBalance& b = report.energy;
+      if (first_row) {
+        impulsive_base = sys.impulsive_loss();  // the initial projection precedes the balance
+        b.kinetic_start = s.kinetic;
+        b.potential_start = s.potential;
+      } else {
+        const double h = t - last_t;
+        b.dissipated += 0.5 * h * (s.loss_power + last_loss);
+        b.source_work += 0.5 * h * (s.source_power + last_source);
+      }
+      b.kinetic_end = s.kinetic;
+      b.potential_end = s.potential;
+      b.impulsive_loss = sys.impulsive_loss() - impulsive_base;
+      x[4] = b.impulsive_loss;
+      first_row = false;
+      last_t = t;
+      last_loss = s.loss_power;
+      last_source = s.source_power;
+    }
     sink.Row(t, out);
     sys.PeakTorques(tau);
     for (std::size_t i = 0; i < tau.size(); ++i) {
@@ -211,7 +260,7 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
     }
   };
 
-  sink.Begin(sys.OutputNames());
+  sink.Begin(columns);
   // Initial event: modes at t0, consistent speeds.
   {
     std::vector<std::string> changes, who;

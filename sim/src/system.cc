@@ -9,6 +9,7 @@
 
 #include <Eigen/Sparse>
 
+#include "composites.h"
 #include "highlift/core/error.h"
 
 namespace highlift::sim::detail {
@@ -82,7 +83,9 @@ Eigen::VectorXd MinimumNorm(const std::vector<Element::InitialEquation>& rows,
 
 }  // namespace
 
-System::System(const Network& network) {
+System::System(const Network& original) {
+  // Composite types become their parts.
+  const Network network = FlattenComposites(original);
   // Elements.
   std::map<std::string, int> element_index;
   for (const auto& ne : network.elements()) {
@@ -534,11 +537,27 @@ bool System::ProjectSpeeds(double* y) {
         K(local_[n], nn + j) += coef;
       }
   Eigen::VectorXd x = K.completeOrthogonalDecomposition().solve(b);
+  double kinetic_change = 0.0;
   for (int i = 0; i < nn; ++i) {
-    y[nodes_[node_list[i]].s_w] = x[i];
+    double& w = y[nodes_[node_list[i]].s_w];
+    kinetic_change += 0.5 * nodes_[node_list[i]].J * (w * w - x[i] * x[i]);
+    w = x[i];
     local_[node_list[i]] = -1;
   }
+  impulsive_loss_ += std::max(kinetic_change, 0.0);
   return true;
+}
+
+System::EnergyState System::Energy() const {
+  EnergyState s;
+  for (std::size_t n = 0; n < nodes_.size(); ++n)
+    s.kinetic += 0.5 * nodes_[n].J * eval_.w[n] * eval_.w[n];
+  for (const auto& el : elements_) {
+    s.potential += el->StoredEnergy(eval_);
+    s.loss_power += el->LossPower(eval_);
+    s.source_power += el->SourcePower(eval_);
+  }
+  return s;
 }
 
 void System::Roots(double* g) const {

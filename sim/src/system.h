@@ -46,6 +46,17 @@ class System {
   /// Element torques of the last Evaluate (NaN for elements without one).
   void PeakTorques(std::vector<double>& tau) const;
 
+  /// Energy bookkeeping of the last Evaluate.
+  struct EnergyState {
+    double kinetic = 0.0;       ///< sum over nodes of J w^2 / 2, J
+    double potential = 0.0;     ///< sum of Element::StoredEnergy, J
+    double loss_power = 0.0;    ///< sum of Element::LossPower, W
+    double source_power = 0.0;  ///< sum of Element::SourcePower, W
+  };
+  EnergyState Energy() const;
+  /// Kinetic energy removed by the speed projections of all events so far (J, >= 0).
+  double impulsive_loss() const { return impulsive_loss_; }
+
   void set_segment_start(double t) { t_segment_ = t; }
   double segment_start() const { return t_segment_; }
   const std::string& error() const { return error_; }
@@ -67,6 +78,7 @@ class System {
   std::vector<std::string> output_names_;
   std::vector<int> output_offset_;
   double t_segment_ = 0.0;
+  double impulsive_loss_ = 0.0;
   Eval eval_;
   std::string error_, error_element_;
 

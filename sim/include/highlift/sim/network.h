@@ -50,6 +50,12 @@ class Network {
   /// ports and for connecting a flange to a signal port.
   void Connect(std::string_view a, std::string_view b);
 
+  /// Adds an element of another network as it is (already validated, defaults filled in).
+  /// Throws InputError for a duplicate id.
+  void Adopt(const NetworkElement& element);
+  /// Adds a connection of another network as it is (both ports must exist here).
+  void Adopt(const NetworkConnection& connection);
+
   const std::vector<NetworkElement>& elements() const { return elements_; }
   const std::vector<NetworkConnection>& connections() const { return connections_; }
   const NetworkElement* Find(std::string_view id) const;

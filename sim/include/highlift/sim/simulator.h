@@ -39,6 +39,9 @@ struct SimulationOptions {
   /// "auto": dense for small networks, banded (difference-quotient Jacobian on the detected
   /// band) for large chains; "dense" or "band" to force one.
   std::string linear_solver = "auto";
+  /// Adds the energy columns energy.kinetic, energy.potential (J), energy.loss_power,
+  /// energy.source_power (W) and energy.impulsive_loss (J) and fills SimulationReport::energy.
+  bool energy = false;
 
   /// Throws InputError naming the option when a value is invalid.
   void Validate() const;
@@ -112,6 +115,25 @@ struct SolverStatistics {
   std::string linear_solver;  ///< "dense" or "band(mu,ml)"
 };
 
+/// The energy balance of a run (SimulationOptions::energy), integrated by the trapezoidal rule
+/// over the output rows: source work = change of kinetic and potential energy + dissipated work
+/// + kinetic energy removed by speed projections at events.
+struct EnergyBalance {
+  bool computed = false;
+  double source_work = 0.0;     ///< integral of the power of sources and loads, J
+  double dissipated = 0.0;      ///< integral of the loss power, J
+  double impulsive_loss = 0.0;  ///< removed by speed projections at events, J
+  double kinetic_start = 0.0, kinetic_end = 0.0;      ///< J
+  double potential_start = 0.0, potential_end = 0.0;  ///< J
+  /// source_work - (stored change + dissipated + impulsive_loss), J.
+  double Residual() const {
+    return source_work - (kinetic_end - kinetic_start + potential_end - potential_start +
+                          dissipated + impulsive_loss);
+  }
+  /// The largest of the terms, for a relative tolerance.
+  double Scale() const;
+};
+
 /// Largest absolute torque seen in one element, and when.
 struct PeakTorque {
   std::string element;
@@ -132,6 +154,7 @@ struct SimulationReport {
   std::vector<SimulationEvent> events;
   SolverStatistics statistics;
   std::vector<PeakTorque> peak_torques;  ///< one per element that carries a torque
+  EnergyBalance energy;                  ///< when SimulationOptions::energy
   double wall_seconds = 0.0;
 
   bool ok() const { return status == SimulationStatus::kSuccess; }

@@ -1,0 +1,72 @@
+// Flattening of composite element types into their parts.
+#include "composites.h"
+
+#include "highlift/core/error.h"
+
+namespace highlift::sim::detail {
+namespace {
+
+constexpr int kMaxDepth = 8;
+
+std::optional<Composite> Expand(const NetworkElement& e) {
+  if (auto c = ExpandBrakeComposite(e)) return c;
+  if (auto c = ExpandGearComposite(e)) return c;
+  if (auto c = ExpandDriveComposite(e)) return c;
+  if (auto c = ExpandHydraulicComposite(e)) return c;
+  return std::nullopt;
+}
+
+Network FlattenOnce(const Network& network, bool& expanded) {
+  Network out;
+  std::map<std::string, std::vector<std::string>> alias;  // "composite.port" -> inner ports
+  for (const NetworkElement& e : network.elements()) {
+    std::optional<Composite> c = Expand(e);
+    if (!c) {
+      out.Adopt(e);
+      continue;
+    }
+    expanded = true;
+    for (const NetworkElement& part : c->inner.elements()) {
+      if (part.id != e.id && part.id.rfind(e.id + ".", 0) != 0)
+        throw InputError("element '" + e.id + "' (" + e.type + "): part '" + part.id +
+                         "' must be named '" + e.id + "' or '" + e.id + ".<part>'");
+      out.Adopt(part);
+    }
+    for (const NetworkConnection& k : c->inner.connections()) out.Adopt(k);
+    for (const auto& [port, inner] : c->ports) alias[e.id + "." + port] = inner;
+  }
+  if (!expanded) return network;
+  auto resolve = [&](const PortRef& p) -> std::vector<std::string> {
+    const std::string name = p.ToString();
+    const NetworkElement* owner = network.Find(p.component);
+    auto it = alias.find(name);
+    if (it != alias.end()) return it->second;
+    if (out.Find(p.component) == nullptr)
+      throw InputError("element '" + p.component + "' (" + (owner ? owner->type : "?") +
+                       "): port '" + p.port + "' is connected but the composite has no part for it");
+    return {name};
+  };
+  for (const NetworkConnection& k : network.connections()) {
+    const auto a = resolve(k.a), b = resolve(k.b);
+    // A signal input of a composite may feed several parts: connect each to the one source.
+    for (const auto& x : a)
+      for (const auto& y : b) out.Connect(x, y);
+  }
+  return out;
+}
+
+}  // namespace
+
+Network FlattenComposites(const Network& network) {
+  Network current = network;
+  for (int depth = 0; depth < kMaxDepth; ++depth) {
+    bool expanded = false;
+    Network next = FlattenOnce(current, expanded);
+    if (!expanded) return current;
+    current = std::move(next);
+  }
+  throw InputError("composite elements nest deeper than " + std::to_string(kMaxDepth) +
+                   " levels; a composite type probably contains itself");
+}
+
+}  // namespace highlift::sim::detail
