@@ -1,4 +1,5 @@
 // The power drive unit, monitoring and airloads of the HighLift library.
+#include "composites.h"
 #include "model.h"
 #include "msl_elements.h"
 
@@ -7,6 +8,11 @@ namespace highlift::sim::detail {
 std::unique_ptr<Element> MakeDriveElement(const NetworkElement& element) {
   (void)element;
   return nullptr;
+}
+
+std::optional<Composite> ExpandDriveComposite(const NetworkElement& element) {
+  (void)element;
+  return std::nullopt;
 }
 
 }  // namespace highlift::sim::detail
