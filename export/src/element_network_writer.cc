@@ -34,9 +34,13 @@ const std::map<std::string, std::string>& ClassOfElementType() {
     for (const char* c : {"Product", "Feedback", "Gain", "Add"})
       m[c] = std::string("Modelica.Blocks.Math.") + c;
     for (const char* c : {"ShaftBrake", "NonlinearSpring", "TorqueLimiter", "LossyInertia",
-                          "GeneralRotationalElement", "GearedRotaryActuator", "WingTipBrake",
-                          "Disconnector", "Jam"})
+                          "StribeckFriction", "GeneralRotationalElement", "GearedRotaryActuator",
+                          "BranchGearbox", "WingTipBrake", "Disconnector", "Jam"})
       m[c] = std::string("HighLift.Mechanical.") + c;
+    for (const char* c : {"BrakeActuation", "Monitoring"}) m[c] = std::string("HighLift.Control.") + c;
+    m["PDU"] = "HighLift.Drives.PDU";
+    m["CombiTimeTable"] = "Modelica.Blocks.Sources.CombiTimeTable";
+    m["CombiTable1Ds"] = "Modelica.Blocks.Tables.CombiTable1Ds";
     return m;
   }();
   return classes;
