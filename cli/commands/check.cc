@@ -1,7 +1,9 @@
 // `highlift check PROJECT.json [--json]`: interval constraint propagation over the project.
 // Prints every parameter (initial domain, final domain, narrowing, provenance), then either "all
 // requirements can be met" (exit 0) or the requirements that cannot be met together with the
-// chain of constraints through which the conflict arises (exit 1).
+// chain of constraints through which the conflict arises (exit 1). When the domains can meet the
+// requirements but the nominal design cannot, that is said too (with its explanation; exit 0:
+// the design space holds solutions).
 #include <cmath>
 #include <iostream>
 
@@ -49,8 +51,13 @@ class CheckCommand : public Command {
     icsp::PropagationOptions po;
     po.ratio = ratio_;
     const icsp::CheckResult r = icsp::CheckDriveSystem(net, po);
-    std::vector<std::string> violated;
-    for (int c : r.explanation.conflict) violated.push_back(net.network.constraint(icsp::ConstraintId{c}).info.label);
+    auto labels = [&](const icsp::Explanation& e) {
+      std::vector<std::string> out;
+      for (int c : e.conflict) out.push_back(net.network.constraint(icsp::ConstraintId{c}).info.label);
+      return out;
+    };
+    const std::vector<std::string> violated = labels(r.explanation);
+    const std::vector<std::string> nominal_violated = labels(r.nominal_explanation);
     if (options_.json) {
       nlohmann::json params = nlohmann::json::array();
       for (const auto& p : r.parameters) {
@@ -67,6 +74,14 @@ class CheckCommand : public Command {
                             {"requirements", net.requirement_constraints},
                             {"estimation", loaded.estimation_brief},
                             {"parameters", params}};
+      if (r.nominal_checked) {
+        nlohmann::json nominal = {{"all_requirements_met", r.nominal_feasible}};
+        if (!r.nominal_feasible) {
+          nominal["violated_requirements"] = nominal_violated;
+          nominal["explanation"] = r.nominal_explanation.text;
+        }
+        doc["nominal_design"] = nominal;
+      }
       if (!r.feasible) {
         doc["violated_requirements"] = violated;
         doc["physics_alone"] = r.explanation.physics_alone;
@@ -84,6 +99,14 @@ class CheckCommand : public Command {
                 << " requirements: " << r.report.BriefReport() << "\n\n";
       if (r.feasible) {
         std::cout << "all requirements can be met\n";
+        if (r.nominal_checked && !r.nominal_feasible) {
+          std::cout << "\nbut not by the nominal design (every parameter at its nominal value): requirements violated "
+                       "there: ";
+          for (std::size_t i = 0; i < nominal_violated.size(); ++i) std::cout << (i ? ", " : "") << nominal_violated[i];
+          std::cout << (nominal_violated.empty() ? "(none: the nominal component data alone conflict)" : "") << "\n"
+                    << "The domains above are narrowed to where the requirements hold; the nominal values lie outside.\n\n"
+                    << r.nominal_explanation.text;
+        }
       } else {
         std::cout << "requirements violated: ";
         for (std::size_t i = 0; i < violated.size(); ++i) std::cout << (i ? ", " : "") << violated[i];

@@ -32,7 +32,7 @@ nlohmann::json TypeJson(const ComponentTypeSpec& t) {
   nlohmann::json ports = nlohmann::json::array();
   for (const auto& port : t.ports)
     ports.push_back({{"name", port.name},
-                     {"kind", port.kind == PortKind::kFlange ? "flange" : "signal"},
+                     {"kind", PortKindName(port.kind)},
                      {"required", port.required},
                      {"description", port.description}});
   nlohmann::json parameters = nlohmann::json::array();

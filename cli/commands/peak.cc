@@ -1,16 +1,83 @@
-// `highlift peak PROJECT.json [--case NAME] [--json] [--no-intervals]`: single-DOF peak loads
-// (paper eq. 1) of every sizing case (jam at each actuator, wing-tip brake after the rupture of
-// each shaft segment) with tau_max, where it acts, interval enclosures and the parameters ranked
-// by their share of the width; and the worst case per component with its margin. Exit 0 when
-// every margin is >= 0, 1 otherwise, 2 on invalid input (an unknown --case lists the cases).
+// `highlift peak PROJECT.json [--case NAME] [--json] [--no-intervals] [--transient
+// [--elements N]]`: single-DOF peak loads (paper eq. 1) of every sizing case (jam at each
+// actuator, wing-tip brake after the rupture of each shaft segment) with tau_max, where it acts,
+// interval enclosures and the parameters ranked by their share of the width; and the worst case
+// per component with its margin. With --transient each case also runs as a full-resolution
+// simulation (sim/include/highlift/sim/drive_network.h) and the transient peak shaft torque on
+// the case's load path is printed beside the single-DOF estimate, with the ratio. Exit 0 when
+// every margin is >= 0 (and every simulation succeeded), 1 otherwise, 2 on invalid input (an
+// unknown --case lists the cases).
+#include <algorithm>
+#include <cmath>
 #include <iostream>
 
 #include "command.h"
+#include "highlift/core/error.h"
 #include "highlift/core/project_io.h"
+#include "highlift/core/text_table.h"
 #include "highlift/reduced_models/analyses.h"
+#include "highlift/sim/drive_network.h"
+#include "highlift/sim/simulator.h"
 
 namespace highlift::cli {
 namespace {
+
+constexpr double kPeakOutputInterval = 2e-4;  // s: output rows (the peaks are taken on them)
+
+/// Discards the rows: the peaks are in the report.
+class NullSink : public sim::OutputSink {
+ public:
+  void Begin(const std::vector<std::string>&) override {}
+  void Row(double, const std::vector<double>&) override {}
+};
+
+struct TransientPeak {
+  std::string name;       ///< the case
+  std::string kind;       ///< jam or rupture
+  std::string scenario;   ///< scenario simulated (the project's or made up)
+  double single_dof = 0;  ///< N*m at the shaft (reference) speed, tau_total nominal
+  double transient = 0;   ///< N*m at the shaft speed, largest on the load path
+  std::string at;         ///< component carrying it
+  double time = 0;        ///< s
+  bool ok = true;
+  std::string message;    ///< the simulation's failure
+  double wall_seconds = 0;
+  double Ratio() const { return single_dof > 0 ? transient / single_dof : NAN; }
+};
+
+TransientPeak RunCase(const Project& project, const reduced_models::PeakCase& pc, int elements) {
+  TransientPeak t;
+  t.name = pc.name;
+  t.kind = pc.kind;
+  t.single_dof = pc.tau_total.nominal;
+  const Scenario scenario = sim::SizingScenario(project, pc.kind, pc.component);
+  t.scenario = scenario.name;
+  sim::DriveNetworkOptions options;
+  options.shaft_elements = elements;
+  const sim::DriveModel model = sim::BuildDriveNetwork(project, &scenario, options);
+  sim::Simulator simulator(model.network);
+  sim::SimulationOptions run = model.Options(project);
+  run.output_interval = std::min(run.output_interval, kPeakOutputInterval);
+  NullSink sink;
+  const sim::SimulationReport report = simulator.Run(run, sink);
+  t.ok = report.ok();
+  t.message = report.message;
+  t.wall_seconds = report.wall_seconds;
+  // The largest shaft (or brake) torque on the load path, referred to the shaft speed.
+  for (const sim::PeakTorque& p : sim::ComponentPeakTorques(model, project, report)) {
+    const Component* c = project.FindComponent(p.element);
+    if (!c || (c->type != "torque_shaft" && c->type != "wing_tip_brake")) continue;
+    if (std::find(pc.load_path.begin(), pc.load_path.end(), p.element) == pc.load_path.end()) continue;
+    auto k = model.speed_factor.find(p.element);
+    const double at_shaft_speed = std::abs(p.tau) * (k == model.speed_factor.end() ? 1.0 : k->second);
+    if (at_shaft_speed > t.transient) {
+      t.transient = at_shaft_speed;
+      t.at = p.element;
+      t.time = p.time;
+    }
+  }
+  return t;
+}
 
 class PeakCommand : public Command {
  public:
@@ -18,27 +85,79 @@ class PeakCommand : public Command {
     options_.AddTo(app);
     app.add_option("--case", peak_.only_case, "only this sizing case (e.g. jam_l3, rupture_shaft_l2a)");
     app.add_flag("--no-intervals", no_intervals_, "point values only (no enclosures, no ranking)");
+    app.add_flag("--transient", transient_,
+                 "also simulate each case at full resolution and print the transient peak shaft torque "
+                 "beside the single-DOF estimate");
+    app.add_option("--elements", elements_,
+                   "with --transient: spring-dampers per torque shaft (default: the project's "
+                   "shaft_elements, at least 4)");
   }
   int Run() override {
     const Project project = LoadProject(options_.project);
+    if (elements_ != 0 && !transient_)
+      throw InputError("--elements sets the resolution of the transient simulations: give --transient as well");
+    if (elements_ < 0)
+      throw InputError("--elements " + std::to_string(elements_) + ": give 1 or more spring-dampers per shaft");
     peak_.intervals = !no_intervals_;
     peak_.rank = !no_intervals_;
     const reduced_models::PeakReport report = reduced_models::AnalysePeaks(project, peak_);
-    if (options_.json)
-      std::cout << report.ToJson().dump(2) << "\n";
-    else
-      std::cout << report.FullReport() << "\n" << report.BriefReport() << "\n";
-    return report.ok() ? kSuccess : kViolated;
+    std::vector<TransientPeak> transient;
+    bool all_ok = true;
+    if (transient_) {
+      if (!sim::IsDriveSystemProject(project))
+        throw InputError("--transient simulates the drive system of the project, which has no components: "
+                         "add \"components\" and \"connections\"");
+      for (const auto& pc : report.cases) {
+        transient.push_back(RunCase(project, pc, elements_));
+        all_ok = all_ok && transient.back().ok;
+      }
+    }
+    if (options_.json) {
+      nlohmann::json j = report.ToJson();
+      if (transient_) {
+        nlohmann::json cases = nlohmann::json::array();
+        for (const auto& t : transient) {
+          nlohmann::json c = {{"case", t.name},          {"kind", t.kind},
+                              {"scenario", t.scenario},  {"single_dof", t.single_dof},
+                              {"transient", t.transient}, {"at", t.at},
+                              {"time", t.time},          {"ok", t.ok},
+                              {"wall_seconds", t.wall_seconds}};
+          c["ratio"] = std::isfinite(t.Ratio()) ? nlohmann::json(t.Ratio()) : nlohmann::json(nullptr);
+          if (!t.ok) c["message"] = t.message;
+          cases.push_back(c);
+        }
+        j["transient"] = cases;
+      }
+      std::cout << j.dump(2) << "\n";
+    } else {
+      std::cout << report.FullReport() << "\n";
+      if (transient_) {
+        std::cout << "Transient peaks (full-resolution simulation) beside the single-DOF estimate, N*m at the "
+                     "shaft speed:\n";
+        TextTable table({"case", "single-DOF", "transient", "ratio", "at", "t [s]", "status"}, {1, 2, 3, 5});
+        for (const auto& t : transient)
+          table.AddRow({t.name, FormatNumber(t.single_dof, 4), FormatNumber(t.transient, 4),
+                        std::isfinite(t.Ratio()) ? FormatNumber(t.Ratio(), 3) : "-", t.at.empty() ? "-" : t.at,
+                        FormatNumber(t.time, 4), t.ok ? "ok" : "failed: " + t.message});
+        std::cout << table.ToString() << "\n";
+      }
+      std::cout << report.BriefReport() << "\n";
+    }
+    return report.ok() && all_ok ? kSuccess : kViolated;
   }
 
  private:
   CommonOptions options_;
   reduced_models::PeakOptions peak_;
   bool no_intervals_ = false;
+  bool transient_ = false;
+  int elements_ = 0;
 };
 
 }  // namespace
 
-HIGHLIFT_REGISTER_COMMAND(PeakCommand, "peak", "single-DOF peak loads of the jam and rupture sizing cases")
+HIGHLIFT_REGISTER_COMMAND(PeakCommand, "peak",
+                          "single-DOF peak loads of the jam and rupture sizing cases (--transient: beside "
+                          "full simulations)")
 
 }  // namespace highlift::cli

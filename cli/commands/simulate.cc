@@ -1,11 +1,15 @@
-// `highlift simulate PROJECT.json [--scenario NAME] [--out results.csv] [--signals a,b] [--json]`:
-// transient simulation of the project's element network (MSL 4.0.0 semantics, SUNDIALS CVODE).
-// The scenario gives the stop time; the settings give the relative tolerance and the output
-// interval. Results stream to the CSV file (`time` + instance-path columns). Exit 0 on success,
-// 1 when the integration failed (the report says when, where and why), 2 on invalid input.
+// `highlift simulate PROJECT.json [--scenario NAME] [--model full|reduced] [--elements N]
+// [--output results.csv] [--signals a,b] [--energy] [--json]`: transient simulation (MSL 4.0.0
+// semantics, SUNDIALS CVODE) of the project's element network or, for a drive-system project,
+// of the model built from its components (sim/include/highlift/sim/drive_network.h) with the
+// scenario's load case and failure. The scenario gives the stop time; the settings give the
+// relative tolerance and the output interval. Results stream to the CSV file (`time` +
+// instance-path columns named after the component ids). Exit 0 on success, 1 when the
+// integration failed (the report says when, where and why), 2 on invalid input.
 #include <unistd.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <sstream>
@@ -16,6 +20,7 @@
 #include "highlift/core/error.h"
 #include "highlift/core/project_io.h"
 #include "highlift/core/text_table.h"
+#include "highlift/sim/drive_network.h"
 #include "highlift/sim/simulator.h"
 
 namespace highlift::cli {
@@ -79,12 +84,23 @@ class SimulateCommand : public Command {
   void Setup(CLI::App& app) override {
     options_.AddTo(app);
     app.add_option("--scenario", scenario_, "Scenario to run (its stop_time); optional when the project has one");
-    app.add_option("--out", out_, "CSV file for the results (time + instance-path columns)");
+    app.add_option("--output,--out", out_, "CSV file for the results (time + instance-path columns)");
     app.add_option("--signals", signals_, "Comma-separated columns to write, e.g. clutch.w_rel,inertia3.phi");
+    app.add_option("--model", model_,
+                   "Drive-system projects: 'full' (every shaft split into elements, default) or 'reduced' "
+                   "(inertias lumped at gearboxes and stations)");
+    app.add_option("--elements", elements_,
+                   "Drive-system projects, full model: spring-dampers per torque shaft (default: the "
+                   "project's shaft_elements, at least 4)");
+    app.add_flag("--energy", energy_, "Energy bookkeeping: energy.* columns and the balance in the report");
   }
 
   int Run() override {
     const Project project = LoadProject(options_.project);
+    const bool drive = sim::IsDriveSystemProject(project);
+    if (!drive && (!model_.empty() || elements_ >= 0))
+      throw InputError("--model and --elements apply to drive-system projects (components and connections); "
+                       "this project is an element network: leave them out");
     const Scenario* scenario = nullptr;
     if (!scenario_.empty()) {
       scenario = project.FindScenario(scenario_);
@@ -97,18 +113,37 @@ class SimulateCommand : public Command {
     } else if (project.scenarios.size() == 1) {
       scenario = &project.scenarios.front();
     } else if (!project.scenarios.empty()) {
+      std::string names;
+      for (const auto& s : project.scenarios) names += (names.empty() ? "" : ", ") + s.name;
       throw InputError("the project has " + std::to_string(project.scenarios.size()) +
-                       " scenarios; choose one with --scenario NAME");
+                       " scenarios; choose one with --scenario NAME (" + names + ")");
     } else {
       throw InputError("the project has no scenario; add one with a stop_time (e.g. "
                        "{\"name\": \"run\", \"kind\": \"extension\", \"stop_time\": \"1 s\"})");
     }
-    const sim::Network network = sim::NetworkFromProject(project);
+    sim::DriveModel drive_model;
+    sim::Network network;
+    if (drive) {
+      sim::DriveNetworkOptions build;
+      if (!model_.empty()) build.resolution = sim::ParseDriveResolution(model_);
+      if (elements_ >= 0) {
+        if (elements_ < 1)
+          throw InputError("--elements " + std::to_string(elements_) +
+                           ": a shaft needs at least 1 spring-damper; give 1 or more (default: the project's "
+                           "shaft_elements, at least 4)");
+        build.shaft_elements = elements_;
+      }
+      drive_model = sim::BuildDriveNetwork(project, scenario, build);
+      network = drive_model.network;
+    } else {
+      network = sim::NetworkFromProject(project);
+    }
     sim::Simulator simulator(network);
     sim::SimulationOptions options;
     options.stop_time = scenario->stop_time;
     options.relative_tolerance = project.settings.relative_tolerance;
     options.output_interval = project.settings.output_interval;
+    options.energy = energy_;
     options.Validate();
 
     std::unique_ptr<sim::CsvSink> csv;
@@ -116,11 +151,13 @@ class SimulateCommand : public Command {
     else if (!signals_.empty())
       throw InputError("--signals selects CSV columns; give --out FILE as well");
     CountingSink sink(csv.get());
+    sim::DerivedColumnSink derived(drive_model.derived, sink);  // component columns (shaft_l1.tau)
     const std::size_t selected = SplitSignals(signals_).size();
     Progress progress;
     const bool terminal = isatty(fileno(stderr)) != 0;
-    const sim::SimulationReport report =
-        simulator.Run(options, sink, terminal ? DrawProgress : nullptr, &progress);
+    const sim::SimulationReport report = simulator.Run(options, derived, terminal ? DrawProgress : nullptr, &progress);
+    const std::vector<sim::PeakTorque> component_peaks =
+        drive ? sim::ComponentPeakTorques(drive_model, project, report) : std::vector<sim::PeakTorque>{};
     if (progress.drawn && !report.ok()) std::fprintf(stderr, "\n");
 
     if (options_.json) {
@@ -132,6 +169,24 @@ class SimulateCommand : public Command {
       j["message"] = report.message;
       j["time"] = report.time;
       j["stop_time"] = options.stop_time;
+      if (drive) {
+        j["model"] = {{"resolution", sim::ToString(drive_model.resolution)},
+                      {"shaft_elements", drive_model.shaft_elements},
+                      {"elements", drive_model.network.elements().size()},
+                      {"load_case", drive_model.load_case}};
+        nlohmann::json peaks = nlohmann::json::array();
+        for (const auto& p : component_peaks)
+          peaks.push_back({{"component", p.element}, {"tau", p.tau}, {"abs_tau", std::abs(p.tau)}, {"time", p.time}});
+        j["component_peaks"] = peaks;
+      }
+      if (report.energy.computed) {
+        const auto& e = report.energy;
+        j["energy"] = {{"source_work", e.source_work},         {"dissipated", e.dissipated},
+                       {"impulsive_loss", e.impulsive_loss},   {"kinetic_start", e.kinetic_start},
+                       {"kinetic_end", e.kinetic_end},         {"potential_start", e.potential_start},
+                       {"potential_end", e.potential_end},     {"residual", e.Residual()},
+                       {"scale", e.Scale()}};
+      }
       if (!report.ok()) {
         j["sundials_flag"] = report.sundials_flag;
         j["element"] = report.element;
@@ -172,8 +227,25 @@ class SimulateCommand : public Command {
         std::cout << "wrote " << sink.rows() << " rows x "
                   << (selected > 0 ? selected : sink.columns()) + 1 << " columns to "
                   << out_ << "\n";
-      TextTable table({"element", "peak |tau| [N*m]", "at t [s]"}, {1, 2});
-      for (const auto& p : report.peak_torques)
+      if (drive)
+        std::cout << sim::ToString(drive_model.resolution) << " model of " << project.components.size()
+                  << " components: " << drive_model.network.elements().size() << " elements"
+                  << (drive_model.resolution == sim::DriveResolution::kFull
+                          ? ", " + std::to_string(drive_model.shaft_elements) + " per shaft"
+                          : std::string())
+                  << "; scenario " << scenario->name
+                  << (drive_model.load_case.empty() ? std::string() : ", load case " + drive_model.load_case)
+                  << "\n";
+      if (report.energy.computed) {
+        const auto& e = report.energy;
+        std::cout << "energy: source work " << FormatNumber(e.source_work, 6) << " J = stored change "
+                  << FormatNumber(e.kinetic_end - e.kinetic_start + e.potential_end - e.potential_start, 6)
+                  << " J + dissipated " << FormatNumber(e.dissipated, 6) << " J + impulsive "
+                  << FormatNumber(e.impulsive_loss, 6) << " J; residual " << FormatNumber(e.Residual(), 3)
+                  << " J\n";
+      }
+      TextTable table({drive ? "component" : "element", "peak |tau| [N*m]", "at t [s]"}, {1, 2});
+      for (const auto& p : drive ? component_peaks : report.peak_torques)
         table.AddRow({p.element, FormatNumber(std::abs(p.tau), 5), FormatNumber(p.time, 5)});
       std::cout << table.ToString();
     }
@@ -189,11 +261,14 @@ class SimulateCommand : public Command {
   std::string scenario_;
   std::string out_;
   std::string signals_;
+  std::string model_;
+  int elements_ = -1;
+  bool energy_ = false;
 };
 
 }  // namespace
 
 HIGHLIFT_REGISTER_COMMAND(SimulateCommand, "simulate",
-                          "Simulate the project's element network (MSL semantics, SUNDIALS CVODE)")
+                          "Simulate the project's element network or drive system (MSL semantics, SUNDIALS CVODE)")
 
 }  // namespace highlift::cli

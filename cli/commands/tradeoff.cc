@@ -1,7 +1,8 @@
 // `highlift tradeoff PROJECT.json --vary NAME=LO:HI:N --show NAME[,NAME...] [--json]`: splits the
 // domain of one quantity into N slices, propagates each and prints how the shown domains respond
-// (the paper's trade-off study). A slice with no solution is marked infeasible. Values are in
-// the display unit of each quantity. Exit 0, or 2 on invalid input.
+// (the paper's trade-off study). A slice with no solution is marked infeasible, a slice that does
+// not meet the project's domain of NAME "outside the domain". Values are in the display unit of
+// each quantity. Exit 0, or 2 on invalid input.
 #include <cmath>
 #include <iostream>
 #include <sstream>
@@ -84,14 +85,15 @@ class TradeoffCommand : public Command {
       const double a = lo + (hi - lo) * k / n, b = lo + (hi - lo) * (k + 1) / n;
       icsp::Box box = net.InitialBox();
       box[varied.value] = icsp::Meet(box[varied.value], Interval(a * scale, b * scale));
-      const icsp::PropagationReport r = prop.Propagate(box);
-      const bool ok = r.status != icsp::Status::kInfeasible && !icsp::IsEmpty(box[varied.value]);
+      // A slice outside the project's domain of NAME is not a design that fails: say so.
+      const bool outside = icsp::IsEmpty(box[varied.value]);
+      const bool ok = !outside && prop.Propagate(box).status != icsp::Status::kInfeasible;
       std::vector<std::string> cells{"[" + FormatNumber(a, 5) + ", " + FormatNumber(b, 5) + "]"};
-      nlohmann::json row = {{"slice", {a, b}}, {"feasible", ok}};
+      nlohmann::json row = {{"slice", {a, b}}, {"feasible", ok}, {"outside_domain", outside}};
       for (const auto& v : shown) {
         const auto& u = net.variable(v).unit;
         if (!ok) {
-          cells.push_back("infeasible");
+          cells.push_back(outside ? "outside the domain" : "infeasible");
           row[net.variable(v).name] = nullptr;
           continue;
         }

@@ -291,6 +291,93 @@ ComponentTypeSpec Pdu() {
                    .Valid(0, 1000)
                    .Optional()
                    .Source("domain.md s1 (P-low): 207 bar (A320), 345 bar (A380)"));
+  // The hydraulic drive (drive = "hydraulic", sim/src/hydraulic_pdu.cc, docs/hydraulics.md):
+  // per motor a servo valve strokes a differential cylinder that sets the displacement of a
+  // variable-displacement motor on constant supply pressure (secondary control).
+  ps.push_back(Param::Text("drive", "'speed_controlled' (default: ideal speed-controlled motors) or "
+                                    "'hydraulic' (valve, cylinder and variable-displacement motors)")
+                   .Optional()
+                   .Source("domain.md s1 (P): A320 PCU has 2 hydraulic motors"));
+  ps.push_back(Param("return_pressure", "p_r", Pressure(), "bar", "hydraulic return pressure (hydraulic drive)")
+                   .Nominal(5)
+                   .Default(3, 8)
+                   .Valid(0, 1000)
+                   .Source("estimate: typical aircraft return line 3-8 bar"));
+  ps.push_back(Param("supply_line_area", "A_line", Area(), "mm^2",
+                     "orifice area equivalent to the supply line and filters (hydraulic drive)")
+                   .Nominal(30)
+                   .Default(20, 45)
+                   .Valid(0, 1e4)
+                   .Source("estimate: about 10 bar drop at the 52 L/min of two motors at full speed"));
+  ps.push_back(Param("supply_volume", "V_s", Volume(), "L", "compressible oil volume of the supply line (hydraulic drive)")
+                   .Nominal(0.5)
+                   .Default(0.2, 1.0)
+                   .Valid(1e-6, 1e3)
+                   .Source("estimate: a few metres of 12 mm line"));
+  ps.push_back(Efficiency("motor_mechanical_efficiency", "eta_m", 0.95, 0.92, 0.97,
+                          "mechanical (torque) efficiency of one hydraulic motor (hydraulic drive)",
+                          "estimate: axial-piston motors 0.92-0.97"));
+  ps.push_back(Param("motor_leakage", "G_leak", VolumeFlowRate() / Pressure(), "m^3/(s*Pa)",
+                     "leakage conductance of one motor (hydraulic drive)")
+                   .Nominal(3e-13)
+                   .Default(1e-13, 6e-13)
+                   .Valid(0, 1e-9)
+                   .Source("estimate: volumetric efficiency about 0.97 at full speed and 345 bar"));
+  ps.push_back(Param("valve_area", "A_max", Area(), "mm^2", "metering edge area of the displacement servo valve at full stroke")
+                   .Nominal(1)
+                   .Default(0.5, 2)
+                   .Valid(0, 1e3)
+                   .Source("estimate: strokes the displacement cylinder in about 15 ms"));
+  ps.push_back(Param("valve_time_constant", "T_v", Time(), "ms", "time constant of the servo valve spool")
+                   .Nominal(5)
+                   .Default(3, 10)
+                   .Valid(1e-3, 1e4)
+                   .Source("estimate: servo valves 3-10 ms"));
+  ps.push_back(Param("cylinder_area", "A_A", Area(), "mm^2", "piston area of the displacement cylinder")
+                   .Nominal(100)
+                   .Default(60, 150)
+                   .Valid(1e-3, 1e5)
+                   .Source("estimate: 11 mm bore"));
+  ps.push_back(Param("cylinder_annulus_area", "A_B", Area(), "mm^2", "annulus (rod side) area of the displacement cylinder")
+                   .Nominal(50)
+                   .Default(30, 75)
+                   .Valid(1e-3, 1e5)
+                   .Source("estimate: half the piston area"));
+  ps.push_back(Param("cylinder_stroke", "s_max", Length(), "mm", "stroke of the displacement cylinder (eps from -1 to 1)")
+                   .Nominal(20)
+                   .Default(15, 30)
+                   .Valid(1e-3, 1e4)
+                   .Source("estimate: swash-plate actuators 15-30 mm"));
+  ps.push_back(Param("cylinder_dead_volume", "V0", Volume(), "cm^3", "dead volume of each chamber of the displacement cylinder")
+                   .Nominal(1)
+                   .Default(0.5, 2)
+                   .Valid(1e-6, 1e6)
+                   .Source("estimate"));
+  ps.push_back(Param("cylinder_mass", "m_c", Mass(), "kg", "piston, rod and swash plate reflected to the rod")
+                   .Nominal(0.1)
+                   .Default(0.05, 0.2)
+                   .Valid(1e-6, 1e3)
+                   .Source("estimate"));
+  ps.push_back(Param("cylinder_damping", "d_c", Force() / (Length() / Time()), "N*s/m", "viscous friction of the displacement piston")
+                   .Nominal(1000)
+                   .Default(500, 2000)
+                   .Valid(0, 1e7)
+                   .Source("estimate: damping ratio about 0.5 with the oil stiffness"));
+  ps.push_back(Param("speed_gain", "k_w", Time(), "s/rad", "displacement command per motor speed error (speed loop)")
+                   .Nominal(5e-4)
+                   .Default(2.5e-4, 1e-3)
+                   .Valid(0, 1)
+                   .Source("estimate: speed loop about 40 rad/s with the PDU's own 0.26 kg m2 (the transmission is compliant)"));
+  ps.push_back(Param("speed_integral_time", "T_i", Time(), "s", "integral time of the speed loop")
+                   .Nominal(0.05)
+                   .Default(0.03, 0.1)
+                   .Valid(1e-4, 100)
+                   .Source("estimate: 2 x the speed-loop time constant"));
+  ps.push_back(Param("position_gain", "k_s", Dimensionless(), "1", "servo valve command per displacement error (position loop)")
+                   .Nominal(1.5)
+                   .Default(1, 2)
+                   .Valid(0, 100)
+                   .Source("estimate: position loop about 200 rad/s, at the valve's 200 rad/s"));
   ps.push_back(SpanPosition());
   return t;
 }
@@ -486,8 +573,8 @@ ComponentTypeSpec GearedRotaryActuator() {
   ps.push_back(Efficiency("eta_aiding", "eta_ai", 0.70, 0.60, 0.80, "efficiency with an aiding (back-driving) load",
                           "domain.md s3/s6 (E): 0.70 [0.60, 0.80]"));
   ps.push_back(Param("input_inertia", "J_in", dimensions::Inertia(), "kg*m^2", "inertia of the actuator referred to its input")
-                   .Nominal(1e-3)
-                   .Default(5e-4, 2e-3)
+                   .Nominal(5e-4)
+                   .Default(2.5e-4, 1e-3)
                    .Valid(0, 100)
                    .Source("domain.md s6 (E): input J about 1e-3 kg m2"));
   ps.push_back(Param("load_inertia", "J_load", dimensions::Inertia(), "kg*m^2", "flap inertia reflected to the actuator input")

@@ -75,7 +75,7 @@ std::string CatalogueMarkdown() {
     md += "**" + t.display_name + "**. " + Escape(t.description) + "\n\n";
     md += "| port | kind | required | meaning |\n|---|---|---|---|\n";
     for (const auto& p : t.ports)
-      md += "| " + Code(p.name) + " | " + (p.kind == PortKind::kFlange ? "flange" : "signal") + " | " +
+      md += "| " + Code(p.name) + " | " + PortKindName(p.kind) + " | " +
             (p.required ? "yes" : "no") + " | " + Escape(p.description) + " |\n";
     md += "\n";
     if (t.parameters.empty()) continue;

@@ -39,6 +39,11 @@ const std::map<std::string, std::string>& ClassOfElementType() {
       m[c] = std::string("HighLift.Mechanical.") + c;
     for (const char* c : {"BrakeActuation", "Monitoring"}) m[c] = std::string("HighLift.Control.") + c;
     m["PDU"] = "HighLift.Drives.PDU";
+    for (const char* c : {"PressureSource", "Tank", "TurbulentResistance", "ServoValve",
+                          "DifferentialCylinder", "VariableDisplacementMotor", "Volume",
+                          "MotorSpeedControl"})
+      m[c] = std::string("HighLift.Hydraulics.") + c;
+    m["Mass"] = "Modelica.Mechanics.Translational.Components.Mass";
     m["CombiTimeTable"] = "Modelica.Blocks.Sources.CombiTimeTable";
     m["CombiTable1Ds"] = "Modelica.Blocks.Tables.CombiTable1Ds";
     return m;

@@ -2,13 +2,21 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <limits>
+#include <numbers>
 #include <functional>
+#include <optional>
 #include <queue>
 #include <set>
 
 #include "highlift/core/catalogue.h"
 #include "highlift/core/units.h"
 #include "highlift/icsp/parser.h"
+#include "highlift/reduced_models/analyses.h"
+#include "highlift/reduced_models/lumped_model.h"
+#include "highlift/reduced_models/modal.h"
+#include "highlift/reduced_models/single_dof.h"
 
 namespace highlift::icsp {
 
@@ -24,6 +32,81 @@ double ToDisplay(double si, const std::string& unit) {
 
 namespace {
 
+/// First eigenfrequency [rad/s] of a lumped model with node `stop` clamped: the smallest w with
+/// K v = w^2 M v. The spring graph of a transmission is a tree, so K - lambda M factors leaf first
+/// without fill-in, and by Sylvester's law of inertia the number of negative pivots is the number
+/// of eigenvalues below lambda; bisection on that count brackets the first one to a relative
+/// 1e-13 in O(n) per step (the dense solver of reduced_models::ComputeModes is O(n^3)). Falls back
+/// to ComputeModes when the springs form a cycle. NaN when the model has no finite elastic first
+/// mode (a free node without inertia, or a part not held by the stop).
+double FirstOmega(const reduced_models::LumpedModel& m, int stop) {
+  const int n = static_cast<int>(m.nodes.size());
+  std::vector<double> K(n, 0.0), M(n, 0.0);
+  std::vector<std::vector<std::pair<int, double>>> adjacent(n);
+  for (const auto& s : m.springs) {
+    if (s.a >= 0) K[s.a] += s.c;
+    if (s.b >= 0) K[s.b] += s.c;
+    if (s.a >= 0 && s.b >= 0 && s.a != stop && s.b != stop) {
+      adjacent[s.a].push_back({s.b, s.c});
+      adjacent[s.b].push_back({s.a, s.c});
+    }
+  }
+  for (int i = 0; i < n; ++i) {
+    M[i] = m.nodes[i].J;
+    if (i != stop && !(M[i] > 0.0)) return std::numeric_limits<double>::quiet_NaN();
+  }
+  // Breadth-first order of every free tree; the pivots are taken in reverse (leaves first).
+  std::vector<int> order, parent(n, -2);
+  std::vector<double> parent_c(n, 0.0);
+  for (int r = 0; r < n; ++r) {
+    if (r == stop || parent[r] != -2) continue;
+    parent[r] = -1;
+    const std::size_t begin = order.size();
+    order.push_back(r);
+    for (std::size_t k = begin; k < order.size(); ++k) {
+      const int u = order[k];
+      for (const auto& [v, c] : adjacent[u]) {
+        if (v == parent[u]) continue;
+        if (parent[v] != -2) {  // a cycle: not a tree
+          reduced_models::ModalOptions modal;
+          modal.clamped = {stop};
+          modal.mode_shapes = 0;
+          const double w = reduced_models::ComputeModes(m, modal).FirstElasticOmega();
+          return w > 0.0 ? w : std::numeric_limits<double>::quiet_NaN();
+        }
+        parent[v] = u;
+        parent_c[v] = c;
+        order.push_back(v);
+      }
+    }
+  }
+  if (order.empty()) return std::numeric_limits<double>::quiet_NaN();
+  std::vector<double> d(n);
+  auto below = [&](double lambda) {  // number of eigenvalues below lambda
+    for (int u : order) d[u] = K[u] - lambda * M[u];
+    int negative = 0;
+    for (auto it = order.rbegin(); it != order.rend(); ++it) {
+      const int u = *it;
+      if (d[u] == 0.0) d[u] = -std::numeric_limits<double>::min();  // lambda is an eigenvalue: count it below
+      if (d[u] < 0.0) ++negative;
+      if (parent[u] >= 0) d[parent[u]] -= parent_c[u] * parent_c[u] / d[u];
+    }
+    return negative;
+  };
+  double scale = 0.0;  // Gershgorin bound of the largest eigenvalue of M^-1 K
+  for (int u : order) scale = std::max(scale, 2.0 * K[u] / M[u]);
+  if (!(scale > 0.0) || !std::isfinite(scale)) return std::numeric_limits<double>::quiet_NaN();
+  if (below(1e-12 * scale) > 0) return std::numeric_limits<double>::quiet_NaN();  // a rigid-body mode
+  double lo = 1e-12 * scale, hi = scale;
+  while (below(hi) == 0) hi *= 2.0;
+  while (hi - lo > 1e-13 * hi) {
+    const double mid = 0.5 * (lo + hi);
+    if (mid <= lo || mid >= hi) break;
+    (below(mid) > 0 ? hi : lo) = mid;
+  }
+  return std::sqrt(0.5 * (lo + hi));
+}
+
 class Builder {
  public:
   explicit Builder(const Project& p) : project_(p) {}
@@ -31,13 +114,21 @@ class Builder {
   DriveSystemNetwork Build() {
     AddParameters();
     BuildTree();
+    try {
+      peaks_ = reduced_models::DescribePeaks(project_);
+      for (std::size_t i = 0; i < peaks_->nodes.size(); ++i) node_index_[peaks_->nodes[i].id] = static_cast<int>(i);
+    } catch (const InputError& e) {
+      peaks_.reset();  // e.g. no load case: no sizing cases; a requirement that needs them says why
+      peaks_error_ = e.message();
+    }
     for (const Component& c : project_.components) {
       if (c.type == "torque_shaft") Shaft(c);
       else if (c.type == "geared_rotary_actuator") Actuator(c);
-      else if (c.type == "pdu") Pdu(c);
     }
+    Reflected();
     DriveTorques();
-    for (const Scenario& s : project_.scenarios) Peak(s);
+    TravelTimes();
+    Peaks();
     Requirements();
     return std::move(out_);
   }
@@ -69,7 +160,8 @@ class Builder {
         else if (spec && !(!std::isfinite(spec->default_domain.lo) && !std::isfinite(spec->default_domain.hi)))
           d = Interval(spec->default_domain.lo, spec->default_domain.hi);
         else d = Whole();
-        net().AddVariable(c.id + "." + name, d, spec ? spec->unit : "", ToString(p.provenance));
+        const VariableId v = net().AddVariable(c.id + "." + name, d, spec ? spec->unit : "", ToString(p.provenance));
+        if (p.nominal && std::isfinite(*p.nominal)) out_.nominal.push_back({v.value, *p.nominal});
       }
     }
   }
@@ -115,16 +207,6 @@ class Builder {
     }
     return out;
   }
-  /// Components from the PDU (excluded) out to `id` (included), inboard first.
-  std::vector<const Component*> PathFromPdu(const std::string& id) const {
-    std::vector<const Component*> path;
-    for (std::string u = id; !u.empty() && u != root_; u = parent_.at(u)) {
-      if (const Component* c = Find(u)) path.push_back(c);
-      if (!parent_.count(u)) break;
-    }
-    std::reverse(path.begin(), path.end());
-    return path;
-  }
   /// The branch gearbox feeding an actuator (nearest inboard one).
   const Component* BranchOf(const std::string& id) const {
     for (std::string u = id; parent_.count(u) && !parent_.at(u).empty(); u = parent_.at(u)) {
@@ -133,37 +215,78 @@ class Builder {
     }
     return nullptr;
   }
-  /// "rgb.ratio^2 * " for every angle gearbox inboard of `id`: compliance reflected to the PDU.
-  std::string Reflection(const std::string& id) const {
-    std::string r;
-    for (std::string u = id; parent_.count(u) && !parent_.at(u).empty(); u = parent_.at(u)) {
-      const Component* c = Find(parent_.at(u));
-      if (c && c->type == "angle_gearbox" && HasParam(*c, "ratio")) r += c->id + ".ratio^2 * ";
-    }
-    return r;
+  // ---------------------------------------------------------------------------------------------
+  // What the reduced models read of a component, as text over the network's variables.
+
+  /// A number as constraint text (round-trips exactly).
+  static std::string Num(double v) {
+    char buf[40];
+    std::snprintf(buf, sizeof buf, "%.17g", v);
+    return std::string("(") + buf + ")";
+  }
+  /// The parameter as reduced_models reads it: the component's own (a variable of the network),
+  /// else the catalogue default (a constant); empty when there is none.
+  std::string Value(const Component& c, const std::string& name) const {
+    if (HasParam(c, name)) return c.id + "." + name;
+    if (reduced_models::HasReducedModelValue(c, name)) return Num(reduced_models::ReducedModelValue(c, name));
+    return "";
+  }
+  bool HasValue(const Component& c, const std::string& name) const { return !Value(c, name).empty(); }
+  /// Value, or `otherwise` (a number) when the parameter has none.
+  std::string ValueOr(const Component& c, const std::string& name, double otherwise) const {
+    const std::string v = Value(c, name);
+    return v.empty() ? Num(otherwise) : v;
+  }
+  /// Like Value, but a nominal constant for parameters that only count things (motor_count, meshes).
+  double Count(const Component& c, const std::string& name, double otherwise) const {
+    return reduced_models::HasReducedModelValue(c, name) ? reduced_models::ReducedModelValue(c, name) : otherwise;
+  }
+  /// Variable `name` for the text `expression` ("name" itself when it already is a variable).
+  std::string VariableFor(const std::string& name, const std::string& unit, const std::string& expression,
+                          const std::string& description) {
+    if (Has(expression)) return expression;
+    Derived(name, unit, Whole());
+    Law(name, description, name + " == " + expression);
+    return name;
   }
 
   void Shaft(const Component& s) {
     const std::string p = s.id + ".";
-    for (const char* need : {"outer_diameter", "wall_thickness", "length"}) {
-      if (!HasParam(s, need)) return;
-    }
+    const bool tube = HasParam(s, "outer_diameter") && HasParam(s, "wall_thickness") && HasParam(s, "length");
     const std::string D = p + "outer_diameter", t = p + "wall_thickness", L = p + "length";
-    Derived(p + "polar_moment", "m^4");
-    Law(p + "polar_moment", "tube polar moment Ip = pi/32 (D^4 - d^4)",
-        p + "polar_moment == 0.098174770424681 * (" + D + "^4 - (" + D + " - 2 * " + t + ")^4)");
-    if (HasParam(s, "shear_modulus")) {
+    if (tube) {
+      Derived(p + "polar_moment", "m^4");
+      // pi/32 (D^4 - d^4) factored as pi/8 (D^2 + d^2)(D - t) t, as reduced_models writes it
+      // (every factor positive: tighter enclosures).
+      Law(p + "polar_moment", "tube polar moment Ip = pi/32 (D^4 - d^4) = pi/8 (D^2 + d^2)(D - t) t",
+          p + "polar_moment == 0.39269908169872414 * (" + D + "^2 + (" + D + " - 2 * " + t + ")^2) * (" + D + " - " +
+              t + ") * " + t);
+    }
+    // Stiffness and inertia as the reduced models take them: given values override the tube.
+    if (HasValue(s, "stiffness")) {
       Derived(p + "c", "N*m/rad");
-      Law(p + "c", "tube stiffness c = G Ip / L", p + "c == " + p + "shear_modulus * " + p + "polar_moment / " + L);
+      Law(p + "c", "segment stiffness, given", p + "c == " + Value(s, "stiffness"));
+    } else if (tube && HasValue(s, "shear_modulus")) {
+      Derived(p + "c", "N*m/rad");
+      Law(p + "c", "tube stiffness c = G Ip / L", p + "c == " + Value(s, "shear_modulus") + " * " + p + "polar_moment / " + L);
     }
-    if (HasParam(s, "density")) {
+    if (HasValue(s, "inertia")) {
       Derived(p + "J", "kg*m^2");
-      Law(p + "J", "tube inertia J = rho Ip L", p + "J == " + p + "density * " + p + "polar_moment * " + L);
-      Derived(p + "mass", "kg");
-      Law(p + "mass", "tube mass m = rho pi/4 (D^2 - d^2) L",
-          p + "mass == " + p + "density * 0.78539816339745 * (" + D + "^2 - (" + D + " - 2 * " + t + ")^2) * " + L);
+      Law(p + "J", "segment inertia, given", p + "J == " + Value(s, "inertia"));
+    } else if (tube && HasValue(s, "linear_density")) {
+      Derived(p + "J", "kg*m^2");
+      Law(p + "J", "thin tube inertia J = m' L r^2, r the mean radius",
+          p + "J == " + Value(s, "linear_density") + " * " + L + " * ((" + D + " - " + t + ") * 0.5)^2");
+    } else if (tube && HasValue(s, "density")) {
+      Derived(p + "J", "kg*m^2");
+      Law(p + "J", "tube inertia J = rho Ip L", p + "J == " + Value(s, "density") + " * " + p + "polar_moment * " + L);
     }
-    if (HasParam(s, "allowable_shear_stress")) {
+    if (tube && HasParam(s, "density")) {
+      Derived(p + "mass", "kg");
+      Law(p + "mass", "tube mass m = rho pi (D - t) t L",
+          p + "mass == " + p + "density * 3.141592653589793 * (" + D + " - " + t + ") * " + t + " * " + L);
+    }
+    if (tube && HasParam(s, "allowable_shear_stress")) {
       Derived(p + "torque_capacity", "N*m");
       Law(p + "torque_capacity", "torque at the allowable shear stress, tau_allow 2 Ip / D",
           p + "torque_capacity == " + p + "allowable_shear_stress * 2 * " + p + "polar_moment / " + D);
@@ -192,11 +315,6 @@ class Builder {
       Law(p + "input_torque_aiding", "actuator input torque with an aiding airload, T_out eta_aid / i",
           p + "input_torque_aiding == " + p + "max_load * " + p + "eta_aiding / " + p + "ratio");
     }
-    if (HasParam(g, "input_inertia") && HasParam(g, "load_inertia")) {
-      Derived(p + "reflected_inertia", "kg*m^2");
-      Law(p + "reflected_inertia", "actuator inertia at its input, J_in + J_load / i^2",
-          p + "reflected_inertia == " + p + "input_inertia + " + p + "load_inertia / " + p + "ratio^2");
-    }
     const Component* branch = BranchOf(g.id);
     if (branch && HasParam(*branch, "ratio") && Has(p + "input_torque_opposing")) {
       const std::string b = branch->id + ".";
@@ -205,26 +323,133 @@ class Builder {
       Law(b + "station_torque", "station input torque on the drive shaft, T_act / (i_branch eta)",
           b + "station_torque == " + p + "input_torque_opposing / (" + b + "ratio" + eta + ")");
       stations_.push_back({&g, branch});
-      if (!Has("travel_time.extension") && HasParam(g, "travel_angle") && Has(root_ + ".max_output_speed")) {
-        Derived("travel_time.extension", "s");
-        Law("travel_time.extension", "extension time at the PDU's maximum speed, phi_travel i_act i_branch / w_max",
-            "travel_time.extension == " + p + "travel_angle * " + p + "ratio * " + b + "ratio / " + root_ +
-                ".max_output_speed");
+    }
+  }
+
+  /// Travel time of every load case with a PDU speed profile, with the profile's ramps. The
+  /// profile is run at the PDU's maximum speed w (its speeds are fractions of its peak); its
+  /// ramps keep their durations and its slow phases (creep) keep their share of the travel and
+  /// their fraction of w; the phase at full speed takes the rest of the travel. Then
+  ///   T = sum_ramps dt (1 - (f_a + f_b)/2) + K Phi / w,  K = 1 - sum_slow s + sum_slow s / f
+  /// with Phi the travel at the PDU (travel angle x actuator ratio x the gear ratios inboard),
+  /// which reproduces the profile's own duration at its own travel and peak speed.
+  void TravelTimes() {
+    if (stations_.empty() || root_.empty() || !Has(root_ + ".max_output_speed")) return;
+    const Component& g = *stations_.front().first;
+    if (!HasParam(g, "travel_angle")) return;
+    std::string travel = g.id + ".travel_angle * " + g.id + ".ratio" + GearProduct(g.id);
+    std::vector<std::string> extend;
+    for (const LoadCase& lc : project_.load_cases) {
+      const std::string name = "travel_time." + lc.name;
+      if (!lc.pdu_speed || lc.pdu_speed->y.size() < 2 || lc.pdu_speed->abscissa != "time") continue;
+      const Table& w = *lc.pdu_speed;
+      double peak = 0.0;
+      for (double y : w.y) peak = std::max(peak, std::fabs(y));
+      if (!(peak > 0.0)) continue;
+      double t_lost = 0.0, travel_profile = 0.0, slow_share = 0.0, slow_time_share = 0.0;
+      for (std::size_t k = 0; k + 1 < w.x.size(); ++k) travel_profile += 0.5 * (std::fabs(w.y[k]) + std::fabs(w.y[k + 1])) * (w.x[k + 1] - w.x[k]);
+      for (std::size_t k = 0; k + 1 < w.x.size(); ++k) {
+        const double dt = w.x[k + 1] - w.x[k], fa = std::fabs(w.y[k]) / peak, fb = std::fabs(w.y[k + 1]) / peak;
+        if (fa == fb && fa == 1.0) continue;  // the hold at full speed
+        if (fa == fb && fa > 0.0) {           // a slow phase: its share of the travel at fa w
+          const double s = fa * peak * dt / travel_profile;
+          slow_share += s;
+          slow_time_share += s / fa;
+          continue;
+        }
+        t_lost += dt * (1.0 - 0.5 * (fa + fb));  // a ramp (or a standstill)
+      }
+      const double K = 1.0 - slow_share + slow_time_share;
+      Derived(name, "s");
+      Law(name, "travel time of '" + lc.name + "' with the ramps of its speed profile, T = t_ramps + K Phi / w",
+          name + " == " + Num(t_lost) + " + " + Num(K) + " * " + travel + " / " + OperatingSpeed());
+      if (lc.direction == "extend") extend.push_back(name);
+    }
+    if (extend.empty()) {
+      Derived("travel_time.extension", "s");
+      Law("travel_time.extension", "extension time at the PDU's maximum speed, Phi / w",
+          "travel_time.extension == " + travel + " / " + root_ + ".max_output_speed");
+      return;
+    }
+    std::string longest = extend.front();
+    for (std::size_t k = 1; k < extend.size(); ++k) longest = "max(" + longest + ", " + extend[k] + ")";
+    Derived("travel_time.extension", "s");
+    Law("travel_time.extension", "extension time, the longest extending load case", "travel_time.extension == " + longest);
+  }
+
+  /// " * r1.ratio * r2.ratio" for the gear stages between the PDU and `id` (speed reduction).
+  std::string GearProduct(const std::string& id) const {
+    std::string r;
+    if (!peaks_) return r;
+    const auto it = node_index_.find(id);
+    if (it == node_index_.end()) return r;
+    for (int k = it->second; k >= 0; k = peaks_->nodes[k].parent) {
+      const std::string& gear = peaks_->nodes[k].gear;
+      if (!gear.empty()) {
+        const Component* gb = Find(gear);
+        if (gb && HasValue(*gb, "ratio")) r += " * " + Value(*gb, "ratio");
+      }
+    }
+    return r;
+  }
+
+  /// The PDU speed the load cases run at (rad/s): the PDU's maximum speed scaled by the load
+  /// cases' peak over its nominal value (1 when the profile is written for the nominal speed).
+  std::string OperatingSpeed() {
+    const std::string name = root_ + ".operating_speed";
+    if (Has(name)) return name;
+    const Component& pdu = *Find(root_);
+    double factor = 1.0;
+    if (peaks_ && reduced_models::HasReducedModelValue(pdu, "max_output_speed")) {
+      const double nominal = reduced_models::ReducedModelValue(pdu, "max_output_speed");
+      if (nominal > 0.0 && peaks_->w_operating > 0.0) factor = peaks_->w_operating / nominal;
+    }
+    Derived(name, "rad/s");
+    Law(name, "speed of the load cases, the PDU's maximum speed x their peak / its nominal value",
+        name + " == " + Num(factor) + " * " + root_ + ".max_output_speed");
+    return name;
+  }
+
+  /// The inertia and stiffness of every component reflected to the PDU speed (x (w / w_pdu)^2),
+  /// by the laws of reduced_models (graph_model.h): PDU n J_motor i^2 + J_gear, actuators
+  /// J_in + J_load, shaft segments c and J, limiters their normal-operation stiffness c1, others
+  /// their given inertia and stiffness.
+  void Reflected() {
+    if (!peaks_) return;
+    for (std::size_t i = 0; i < peaks_->nodes.size(); ++i) {
+      const auto& node = peaks_->nodes[i];
+      const Component& c = *Find(node.id);
+      const std::string p = c.id + ".";
+      const std::string reflect = " / (1" + GearProduct(c.id) + ")^2";
+      std::string J, k;
+      if (c.type == "torque_shaft") {
+        if (Has(p + "c")) k = p + "c";
+        if (Has(p + "J")) J = p + "J";
+      } else if (c.type == "pdu") {
+        if (HasValue(c, "motor_inertia") && HasValue(c, "ratio") && HasValue(c, "gear_inertia"))
+          J = Value(c, "motor_inertia") + " * " + Num(Count(c, "motor_count", 1.0)) + " * " + Value(c, "ratio") + "^2 + " +
+              Value(c, "gear_inertia");
+      } else if (c.type == "geared_rotary_actuator") {
+        if (HasValue(c, "input_inertia") && HasValue(c, "load_inertia")) J = Value(c, "input_inertia") + " + " + Value(c, "load_inertia");
+      } else if (c.type == "ballscrew_actuator") {
+        J = Value(c, "input_inertia");
+      } else if (c.type != "disconnector" && c.type != "jam") {
+        J = Value(c, "inertia");
+      }
+      if (c.type == "system_torque_limiter" || c.type == "station_torque_limiter") k = Value(c, "stiffness_normal");
+      else if (c.type != "torque_shaft" && c.type != "jam") k = Value(c, "stiffness");
+      if (!J.empty()) {
+        Derived(p + "reflected_inertia", "kg*m^2");
+        Law(p + "reflected_inertia", "inertia of " + c.id + " at the PDU speed, J (w / w_pdu)^2",
+            p + "reflected_inertia == (" + J + ")" + reflect);
+      }
+      if (!k.empty()) {
+        Derived(p + "reflected_stiffness", "N*m/rad");
+        Law(p + "reflected_stiffness", "stiffness of " + c.id + " at the PDU speed, c (w / w_pdu)^2",
+            p + "reflected_stiffness == (" + k + ")" + reflect);
       }
     }
   }
-
-  void Pdu(const Component& c) {
-    const std::string p = c.id + ".";
-    if (HasParam(c, "motor_inertia") && HasParam(c, "ratio")) {
-      const std::string count = HasParam(c, "motor_count") ? p + "motor_count * " : "";
-      const std::string gear = HasParam(c, "gear_inertia") ? " + " + p + "gear_inertia" : "";
-      Derived(p + "reflected_inertia", "kg*m^2");
-      Law(p + "reflected_inertia", "PDU inertia at its output, n J_motor i^2 + J_gear",
-          p + "reflected_inertia == " + count + p + "motor_inertia * " + p + "ratio^2" + gear);
-    }
-  }
-
   /// Torque of the stations outboard of `id` summed, as text ("0" when none).
   std::string StationSum(const std::string& id) const {
     std::string sum;
@@ -304,83 +529,302 @@ class Builder {
     }
   }
 
-  /// Series stiffness and inertia of a load path; peak torque by the paper's equation (1).
-  void Peak(const Scenario& s) {
-    std::vector<const Component*> path;  // components the peak passes through
-    std::string speed;
-    std::vector<std::string> inertia_terms;
-    if (s.kind == "jam" && s.jam_component && parent_.count(*s.jam_component)) {
-      path = PathFromPdu(*s.jam_component);
-      if (Has(root_ + ".max_output_speed")) speed = root_ + ".max_output_speed";
-      if (Has(root_ + ".reflected_inertia")) inertia_terms.push_back(root_ + ".reflected_inertia");
-    } else if (s.kind == "rupture" && s.rupture_component && parent_.count(*s.rupture_component)) {
-      // The outboard part, back-driven by the airload, is stopped by the wing-tip brake.
-      const auto outboard = Subtree(*s.rupture_component);
-      const Component* wtb = nullptr;
-      const Component* sensor = nullptr;
-      for (const Component* c : outboard) {
-        if (c->type == "wing_tip_brake") wtb = c;
-        if (c->type == "position_sensor" && HasParam(*c, "overspeed_factor")) sensor = c;
+  /// The sizing cases of reduced_models (the jams and ruptures of `highlift peak`) that a scenario
+  /// of the project names or a requirement mentions ("peak.<case>."), with the same physics:
+  ///   w1 = first eigenfrequency of the part in focus with the stop clamped (a monotone black box
+  ///        over the reflected stiffnesses, rising, and inertias, falling: reduced_models'
+  ///        lumped model and modal analysis evaluated at the corners),
+  ///   J* = its inertia without the stop, c* = J* w1^2, tau = w sqrt(c* J*) = w w1 J*  (eq. 1),
+  ///   w  = the operating speed (jam) or the back-driven spin-up after a rupture until the brake
+  ///        engages (reduced_models::ComputeRuptureSpeed, a monotone black box),
+  /// plus the static part (jam: PDU stall torque capped by the system torque limiters; rupture:
+  /// the airload's back-drive torque) and the load each component on the path carries.
+  void Peaks() {
+    if (!peaks_) return;
+    std::set<std::string> wanted;
+    for (const Scenario& s : project_.scenarios) wanted.insert(s.name);
+    for (const reduced_models::PeakCaseStructure& pc : peaks_->cases) {
+      const std::string key = "peak." + pc.name + ".";
+      for (const Requirement& r : project_.requirements)
+        if (r.expression.find(key) != std::string::npos) wanted.insert(pc.name);
+    }
+    for (const reduced_models::PeakCaseStructure& pc : peaks_->cases) {
+      if (wanted.count(pc.name)) PeakCase(pc);
+    }
+  }
+
+  const Component& NodeComponent(int k) const { return *Find(peaks_->nodes[k].id); }
+  std::string NodeVar(int k, const char* what) const {
+    const std::string name = peaks_->nodes[k].id + "." + what;
+    return Has(name) ? name : std::string();
+  }
+  /// 1 / (product of the gear ratios inboard of node k) as text: w_k / w_pdu.
+  std::string SpeedRatio(int k) const { return "(1 / (1" + GearProduct(peaks_->nodes[k].id) + "))"; }
+
+  void PeakCase(const reduced_models::PeakCaseStructure& pc) {
+    const std::string p = "peak." + pc.name + ".";
+    const int n_elements = peaks_->elements_per_segment;
+    // Arguments of the eigenvalue: reflected link stiffnesses (rising) and inertias (falling).
+    struct Arg { enum Kind { kPointJ, kLinkC, kLinkJ } kind; int index; };
+    std::vector<Arg> args;
+    std::vector<VariableId> vars;
+    std::vector<Monotonicity> mono;
+    std::string inertia;  // J*
+    for (int k : pc.part) {
+      const bool shaft = peaks_->nodes[k].type == "torque_shaft";
+      const std::string J = NodeVar(k, "reflected_inertia"), c = NodeVar(k, "reflected_stiffness");
+      const int link = pc.link_of_node[k], point = pc.point_of_node[k];
+      if (link >= 0 && !c.empty()) {
+        args.push_back({Arg::kLinkC, link});
+        vars.push_back(net().FindVariable(c));
+        mono.push_back(Monotonicity::kIncreasing);
       }
-      if (!wtb) return;
-      const auto to_wtb = PathFromPdu(wtb->id);
-      bool inside = false;
-      for (const Component* c : to_wtb) {
-        if (c->id == *s.rupture_component) {
-          inside = true;
-          continue;  // the ruptured shaft carries nothing
-        }
-        if (inside) path.push_back(c);
+      if (J.empty()) continue;
+      if (shaft && link >= 0) {
+        args.push_back({Arg::kLinkJ, link});
+        vars.push_back(net().FindVariable(J));
+        mono.push_back(Monotonicity::kDecreasing);
+        // A link's distributed inertia goes J/(2n) to each end: the end at the stop is clamped.
+        const auto& l = pc.transmission.links[link];
+        const int ends_at_stop = (l.a == pc.stop_point) + (l.b == pc.stop_point);
+        inertia += (inertia.empty() ? "" : " + ") +
+                   (ends_at_stop ? Num(1.0 - ends_at_stop / (2.0 * n_elements)) + " * " : std::string()) + J;
+      } else if (!shaft && point >= 0 && point != pc.stop_point) {
+        args.push_back({Arg::kPointJ, point});
+        vars.push_back(net().FindVariable(J));
+        mono.push_back(Monotonicity::kDecreasing);
+        inertia += (inertia.empty() ? "" : " + ") + J;
       }
-      for (const Component* c : outboard) {
-        if (c->type == "geared_rotary_actuator" && Has(c->id + ".reflected_inertia")) {
-          const Component* b = BranchOf(c->id);
-          inertia_terms.push_back(c->id + ".reflected_inertia" + (b && HasParam(*b, "ratio") ? " / " + b->id + ".ratio^2" : ""));
-        }
+    }
+    if (args.empty() || inertia.empty()) return;
+    const reduced_models::Transmission base = pc.transmission;
+    const int stop = pc.stop_point;
+    MonotoneFunction first_mode;
+    first_mode.f = [base, stop, args, n_elements](std::span<const double> x) {
+      reduced_models::Transmission t = base;
+      for (auto& point : t.points) point.J = 0.0;
+      for (auto& link : t.links) link.J = 0.0;
+      for (std::size_t i = 0; i < args.size(); ++i) {
+        if (!(x[i] >= 0.0)) return std::numeric_limits<double>::quiet_NaN();
+        if (args[i].kind == Arg::kPointJ) t.points[args[i].index].J += x[i];
+        else if (args[i].kind == Arg::kLinkC) t.links[args[i].index].c = x[i];
+        else t.links[args[i].index].J = x[i];
       }
-      if (Has(root_ + ".max_output_speed")) {
-        speed = (sensor ? sensor->id + ".overspeed_factor * " : std::string()) + root_ + ".max_output_speed";
+      // Degenerate corners (a zero stiffness or a free node without inertia) have no finite
+      // eigenfrequency: NaN widens the enclosure to the whole line.
+      try {
+        const reduced_models::LumpedModel m =
+            reduced_models::BuildLumpedModel(t, reduced_models::Reduction::kFullResolution, n_elements);
+        return FirstOmega(m, m.NodeOfPoint(stop));
+      } catch (const std::exception&) {
+        return std::numeric_limits<double>::quiet_NaN();
+      }
+    };
+    first_mode.monotonicity = mono;
+    first_mode.relative_error = 1e-9;  // eigenvalue round-off, as reduced_models' enclosures
+    first_mode.bisection_steps = 30;
+    Derived(p + "omega", "rad/s");
+    net().AddMonotone(net().FindVariable(p + "omega"), vars, std::move(first_mode),
+                      {p + "omega", "first eigenfrequency w1 of '" + pc.name + "' with " + pc.acts_at +
+                                        " clamped (reduced_models lumped model, monotone in every c and J)",
+                       ConstraintRole::kPhysics});
+    ++out_.physics_constraints;
+    Derived(p + "inertia", "kg*m^2");
+    Law(p + "inertia", "inertia J* of the moving part without the stop", p + "inertia == " + inertia);
+    Derived(p + "stiffness", "N*m/rad");
+    Law(p + "stiffness", "stiffness c* = J* w1^2 of the single-DOF oscillator", p + "stiffness == " + p + "inertia * " + p + "omega^2");
+
+    // Speed at the stop and static torque.
+    std::string static_torque;
+    const Component& pdu = *Find(root_);
+    if (pc.kind == "jam") {
+      if (!Has(root_ + ".max_output_speed")) return;
+      Derived(p + "speed", "rad/s");
+      Law(p + "speed", "drive speed at the jam, the operating speed", p + "speed == " + OperatingSpeed());
+      static_torque = HasValue(pdu, "stall_torque") ? Value(pdu, "stall_torque") : "0";
+      for (const std::string& id : pc.load_path) {
+        const Component& c = *Find(id);
+        if (c.type == "system_torque_limiter" && HasValue(c, "lockout_torque_extend"))
+          static_torque = "min(" + static_torque + ", " + Value(c, "lockout_torque_extend") + " * " +
+                          SpeedRatio(node_index_.at(id)) + ")";
       }
     } else {
-      return;
+      if (!RuptureSpeed(pc, p)) return;
+      static_torque = p + "backdrive_torque";
     }
-    std::string compliance;
-    for (const Component* c : path) {
-      if (c->type == "torque_shaft" && Has(c->id + ".c")) {
-        compliance += (compliance.empty() ? "" : " + ") + Reflection(c->id) + "1 / " + c->id + ".c";
-        if (Has(c->id + ".J")) inertia_terms.push_back(c->id + ".J");
-      }
-    }
-    if (compliance.empty() || speed.empty() || inertia_terms.empty()) return;
-    const std::string p = "peak." + s.name + ".";
-    Derived(p + "stiffness", "N*m/rad");
-    Law(p + "stiffness", "series stiffness c* of the shafts on the load path",
-        p + "stiffness == 1 / (" + compliance + ")");
-    std::string inertia;
-    for (const auto& t : inertia_terms) inertia += (inertia.empty() ? "" : " + ") + t;
-    Derived(p + "inertia", "kg*m^2");
-    Law(p + "inertia", "inertia J* the stop absorbs", p + "inertia == " + inertia);
-    Derived(p + "speed", "rad/s");
-    Law(p + "speed", "drive speed before the stop", p + "speed == " + speed);
     Derived(p + "torque", "N*m");
-    Law(p + "torque", "single-DOF peak load, paper equation (1): tau = w sqrt(c* J*)",
-        p + "torque == " + p + "speed * sqrt(" + p + "stiffness * " + p + "inertia)");
-    std::vector<const Component*> named = path;
-    if (s.kind == "rupture") {
-      for (const Component* c : Subtree(*s.rupture_component)) {
-        if (c->type == "wing_tip_brake") named.push_back(c);
+    Law(p + "torque", "single-DOF peak load, paper equation (1): tau = w sqrt(c* J*) = w w1 J*",
+        p + "torque == " + p + "speed * " + p + "omega * " + p + "inertia");
+    Derived(p + "static_torque", "N*m", Whole());
+    Law(p + "static_torque",
+        pc.kind == "jam" ? "static part of the jam: PDU stall torque capped by the system torque limiters"
+                         : "static part after the rupture: the airload's back-drive torque",
+        p + "static_torque == " + static_torque);
+    Derived(p + "total_torque", "N*m", Whole());
+    Law(p + "total_torque", "peak load of '" + pc.name + "', dynamic plus static",
+        p + "total_torque == " + p + "torque + " + p + "static_torque");
+    // The load of each component on the path (at the PDU speed); in a jam, what lies behind a
+    // station torque limiter sees at most its end-stop torque.
+    std::string cap;
+    for (auto id = pc.load_path.rbegin(); id != pc.load_path.rend(); ++id) {
+      const Component& c = *Find(*id);
+      Derived(p + c.id, "N*m", Whole());
+      Law(p + c.id, "peak load of '" + pc.name + "' at " + c.id,
+          p + c.id + " == " + (cap.empty() ? p + "total_torque" : "min(" + p + "total_torque, " + cap + ")"));
+      if (pc.kind == "jam" && c.type == "station_torque_limiter" && HasValue(c, "end_stop_torque")) {
+        const std::string end_stop = Value(c, "end_stop_torque") + " * " + SpeedRatio(node_index_.at(c.id));
+        cap = cap.empty() ? end_stop : "min(" + cap + ", " + end_stop + ")";
       }
     }
-    for (const Component* c : named) {
-      Derived(p + c->id, "N*m");
-      Law(p + c->id, "peak load of '" + s.name + "' at " + c->id, p + c->id + " == " + p + "torque");
+  }
+
+  /// Back-drive torque (magnitude) at the input of node k from the aiding airloads, no friction:
+  /// gear stages pass tau eta_aiding / ratio (reduced_models' torque flow). Empty when none.
+  std::string Backdrive(int k) const {
+    const auto& node = peaks_->nodes[k];
+    const Component& c = NodeComponent(k);
+    if (c.type == "geared_rotary_actuator" || c.type == "ballscrew_actuator") {
+      const auto it = peaks_->aiding.find(c.id);
+      if (it == peaks_->aiding.end() || it->second == 0.0) return "";
+      return Num(-it->second) + " * " + ValueOr(c, "eta_aiding", 1.0) + " / " + ValueOr(c, "ratio", 1.0);
     }
+    std::string through, branch;
+    for (int child : node.children) {
+      const std::string t = Backdrive(child);
+      if (t.empty()) continue;
+      std::string& sum = (c.type == "branch_gearbox" && peaks_->nodes[child].gear == c.id) ? branch : through;
+      sum += (sum.empty() ? "" : " + ") + t;
+    }
+    const std::string eta = c.type == "angle_gearbox" || c.type == "branch_gearbox"
+                                ? ValueOr(c, "eta_mesh", 1.0) + "^" + std::to_string(static_cast<int>(Count(c, "meshes", 1.0)))
+                                : "";
+    if (c.type == "universal_joint" && !through.empty()) return "(" + through + ") * " + ValueOr(c, "efficiency", 1.0);
+    if (c.type == "angle_gearbox" && !through.empty()) return "(" + through + ") * " + eta + " / " + ValueOr(c, "ratio", 1.0);
+    if (c.type == "branch_gearbox" && !branch.empty()) {
+      const std::string b = "(" + branch + ") * " + eta + " / " + ValueOr(c, "ratio", 1.0);
+      return through.empty() ? b : through + " + " + b;
+    }
+    return through;
+  }
+
+  /// Stribeck friction at node k's speed, the paper's equation (3); empty when it has none.
+  std::string Stribeck(int k) const {
+    const Component& c = NodeComponent(k);
+    for (const char* name : {"coulomb_torque", "viscous_coefficient", "stribeck_torque", "stribeck_decay"})
+      if (!HasValue(c, name)) return "";
+    const std::string w = "(" + Num(peaks_->w_operating) + " * " + SpeedRatio(k) + ")";
+    return Value(c, "coulomb_torque") + " + " + Value(c, "viscous_coefficient") + " * " + w + " + " +
+           Value(c, "stribeck_torque") + " * exp(-(" + Value(c, "stribeck_decay") + " * " + w + "))";
+  }
+  /// Friction torque at the input of node k with no airload (reduced_models' drag flow).
+  std::string Drag(int k) const {
+    const auto& node = peaks_->nodes[k];
+    const Component& c = NodeComponent(k);
+    std::string through, branch;
+    for (int child : node.children) {
+      const std::string t = Drag(child);
+      if (t.empty()) continue;
+      std::string& sum = (c.type == "branch_gearbox" && peaks_->nodes[child].gear == c.id) ? branch : through;
+      sum += (sum.empty() ? "" : " + ") + t;
+    }
+    auto plus = [](const std::string& a, const std::string& b) { return a.empty() ? b : b.empty() ? a : a + " + " + b; };
+    const std::string eta = c.type == "angle_gearbox" || c.type == "branch_gearbox"
+                                ? ValueOr(c, "eta_mesh", 1.0) + "^" + std::to_string(static_cast<int>(Count(c, "meshes", 1.0)))
+                                : "";
+    if (c.type == "torque_shaft") {
+      const std::string own = HasValue(c, "drag_per_length") && HasValue(c, "length")
+                                  ? Value(c, "drag_per_length") + " * " + Value(c, "length") : "";
+      return plus(through, own);
+    }
+    if (c.type == "steady_bearing" || c.type == "geared_rotary_actuator" || c.type == "ballscrew_actuator")
+      return plus(through, Stribeck(k));
+    if (c.type == "universal_joint") return through.empty() ? "" : "(" + through + ") / " + ValueOr(c, "efficiency", 1.0);
+    if (c.type == "angle_gearbox")
+      return plus(through.empty() ? "" : "(" + through + ") / (" + ValueOr(c, "ratio", 1.0) + " * " + eta + ")", Stribeck(k));
+    if (c.type == "branch_gearbox")
+      return plus(plus(through, branch.empty() ? "" : "(" + branch + ") / (" + ValueOr(c, "ratio", 1.0) + " * " + eta + ")"),
+                  Stribeck(k));
+    return through;
+  }
+
+  /// w_max after a rupture: reduced_models::ComputeRuptureSpeed as a monotone black box of the
+  /// speed at the rupture, the overspeed reference, the trip thresholds, the latencies (rising),
+  /// the back-drive torque (rising), the friction and the inertia of the outboard part (falling).
+  bool RuptureSpeed(const reduced_models::PeakCaseStructure& pc, const std::string& p) {
+    if (!Has(root_ + ".max_output_speed")) return false;
+    const Component* sensor = pc.sensor.empty() ? nullptr : Find(pc.sensor);
+    const Component& wtb = *Find(pc.brake);
+    const int root = pc.root;
+    std::string part_inertia;
+    for (int k : pc.part) {
+      const std::string J = NodeVar(k, "reflected_inertia");
+      if (!J.empty()) part_inertia += (part_inertia.empty() ? "" : " + ") + J;
+    }
+    const std::string back = Backdrive(root), drag = Drag(root);
+    const std::string latency = (sensor && HasValue(*sensor, "latency") ? Value(*sensor, "latency") : "0") + " + " +
+                                Value(wtb, "engagement_latency") + " + 0.5 * " + Value(wtb, "time_to_max_torque");
+    if (part_inertia.empty() || !HasValue(wtb, "engagement_latency") || !HasValue(wtb, "time_to_max_torque")) return false;
+    std::vector<std::string> names = {
+        OperatingSpeed(),
+        root_ + ".max_output_speed",
+        VariableFor(p + "overspeed_factor", "1", sensor ? Value(*sensor, "overspeed_factor") : Num(1.3),
+                    "overspeed trip factor of the monitor"),
+        VariableFor(p + "asymmetry_threshold", "rev", sensor ? Value(*sensor, "asymmetry_threshold") : Num(4.0 * std::numbers::pi),
+                    "asymmetry trip threshold of the monitor"),
+        VariableFor(p + "latency", "ms", latency, "monitor latency + brake engagement + half its rise time"),
+        VariableFor(p + "backdrive_torque", "N*m",
+                    "max(0, " + (back.empty() ? std::string("0") : "(" + back + ")") + " * " + SpeedRatio(root) + ")",
+                    "back-drive torque of the airload on the outboard part, at the PDU speed"),
+        VariableFor(p + "drag_torque", "N*m",
+                    "max(0, " + (drag.empty() ? std::string("0") : "(" + drag + ")") + " * " + SpeedRatio(root) + ")",
+                    "friction of the outboard part, at the PDU speed"),
+        VariableFor(p + "part_inertia", "kg*m^2", part_inertia, "inertia of the outboard part, at the PDU speed")};
+    std::vector<VariableId> vars;
+    for (const auto& n : names) vars.push_back(net().FindVariable(n));
+    MonotoneFunction spin_up;
+    spin_up.f = [](std::span<const double> x) {
+      reduced_models::RuptureInput in;
+      in.w0 = x[0];
+      in.w_reference = x[1];
+      in.overspeed_factor = x[2];
+      in.asymmetry_threshold = x[3];
+      in.latency = x[4];
+      in.tau_aiding = x[5];
+      in.tau_drag = x[6];
+      in.J = x[7];
+      if (!(in.J > 0.0)) return std::numeric_limits<double>::quiet_NaN();
+      try {
+        return reduced_models::ComputeRuptureSpeed(in).w_max;
+      } catch (const std::exception&) {
+        return std::numeric_limits<double>::quiet_NaN();
+      }
+    };
+    using M = Monotonicity;
+    spin_up.monotonicity = {M::kIncreasing, M::kIncreasing, M::kIncreasing, M::kIncreasing,
+                            M::kIncreasing, M::kIncreasing, M::kDecreasing, M::kDecreasing};
+    spin_up.relative_error = 1e-12;
+    Derived(p + "speed", "rad/s");
+    net().AddMonotone(net().FindVariable(p + "speed"), vars, std::move(spin_up),
+                      {p + "speed", "speed of the back-driven part when " + pc.brake +
+                                        " engages: w0 + alpha (t_detect + latency) (reduced_models)",
+                       ConstraintRole::kPhysics});
+    ++out_.physics_constraints;
+    return true;
   }
 
   void Requirements() {
     for (const Requirement& r : project_.requirements) {
-      const ConstraintId id = AddConstraintText(net(), r.expression,
-                                                {r.id, r.description, ConstraintRole::kRequirement}, r.where);
+      ConstraintId id;
+      try {
+        id = AddConstraintText(net(), r.expression, {r.id, r.description, ConstraintRole::kRequirement}, r.where);
+      } catch (const InputError& e) {
+        if (peaks_error_.empty() ||
+            (r.expression.find("peak.") == std::string::npos && r.expression.find("travel_time.") == std::string::npos))
+          throw;
+        throw InputError(e.message() + "\n(the sizing cases peak.<case>.* and the travel times could not be built: " + peaks_error_ +
+                             ")",
+                         r.where);
+      }
       out_.requirement_of[id.value] = r.id;
       ++out_.requirement_constraints;
     }
@@ -393,6 +837,9 @@ class Builder {
   std::map<std::string, std::vector<std::string>> children_;
   std::vector<std::string> order_;
   std::vector<std::pair<const Component*, const Component*>> stations_;  // actuator, branch gearbox
+  std::optional<reduced_models::PeakStructure> peaks_;  // the sizing cases of reduced_models
+  std::map<std::string, int> node_index_;               // component id -> node of peaks_
+  std::string peaks_error_;                             // why there are no sizing cases
 };
 
 }  // namespace
@@ -408,6 +855,16 @@ CheckResult CheckDriveSystem(const DriveSystemNetwork& dn, const PropagationOpti
   result.report = prop.Propagate(box);
   result.feasible = result.report.status != Status::kInfeasible;
   if (!result.feasible) result.explanation = Explain(net, initial, options);
+  if (result.feasible && !dn.nominal.empty()) {
+    Box nominal = initial;
+    for (const auto& [v, value] : dn.nominal) {
+      if (!IsEmpty(nominal[v]) && nominal[v].lower() <= value && value <= nominal[v].upper()) nominal[v] = Interval(value, value);
+    }
+    Box trial = nominal;
+    result.nominal_checked = true;
+    result.nominal_feasible = prop.Propagate(trial).status != Status::kInfeasible;
+    if (!result.nominal_feasible) result.nominal_explanation = Explain(net, nominal, options);
+  }
   for (int v = 0; v < net.num_variables(); ++v) {
     const VariableInfo& info = net.variable(VariableId{v});
     ParameterResult row;

@@ -235,6 +235,7 @@ class Engine {
       : net_(net), opt_(opt), lo_reason_(lo_reason), hi_reason_(hi_reason), tape_(tape),
         tape_begin_(tape_begin), constants_(constants) {
     val_.resize(static_cast<std::size_t>(max_steps) + 1);
+    monotone_memo_.resize(static_cast<std::size_t>(net.num_monotone()));
   }
 
   PropagationReport Run(Box& box, const std::vector<char>& enabled) {
@@ -483,10 +484,26 @@ class Engine {
     std::vector<double> xlo, xhi;
     corner(true, xlo);
     corner(false, xhi);
-    const double flo = finite(xlo) ? Down(m, CallNearest(m, xlo)) : -kInf;
-    const double fhi = finite(xhi) ? Up(m, CallNearest(m, xhi)) : kInf;
+    // The corners of the last revision of this constraint are remembered: an unchanged corner is
+    // not evaluated again (a black box may be a costly computation, e.g. an eigenvalue).
+    MonotoneMemo& memo = monotone_memo_[k.monotone];
+    if (!memo.valid || memo.xlo != xlo) {
+      memo.flo = finite(xlo) ? Down(m, CallNearest(m, xlo)) : -kInf;
+      memo.xlo = xlo;
+    }
+    if (!memo.valid || memo.xhi != xhi) {
+      memo.fhi = finite(xhi) ? Up(m, CallNearest(m, xhi)) : kInf;
+      memo.xhi = xhi;
+    }
+    memo.valid = true;
+    const double flo = memo.flo, fhi = memo.fhi;
     if (!Update(y, FI(std::min(flo, fhi), std::max(flo, fhi), true), c, time)) return false;
     const Interval yd = box[y];
+    // Backward projection can only cut where y is narrower than the image of the box: when
+    // y.lo <= min f, every x_i meets y.lo (side 0 has nothing to cut), likewise y.hi >= max f.
+    const bool cut_by_lower = yd.lower() > std::min(flo, fhi);
+    const bool cut_by_upper = yd.upper() < std::max(flo, fhi);
+    if (!cut_by_lower && !cut_by_upper) return true;
     // Backward on each argument: with the others at the corner that favours the bound, bisect
     // for the last value of x_i that is still infeasible (everything beyond it is cut off).
     for (std::size_t i = 0; i < n; ++i) {
@@ -494,10 +511,14 @@ class Engine {
       const bool inc = m.monotonicity[i] == Monotonicity::kIncreasing;
       Interval d = box[v];
       if (!std::isfinite(d.lower()) || !std::isfinite(d.upper())) continue;
+      // A point argument has nothing to cut: with x_i at its only value, the largest and
+      // smallest f over the box are max f and min f, and y meets [min f, max f].
+      if (d.lower() == d.upper()) continue;
       // f_max(t): largest f over the box with x_i = t; rises with t when inc.
       // Lower bound of x_i (inc): need f_max(t) >= y.lo. Upper bound (inc): need f_min(t) <= y.hi.
       for (int side = 0; side < 2; ++side) {
         const bool use_max = (side == 0);  // side 0 uses f_max against y.lo, side 1 f_min against y.hi
+        if (use_max ? !cut_by_lower : !cut_by_upper) continue;
         std::vector<double> x;
         corner(!use_max, x);
         if (!finite(x)) continue;
@@ -539,6 +560,13 @@ class Engine {
   Box* box_ = nullptr;
   const std::vector<char>* enabled_ = nullptr;
   int empty_variable_ = -1;
+  /// Per monotone function: the corners of its last forward evaluation and their values.
+  struct MonotoneMemo {
+    bool valid = false;
+    std::vector<double> xlo, xhi;
+    double flo = 0.0, fhi = 0.0;
+  };
+  std::vector<MonotoneMemo> monotone_memo_;
 };
 
 }  // namespace

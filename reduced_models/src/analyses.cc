@@ -578,3 +578,103 @@ nlohmann::json PeakReport::ToJson() const {
 }
 
 }  // namespace highlift::reduced_models
+
+// ---------------------------------------------------------------------------------------------
+// The structure of the sizing cases, for constraint solvers (additive: AnalysePeaks is unchanged;
+// the case selection below repeats its rules and a test in tests/icsp compares both per case).
+
+namespace highlift::reduced_models {
+
+double ReducedModelValue(const Component& component, std::string_view name) {
+  return detail::NominalValue(component, name);
+}
+bool HasReducedModelValue(const Component& component, std::string_view name) {
+  return detail::HasValue(component, name);
+}
+
+PeakStructure DescribePeaks(const Project& project, const PeakOptions& options) {
+  const detail::Graph g = detail::BuildGraph(project);
+  const Component& pdu = *g.nodes[0].component;
+  const detail::ParameterMode nominal;
+  PeakStructure out;
+  out.elements_per_segment = std::max(1, options.elements_per_segment);
+  for (std::size_t i = 0; i < g.nodes.size(); ++i) {
+    const detail::GraphNode& n = g.nodes[i];
+    PeakGraphNode node{n.component->id, n.component->type, n.parent, "", n.children};
+    if (n.parent >= 0) {
+      const Component& parent = *g.nodes[n.parent].component;
+      if ((parent.type == "angle_gearbox" && n.parent_port == "output") ||
+          (parent.type == "branch_gearbox" && n.parent_port == "branch"))
+        node.gear = parent.id;
+    }
+    out.nodes.push_back(std::move(node));
+  }
+  if (project.load_cases.empty())
+    throw InputError("project '" + project.name + "' has no load cases; the peak loads need the operating speed and "
+                     "the airloads: add a load case under \"load_cases\"");
+  for (const LoadCase& lc : project.load_cases) {
+    out.w_operating = std::max(out.w_operating, detail::SizingSpeed(lc, pdu));
+    for (const auto& [actuator, value] : detail::SizingLoads(lc))
+      out.aiding[actuator] = std::min(out.aiding[actuator], -std::abs(value));
+  }
+  out.w_reference = detail::HasValue(pdu, "max_output_speed") ? detail::NominalValue(pdu, "max_output_speed") : out.w_operating;
+  auto scenario_name = [&](const std::string& kind, const std::string& component) {
+    for (const Scenario& s : project.scenarios) {
+      if (s.kind != kind) continue;
+      const auto& target = kind == "jam" ? s.jam_component : s.rupture_component;
+      if (target && *target == component) return s.name;
+    }
+    return kind + "_" + component;
+  };
+  auto fill = [&](PeakCaseStructure& pc, int root, int stop) {
+    const auto draft = detail::BuildTransmission<double>(g, nominal, root);
+    pc.root = root;
+    pc.transmission = Nominal(draft);
+    pc.point_of_node = draft.point_of_node;
+    pc.link_of_node = draft.link_of_node;
+    pc.stop_point = draft.point_of_node[stop];
+    if (root < 0) {
+      for (std::size_t i = 0; i < g.nodes.size(); ++i) pc.part.push_back(static_cast<int>(i));
+    } else {
+      pc.part = g.Subtree(root);
+    }
+  };
+  for (std::size_t i = 0; i < g.nodes.size(); ++i) {
+    const int a = static_cast<int>(i);
+    if (!g.IsActuator(a)) continue;
+    PeakCaseStructure pc;
+    pc.kind = "jam";
+    pc.component = g.Id(a);
+    pc.name = scenario_name("jam", pc.component);
+    pc.acts_at = g.Id(a);
+    for (int k : g.PathToRoot(a)) pc.load_path.push_back(g.Id(k));
+    fill(pc, -1, a);
+    out.cases.push_back(std::move(pc));
+  }
+  for (std::size_t i = 0; i < g.nodes.size(); ++i) {
+    const int s = static_cast<int>(i);
+    if (g.Type(s) != "torque_shaft" || g.nodes[s].children.empty()) continue;
+    const int root = g.nodes[s].children.front();
+    const std::vector<int> part = g.Subtree(root);
+    int brake = -1;
+    for (int k : part)
+      if (g.Type(k) == "wing_tip_brake") brake = k;
+    if (brake < 0 || brake == root) continue;
+    PeakCaseStructure pc;
+    pc.kind = "rupture";
+    pc.component = g.Id(s);
+    pc.name = scenario_name("rupture", pc.component);
+    pc.acts_at = g.Id(brake);
+    for (int k = brake; k >= 0; k = g.nodes[k].parent) {
+      pc.load_path.push_back(g.Id(k));
+      if (k == root) break;
+    }
+    fill(pc, root, brake);
+    if (const Component* sensor = FindSensor(g, part)) pc.sensor = sensor->id;
+    pc.brake = g.Id(brake);
+    out.cases.push_back(std::move(pc));
+  }
+  return out;
+}
+
+}  // namespace highlift::reduced_models

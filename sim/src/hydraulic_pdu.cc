@@ -1,2 +1,191 @@
-// The hydraulic power drive unit as a sub-network of hydraulic and mechanical elements.
+// The hydraulic power drive unit as a sub-network of hydraulic and mechanical elements
+// (docs/hydraulics.md). Secondary control: the motors run on the constant supply pressure and
+// the speed loop sets their displacement.
+//
+//   supply --supply_line-- supply_volume --+-- motor<k>.port_A      motor<k>.port_B -- tank
+//                                          +-- valve<k>.port_P      valve<k>.port_T -- tank
+//   valve<k>.port_A/B -- cylinder<k>.port_A/B; cylinder<k>.flange -- rod<k> (Mass)
+//   control<k>: w_ref (from `ref`), motor speed (rotor<k>), rod position -> valve<k>.u, motor<k>.eps
+//   rotor<k> -- differential (IdealPlanetary, ratio 1: sun motor 1, ring motor 2, carrier out)
+//            -- gear (IdealGear, i_PDU) -- output (Inertia J_g) -- left and right transmissions
+//
+// One motor lost (`motor_lost_time`): the last motor's displacement is commanded to 0 and its
+// pressure-off brake (Brake, holding brake_torque/ratio at the motor) holds it; the differential
+// then delivers half the speed of the remaining motor at the full torque.
 #include "hydraulic_pdu.h"
+
+#include <cmath>
+#include <numbers>
+
+#include "highlift/core/catalogue.h"
+#include "highlift/core/error.h"
+
+namespace highlift::sim::detail {
+namespace {
+
+std::string Where(const Component& pdu) { return "component '" + pdu.id + "' (pdu)"; }
+
+/// The nominal value of a pdu parameter in SI: the component's, else the catalogue default.
+/// Throws InputError naming the parameter when neither exists.
+double Value(const Component& pdu, const std::string& name, const char* remedy = nullptr) {
+  auto it = pdu.parameters.find(name);
+  if (it != pdu.parameters.end() && it->second.nominal) return *it->second.nominal;
+  const ComponentTypeSpec* spec = FindComponentType("pdu");
+  const ParameterSpec* p = spec != nullptr ? spec->FindParameter(name) : nullptr;
+  if (p != nullptr && p->nominal) return *p->nominal;
+  throw InputError(Where(pdu) + ": the hydraulic drive needs parameter '" + name + "'; " +
+                   (remedy != nullptr ? remedy : "give its value"));
+}
+
+bool Has(const Component& pdu, const std::string& name) {
+  auto it = pdu.parameters.find(name);
+  return it != pdu.parameters.end() && it->second.nominal.has_value();
+}
+
+}  // namespace
+
+bool IsHydraulicPdu(const Component& pdu) {
+  auto it = pdu.texts.find("drive");
+  if (it == pdu.texts.end() || it->second == "speed_controlled") return false;
+  if (it->second == "hydraulic") return true;
+  throw InputError(Where(pdu) + ": parameter 'drive' = \"" + it->second +
+                   "\" is not a drive kind; use \"speed_controlled\" or \"hydraulic\"");
+}
+
+PduPorts AddHydraulicPdu(Network& net, const Component& pdu) {
+  const std::string& id = pdu.id;
+  auto part = [&](const std::string& name) { return id + "." + name; };
+  auto port = [&](const std::string& name, const std::string& p) { return id + "." + name + "." + p; };
+
+  const double motor_count = Value(pdu, "motor_count");
+  if (motor_count != 1 && motor_count != 2)
+    throw InputError(Where(pdu) + ": parameter 'motor_count' = " + std::to_string(static_cast<int>(motor_count)) +
+                     "; the hydraulic drive sums 1 or 2 motors (one differential); use 1 or 2");
+  const int n_m = static_cast<int>(motor_count);
+  const double ratio = Value(pdu, "ratio");
+  const double p_s = Value(pdu, "supply_pressure", "give the aircraft system pressure, e.g. 345 bar (A380) or 207 bar (A320)");
+  const double p_r = Value(pdu, "return_pressure");
+  if (!(p_s > p_r))
+    throw InputError(Where(pdu) + ": parameter 'supply_pressure' = " + std::to_string(p_s * 1e-5) +
+                     " bar must exceed 'return_pressure' = " + std::to_string(p_r * 1e-5) + " bar");
+  const double eta_m = Value(pdu, "motor_mechanical_efficiency") * Value(pdu, "efficiency");
+  if (!(eta_m > 0))
+    throw InputError(Where(pdu) + ": parameters 'motor_mechanical_efficiency' and 'efficiency' must be > 0");
+  // Displacement: given, or sized so that all motors at full displacement give the stall torque.
+  double D_max = 0.0;
+  if (Has(pdu, "motor_displacement")) {
+    D_max = Value(pdu, "motor_displacement");  // SI: m^3 per radian (cm^3/rev converted)
+  } else {
+    D_max = Value(pdu, "stall_torque") / (n_m * ratio * eta_m * (p_s - p_r));
+  }
+  if (!(D_max > 0))
+    throw InputError(Where(pdu) + ": parameter 'motor_displacement' must be > 0 (4-13 cm^3/rev)");
+  const double s_max = Value(pdu, "cylinder_stroke");
+
+  auto scalars = [](std::map<std::string, double> s) { return ElementParameters{std::move(s), {}}; };
+  // Parts are "<pdu>.<part>": validated under a plain id in a scratch network, then adopted.
+  auto add = [&](const std::string& type, const std::string& full_id, ElementParameters parameters) {
+    Network scratch;
+    try {
+      scratch.AddElement(type, "part", std::move(parameters));
+    } catch (const InputError& error) {
+      std::string message = error.what();
+      const auto at = message.find("'part'");
+      if (at != std::string::npos) message.replace(at, 6, "'" + full_id + "'");
+      throw InputError(Where(pdu) + ": " + message);
+    }
+    NetworkElement e = scratch.elements().front();
+    e.id = full_id;
+    net.Adopt(e);
+  };
+
+  // Supply.
+  add("PressureSource", part("supply"), scalars({{"p_supply", p_s}}));
+  add("Tank", part("tank"), scalars({{"p_return", p_r}}));
+  add("TurbulentResistance", part("supply_line"), scalars({{"A", Value(pdu, "supply_line_area")}}));
+  add("Volume", part("supply_volume"),
+                 scalars({{"V", Value(pdu, "supply_volume")}, {"p_start", p_s}}));
+  net.Connect(port("supply", "port"), port("supply_line", "port_a"));
+  net.Connect(port("supply_line", "port_b"), port("supply_volume", "port"));
+  // The speed command, fanned out to the motors' speed loops.
+  add("Gain", part("w_ref"), scalars({{"k", 1.0}}));
+
+  const bool motor_lost = Has(pdu, "motor_lost_time");
+  for (int k = 1; k <= n_m; ++k) {
+    const std::string n = std::to_string(k);
+    add("ServoValve", part("valve" + n),
+                   scalars({{"A_max", Value(pdu, "valve_area")}, {"T_v", Value(pdu, "valve_time_constant")}}));
+    add("DifferentialCylinder", part("cylinder" + n),
+                   scalars({{"A_A", Value(pdu, "cylinder_area")},
+                            {"A_B", Value(pdu, "cylinder_annulus_area")},
+                            {"s_max", s_max},
+                            {"V0_A", Value(pdu, "cylinder_dead_volume")},
+                            {"V0_B", Value(pdu, "cylinder_dead_volume")},
+                            {"d", Value(pdu, "cylinder_damping")},
+                            {"s_start", 0.5 * s_max}}));
+    add("Mass", part("rod" + n), scalars({{"m", Value(pdu, "cylinder_mass")}}));
+    add("MotorSpeedControl", part("control" + n),
+                   scalars({{"ratio", ratio},
+                            {"k_w", Value(pdu, "speed_gain")},
+                            {"T_i", Value(pdu, "speed_integral_time")},
+                            {"k_s", Value(pdu, "position_gain")},
+                            {"s_max", s_max}}));
+    add("VariableDisplacementMotor", part("motor" + n),
+                   scalars({{"D_max", D_max}, {"G_leak", Value(pdu, "motor_leakage")}, {"eta_m", eta_m}}));
+    add("Inertia", part("rotor" + n), scalars({{"J", Value(pdu, "motor_inertia")}}));
+
+    net.Connect(port("valve" + n, "port_P"), port("supply_volume", "port"));
+    net.Connect(port("valve" + n, "port_T"), port("tank", "port"));
+    net.Connect(port("valve" + n, "port_A"), port("cylinder" + n, "port_A"));
+    net.Connect(port("valve" + n, "port_B"), port("cylinder" + n, "port_B"));
+    net.Connect(port("cylinder" + n, "flange"), port("rod" + n, "flange_a"));
+    net.Connect(port("w_ref", "y"), port("control" + n, "w_ref"));
+    net.Connect(port("rotor" + n, "flange_a"), port("control" + n, "flange_m"));
+    net.Connect(port("rod" + n, "flange_b"), port("control" + n, "flange_s"));
+    net.Connect(port("control" + n, "u"), port("valve" + n, "u"));
+    net.Connect(port("control" + n, "eps"), port("motor" + n, "eps"));
+    net.Connect(port("motor" + n, "port_A"), port("supply_volume", "port"));
+    net.Connect(port("motor" + n, "port_B"), port("tank", "port"));
+    net.Connect(port("motor" + n, "flange"), port("rotor" + n, "flange_a"));
+
+    if (motor_lost && k == n_m) {
+      const double t_lost = Value(pdu, "motor_lost_time");
+      add("Step", part("motor_lost"), scalars({{"height", -1.0}, {"offset", 1.0}, {"startTime", t_lost}}));
+      add("Step", part("pob_command"), scalars({{"height", 1.0}, {"offset", 0.0}, {"startTime", t_lost}}));
+      // Brake: tau = cgeo*mu*fn_max*f_normalized with mu = 0.5: the POB torque at the motor.
+      add("Brake", part("pob" + n),
+                     {{{"fn_max", 2.0 * Value(pdu, "brake_torque") / ratio}, {"cgeo", 1.0}},
+                      {{"mu_pos", {{0.0, 0.5}}}}});
+      net.Connect(port("motor_lost", "y"), port("control" + n, "active"));
+      net.Connect(port("pob_command", "y"), port("pob" + n, "f_normalized"));
+      net.Connect(port("rotor" + n, "flange_b"), port("pob" + n, "flange_a"));
+    }
+  }
+  // Differential and PDU gearbox. The gearbox efficiency is applied in the motors' eta_m.
+  add("IdealGear", part("gear"), scalars({{"ratio", ratio}}));
+  if (n_m == 2) {
+    add("IdealPlanetary", part("differential"), scalars({{"ratio", 1.0}}));
+    net.Connect(port("rotor1", "flange_b"), port("differential", "sun"));
+    net.Connect(port("rotor2", "flange_b"), port("differential", "ring"));
+    net.Connect(port("differential", "carrier"), port("gear", "flange_a"));
+  } else {
+    net.Connect(port("rotor1", "flange_b"), port("gear", "flange_a"));
+  }
+  add("Inertia", part("output"), scalars({{"J", Value(pdu, "gear_inertia")}}));
+  net.Connect(port("gear", "flange_b"), port("output", "flange_a"));
+  // Output angle and speed (the FPPU and the speed reported as "<pdu>.w").
+  add("SpeedSensor", id, {});
+  add("AngleSensor", part("angle"), {});
+  net.Connect(port("output", "flange_a"), id + ".flange");
+  net.Connect(port("output", "flange_a"), port("angle", "flange"));
+
+  PduPorts ports;
+  ports.flange_left = port("output", "flange_b");
+  ports.flange_right = port("output", "flange_a");
+  ports.w_ref = port("w_ref", "u");
+  ports.phi = port("angle", "phi");
+  ports.w = id + ".w";
+  return ports;
+}
+
+}  // namespace highlift::sim::detail

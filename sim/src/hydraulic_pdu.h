@@ -1,4 +1,36 @@
 // Internal: the hydraulic power drive unit as a sub-network of hydraulic and mechanical elements.
+//
+// A pdu component whose text parameter `drive` is "hydraulic" is built here into
+// elements of the HighLift.Hydraulics family: a supply (PressureSource, Tank), per motor a
+// ServoValve positioning a DifferentialCylinder that sets the displacement of a
+// VariableDisplacementMotor, a speed loop on the commanded speed, the two motors summed by a
+// differential and the PDU gearbox to the two transmission outputs.
 #pragma once
 
+#include <string>
+
+#include "highlift/core/project.h"
 #include "highlift/sim/network.h"
+
+namespace highlift::sim::detail {
+
+/// The ports of an added hydraulic PDU, each "element.port" in the network it was added to.
+struct PduPorts {
+  std::string flange_left;   ///< output flange to the left transmission
+  std::string flange_right;  ///< output flange to the right transmission
+  std::string w_ref;         ///< signal input: commanded PDU output speed, rad/s
+  std::string phi;           ///< signal output: PDU output angle, rad
+  std::string w;             ///< signal output: PDU output speed, rad/s
+};
+
+/// True when the pdu component asks for the hydraulic drive (text parameter `drive` =
+/// "hydraulic"; absent or "speed_controlled" is the speed-controlled PDU). Throws InputError
+/// naming the component for any other value.
+bool IsHydraulicPdu(const Component& pdu);
+
+/// Adds the elements of the hydraulic PDU of component `pdu` (ids "<pdu.id>.<part>") to `net`
+/// and returns its ports. Throws InputError naming the component and parameter for invalid
+/// parameters.
+PduPorts AddHydraulicPdu(Network& net, const Component& pdu);
+
+}  // namespace highlift::sim::detail

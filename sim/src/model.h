@@ -31,6 +31,21 @@ struct Node {
   int s_w = -1;         ///< state index of the speed
 };
 
+/// A hydraulic node: hydraulic ports connected to each other (sim/src/hydraulic_elements.cc).
+/// Its pressure is fixed by a source (PressureSource, Tank) or is a state with
+/// dp/dt = sum(V_flow into the node) / sum(V/E) over the volumes attached (Volume, cylinder
+/// chambers); a node with neither is an input error.
+struct HydraulicNode {
+  std::string name;            ///< first port, "element.port", for messages
+  bool fixed = false;          ///< pressure imposed by a source
+  double p_fixed = 0.0;        ///< that pressure, Pa
+  std::string fixed_by;        ///< the element imposing it
+  bool has_volume = false;     ///< some element attaches a compressible volume
+  double p_start = NAN;        ///< initial pressure, Pa (NaN: 1 bar)
+  std::string start_by;        ///< the element that gave p_start
+  int s_p = -1;                ///< state index of the pressure (-1 for a fixed node)
+};
+
 /// One linear constraint on node accelerations: sum(row) = rhs, with the torque it exerts on
 /// the nodes per unit multiplier (column). Ideal constraints have column = -row or +row.
 struct Constraint {
@@ -66,6 +81,14 @@ struct Eval {
     return c;
   }
   void AddForce(int node, double tau) { force[node] += tau; }
+
+  // Hydraulic nodes (pressures read by the laws; flows and capacitances added in Forces()).
+  std::vector<double> p;    ///< per hydraulic node: pressure, Pa
+  std::vector<double> q;    ///< per hydraulic node: net volume flow into the node, m^3/s
+  std::vector<double> cap;  ///< per hydraulic node: capacitance sum(V/E), m^3/Pa
+  /// An element's port takes `V_flow` (m^3/s) out of the node (Modelica port.V_flow).
+  void AddPortFlow(int hnode, double V_flow) { q[hnode] -= V_flow; }
+  void AddCapacitance(int hnode, double c) { cap[hnode] += c; }
 };
 
 class Model;
@@ -109,6 +132,16 @@ class Element {
   virtual std::vector<int> Nodes() const { return {}; }
   virtual int NumStates() const { return 0; }
   int state_offset = -1;
+  // --- hydraulic structure (defaults: no hydraulic ports) ---
+  /// Hydraulic ports (each joins a hydraulic node).
+  virtual std::vector<std::string> HydraulicPorts() const { return {}; }
+  /// Called once hydraulic ports are resolved: hydraulic node index per port.
+  virtual void BindHydraulic(const std::function<int(const std::string&)>& node_of) { (void)node_of; }
+  /// Hydraulic nodes this element reads or acts on.
+  virtual std::vector<int> HydraulicNodes() const { return {}; }
+  /// Marks fixed pressures, attached volumes and initial pressures on the nodes (throws
+  /// InputError for a conflict, e.g. two sources on one node).
+  virtual void DeclareHydraulic(std::vector<HydraulicNode>& nodes) const { (void)nodes; }
   virtual std::vector<std::string> StateNames() const { return {}; }
 
   // --- initial conditions ---

@@ -618,8 +618,9 @@ class Clutch : public SurfaceFriction {
 
 class LossyGear : public GearBase {
  public:
-  explicit LossyGear(const NetworkElement& e)
-      : GearBase(e, "LossyGear"), table(TableOr(e, "lossTable", {{0, 1, 1, 0, 0}}, 5)) {
+  /// `type_name` names the element type in messages (laws derived from LossyGear).
+  explicit LossyGear(const NetworkElement& e, const char* type_name = "LossyGear")
+      : GearBase(e, type_name), table(TableOr(e, "lossTable", {{0, 1, 1, 0, 0}}, 5)) {
     ideal = true;
     for (const auto& r : table) {
       if (r[1] <= 0 || r[1] > 1 || r[2] <= 0 || r[2] > 1)
@@ -633,19 +634,26 @@ class LossyGear : public GearBase {
   struct Coefficients {
     double eta1, eta2, bf1, bf2, bf_a;
   };
-  Coefficients At(double w_abs) const {
-    Coefficients c;
-    c.eta1 = Interpolate(table, 1, w_abs);
-    c.eta2 = Interpolate(table, 2, w_abs);
-    c.bf1 = std::abs(Interpolate(table, 3, w_abs));
-    c.bf2 = std::abs(Interpolate(table, 4, w_abs));
+  /// Efficiencies and bearing friction of the two quadrants, with the quadrant boundary bf_a
+  /// at which the loss is continuous.
+  static Coefficients Make(double eta1, double eta2, double bf1, double bf2) {
+    Coefficients c{eta1, eta2, bf1, bf2, 0.0};
     c.bf_a = std::abs(c.eta1 - 1.0 / c.eta2) < 1e-15 ? c.bf1 / 2
                                                     : (c.bf1 - c.bf2) / (c.eta1 - 1.0 / c.eta2);
     return c;
   }
+  Coefficients At(double w_abs) const {
+    return Make(Interpolate(table, 1, w_abs), Interpolate(table, 2, w_abs),
+                std::abs(Interpolate(table, 3, w_abs)), std::abs(Interpolate(table, 4, w_abs)));
+  }
+  /// Coefficients of the rolling law (MSL: the loss table at |w_a|). Laws derived from
+  /// LossyGear (HighLift GearedRotaryActuator) make them depend on the state.
+  virtual Coefficients RollingCoefficients(const Eval& e) const { return At(std::abs(WA(e))); }
+  /// Coefficients of the start thresholds of the stuck gear (MSL: the loss table at w = 0).
+  virtual Coefficients RestCoefficients() const { return At(0.0); }
   // tau_loss = k * tau_a + c0 in the active quadrant.
   void Law(const Eval& e, double& k, double& c0) const {
-    const Coefficients c = At(std::abs(WA(e)));
+    const Coefficients c = RollingCoefficients(e);
     const bool q_pos = quadrant >= 0;
     if (mode == kForward) {
       k = q_pos ? 1 - c.eta1 : 1 - 1 / c.eta2;
@@ -695,18 +703,18 @@ class LossyGear : public GearBase {
     }
   }
   double TauEta(const Eval& e) const {
-    const double bf_a = At(std::abs(WA(e))).bf_a;
+    const double bf_a = RollingCoefficients(e).bf_a;
     if (mode == kForward) return tau_a - bf_a;
     if (mode == kBackward) return tau_a + bf_a;
     return tau_a;
   }
   // Start thresholds (zero-speed values, current tau_a).
   double LossMaxForward() const {
-    const Coefficients c = At(0.0);
+    const Coefficients c = RestCoefficients();
     return tau_a - c.bf_a > 0 ? (1 - c.eta1) * tau_a + c.bf1 : (1 - 1 / c.eta2) * tau_a + c.bf2;
   }
   double LossMinBackward() const {
-    const Coefficients c = At(0.0);
+    const Coefficients c = RestCoefficients();
     return tau_a + c.bf_a > 0 ? (1 - 1 / c.eta2) * tau_a - c.bf2 : (1 - c.eta1) * tau_a - c.bf1;
   }
 

@@ -122,8 +122,9 @@ void Network::Connect(std::string_view a, std::string_view b) {
   const PortKind ka = Find(pa.component)->spec->FindPort(pa.port)->kind;
   const PortKind kb = Find(pb.component)->spec->FindPort(pb.port)->kind;
   if (ka != kb)
-    throw InputError("connection " + pa.ToString() + " - " + pb.ToString() +
-                     ": a flange cannot be connected to a signal port");
+    throw InputError("connection " + pa.ToString() + " - " + pb.ToString() + ": a " +
+                     PortKindName(ka) + " port cannot be connected to a " + PortKindName(kb) +
+                     " port; connect ports of the same kind");
   connections_.push_back({std::move(pa), std::move(pb)});
 }
 

@@ -107,6 +107,7 @@ System::System(const Network& original) {
     }
   }
   n_signal_slots_ = static_cast<int>(slot_owner.size());
+  BuildHydraulicNodes(network);
   // Flange ports and their union.
   std::map<std::string, int> port_index;
   std::vector<std::string> port_name;
@@ -127,6 +128,9 @@ System::System(const Network& original) {
   std::map<std::string, int> signal_source;
   for (const auto& c : network.connections()) {
     const std::string a = c.a.ToString(), b = c.b.ToString();
+    if (std::binary_search(hydraulic_ports_.begin(), hydraulic_ports_.end(), a) ||
+        std::binary_search(hydraulic_ports_.begin(), hydraulic_ports_.end(), b))
+      continue;  // BuildHydraulicNodes
     auto ia = port_index.find(a), ib = port_index.find(b);
     if (ia != port_index.end() && ib != port_index.end()) {
       ports.Unite(ia->second, ib->second);
@@ -217,8 +221,14 @@ System::System(const Network& original) {
     state_names_.push_back(nodes_[n].name + ".phi");
     state_names_.push_back(nodes_[n].name + ".w");
   };
+  auto assign_hydraulic = [&](int n) {
+    if (hnodes_[n].fixed || hnodes_[n].s_p >= 0) return;
+    hnodes_[n].s_p = n_states_++;
+    state_names_.push_back(hnodes_[n].name + ".p");
+  };
   for (auto& el : elements_) {
     for (int n : el->Nodes()) assign_node(n);
+    for (int n : el->HydraulicNodes()) assign_hydraulic(n);
     el->state_offset = n_states_;
     n_states_ += el->NumStates();
     for (const auto& s : el->StateNames()) state_names_.push_back(s);
@@ -226,6 +236,7 @@ System::System(const Network& original) {
     n_roots_ += el->NumRoots();
   }
   for (std::size_t n = 0; n < nodes_.size(); ++n) assign_node(static_cast<int>(n));
+  for (std::size_t n = 0; n < hnodes_.size(); ++n) assign_hydraulic(static_cast<int>(n));
   // Nodes whose acceleration nothing determines.
   std::vector<bool> coupled(nodes_.size(), false);
   for (const auto& el : elements_)
@@ -260,6 +271,11 @@ System::System(const Network& original) {
           emin = std::min(emin, nodes_[n].s_w);
           emax = std::max(emax, nodes_[n].s_w);
         }
+      for (int n : el->HydraulicNodes())
+        if (hnodes_[n].s_p >= 0) {
+          emin = std::min(emin, hnodes_[n].s_p);
+          emax = std::max(emax, hnodes_[n].s_p);
+        }
       if (el->NumStates() > 0) {
         emin = std::min(emin, el->state_offset);
         emax = std::max(emax, el->state_offset + el->NumStates() - 1);
@@ -283,6 +299,9 @@ System::System(const Network& original) {
   eval_.acc.assign(nodes_.size(), 0.0);
   eval_.force.assign(nodes_.size(), 0.0);
   eval_.signal.assign(n_signal_slots_, 0.0);
+  eval_.p.assign(hnodes_.size(), 0.0);
+  eval_.q.assign(hnodes_.size(), 0.0);
+  eval_.cap.assign(hnodes_.size(), 0.0);
   parent_.resize(nodes_.size());
   local_.assign(nodes_.size(), -1);
 }
@@ -344,6 +363,13 @@ std::vector<double> System::InitialState(double t0) {
     eval_.phi[n] = phi[unknown[n]];
     eval_.w[n] = w[unknown[n]];
   }
+  for (const auto& h : hnodes_)
+    if (h.s_p >= 0) {
+      y[h.s_p] = std::isnan(h.p_start) ? 1e5 : h.p_start;
+      eval_.p[&h - hnodes_.data()] = y[h.s_p];
+    } else {
+      eval_.p[&h - hnodes_.data()] = h.p_fixed;
+    }
   for (const auto& el : elements_) el->InitStates(eval_, y.data());
   return y;
 }
@@ -370,6 +396,11 @@ bool System::Evaluate(double t, const double* y, double* ydot) {
     e.force[n] = 0.0;
     e.acc[n] = 0.0;
   }
+  for (std::size_t n = 0; n < hnodes_.size(); ++n) {
+    e.p[n] = hnodes_[n].fixed ? hnodes_[n].p_fixed : y[hnodes_[n].s_p];
+    e.q[n] = 0.0;
+    e.cap[n] = 0.0;
+  }
   EvaluateSignals();
   e.n_constraints = 0;
   for (auto& el : elements_) el->Forces(e);
@@ -383,6 +414,7 @@ bool System::Evaluate(double t, const double* y, double* ydot) {
       ydot[node.s_w] = e.acc[&node - nodes_.data()];
     }
     for (auto& el : elements_) el->Derivatives(e);
+    if (!hnodes_.empty() && !HydraulicDerivatives(ydot)) return false;
   }
   return true;
 }
@@ -640,6 +672,75 @@ void System::AfterEventRow() {
 void System::Outputs(double* out) const {
   for (std::size_t i = 0; i < elements_.size(); ++i)
     elements_[i]->Outputs(eval_, out + output_offset_[i]);
+}
+
+// --- Hydraulic nodes -------------------------------------------------------------------------
+// Connected hydraulic ports form a node with one pressure p. A source (PressureSource, Tank)
+// fixes p; otherwise p is a state of the compressible volumes attached (Volume, the chambers of
+// a DifferentialCylinder): with capacitance C = sum(V_i/E_i),
+//   dp/dt = sum(V_flow into the node) / C,
+// where an element whose volume changes (a chamber V0 + A*s) adds -dV/dt to the flows. Lines and
+// orifices are incompressible as in HighLift.Hydraulics, so a node without a volume or source
+// would be algebraic: it is rejected with a message that names it.
+
+void System::BuildHydraulicNodes(const Network& network) {
+  std::map<std::string, int> index;
+  for (const auto& el : elements_)
+    for (const auto& port : el->HydraulicPorts()) {
+      index[el->id + "." + port] = static_cast<int>(hydraulic_ports_.size());
+      hydraulic_ports_.push_back(el->id + "." + port);
+    }
+  if (hydraulic_ports_.empty()) return;
+  UnionFind ports(static_cast<int>(hydraulic_ports_.size()));
+  for (const auto& c : network.connections()) {
+    auto ia = index.find(c.a.ToString()), ib = index.find(c.b.ToString());
+    if (ia == index.end() && ib == index.end()) continue;
+    if (ia == index.end() || ib == index.end())
+      throw InputError("connection " + c.a.ToString() + " - " + c.b.ToString() +
+                       ": a hydraulic port can only be connected to a hydraulic port");
+    ports.Unite(ia->second, ib->second);
+  }
+  std::map<int, int> root_to_node;
+  std::vector<int> port_node(hydraulic_ports_.size());
+  std::vector<std::vector<std::string>> members;
+  for (std::size_t k = 0; k < hydraulic_ports_.size(); ++k) {
+    const int r = ports.Find(static_cast<int>(k));
+    auto it = root_to_node.find(r);
+    if (it == root_to_node.end()) {
+      it = root_to_node.emplace(r, static_cast<int>(hnodes_.size())).first;
+      HydraulicNode n;
+      n.name = hydraulic_ports_[k];
+      hnodes_.push_back(n);
+      members.emplace_back();
+    }
+    port_node[k] = it->second;
+    members[it->second].push_back(hydraulic_ports_[k]);
+  }
+  for (auto& el : elements_) {
+    if (el->HydraulicPorts().empty()) continue;
+    el->BindHydraulic([&](const std::string& port) { return port_node[index.at(el->id + "." + port)]; });
+    el->DeclareHydraulic(hnodes_);
+  }
+  for (std::size_t n = 0; n < hnodes_.size(); ++n)
+    if (!hnodes_[n].fixed && !hnodes_[n].has_volume)
+      throw InputError("hydraulic node of " + Join(members[n]) +
+                       " has no volume and no source, so its pressure is undetermined; connect a "
+                       "Volume (V = the line volume, e.g. 1e-5 m^3) or a PressureSource/Tank there");
+  std::sort(hydraulic_ports_.begin(), hydraulic_ports_.end());
+}
+
+bool System::HydraulicDerivatives(double* ydot) {
+  for (std::size_t n = 0; n < hnodes_.size(); ++n) {
+    const HydraulicNode& h = hnodes_[n];
+    if (h.s_p < 0) continue;
+    if (!(eval_.cap[n] > 0.0)) {
+      error_ = "hydraulic node '" + h.name + "' has no positive capacitance at t = " +
+               std::to_string(eval_.t) + "; check the volumes attached to it";
+      return false;
+    }
+    ydot[h.s_p] = eval_.q[n] / eval_.cap[n];
+  }
+  return true;
 }
 
 void System::PeakTorques(std::vector<double>& tau) const {

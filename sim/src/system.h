@@ -65,10 +65,16 @@ class System {
  private:
   bool Solve();
   void EvaluateSignals();
+  /// Hydraulic nodes from the hydraulic ports and their connections (see HydraulicNode).
+  void BuildHydraulicNodes(const Network& network);
+  /// Pressure derivatives of the hydraulic nodes, after the elements' Forces().
+  bool HydraulicDerivatives(double* ydot);
   bool ProjectSpeeds(double* y);
 
   std::vector<std::unique_ptr<Element>> elements_;
   std::vector<Node> nodes_;
+  std::vector<HydraulicNode> hnodes_;
+  std::vector<std::string> hydraulic_ports_;  ///< "element.port" of every hydraulic port
   std::vector<int> signal_order_;
   int n_signal_slots_ = 0;
   int n_states_ = 0;

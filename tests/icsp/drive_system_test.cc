@@ -7,6 +7,7 @@
 
 #include "common/run_cli.h"
 #include "highlift/core/project_io.h"
+#include "highlift/reduced_models/analyses.h"
 
 namespace highlift::icsp {
 namespace {
@@ -22,6 +23,31 @@ Interval Final(const CheckResult& r, const std::string& name) {
   return Empty();
 }
 
+/// The domain of `name` in a box.
+Interval In(const DriveSystemNetwork& net, const Box& box, const std::string& name) {
+  const VariableId v = net.network.FindVariable(name);
+  if (v.value < 0) {
+    ADD_FAILURE() << "no quantity " << name;
+    return Empty();
+  }
+  return box[v.value];
+}
+
+/// Propagates the physics alone (no requirement narrows anything) from `box`.
+PropagationReport PropagatePhysics(const DriveSystemNetwork& net, Box& box) {
+  std::vector<char> physics(static_cast<std::size_t>(net.network.num_constraints()), 0);
+  for (int c = 0; c < net.network.num_constraints(); ++c)
+    physics[c] = net.network.constraint(ConstraintId{c}).info.role == ConstraintRole::kPhysics;
+  return Propagator(net.network).Propagate(box, physics);
+}
+
+/// The box with every parameter at its nominal value.
+Box NominalBox(const DriveSystemNetwork& net) {
+  Box box = net.network.InitialBox();
+  for (const auto& [v, value] : net.nominal) box[v] = Interval(value, value);
+  return box;
+}
+
 TEST(DriveSystem, FlapProjectMeetsItsRequirementsAndDerivesThePhysics) {
   const Project project = LoadProject(kFlaps);
   const DriveSystemNetwork net = BuildDriveSystemNetwork(project);
@@ -30,9 +56,6 @@ TEST(DriveSystem, FlapProjectMeetsItsRequirementsAndDerivesThePhysics) {
   const CheckResult r = CheckDriveSystem(net);
   ASSERT_TRUE(r.feasible) << r.report.BriefReport();
   EXPECT_EQ(r.report.status, Status::kFixedPoint);
-  // Extension time: 2.2 rad * 200 * 2 / 25.3 rad/s = 34.78 s.
-  const Interval t = Final(r, "travel_time.extension");
-  EXPECT_NEAR(t.lower(), 2.2 * 200 * 2 / 25.3, 1e-6);
   // Station input torque: 20 kN*m / (i_act eta_opp) / (i_branch eta_mesh), 60.64 N*m at the
   // nominal efficiencies 0.85 and 0.97; the bounds come from the efficiency domains.
   const Interval station = Final(r, "tgb_l1.station_torque");
@@ -52,6 +75,106 @@ TEST(DriveSystem, FlapProjectMeetsItsRequirementsAndDerivesThePhysics) {
   EXPECT_TRUE(std::isfinite(peak.upper()));
 }
 
+TEST(DriveSystem, ExtensionTimeIncludesTheRampsOfTheSpeedProfile) {
+  // tools/gen_examples.py writes the profile: 0 -> w in t_ramp = 0.4 s, hold, slow down in 0.2 s to
+  // k w (k = 0.25) for the last s = 3 % of the travel, stop in 0.1 s. Its duration in closed form:
+  //   T = t_ramp/2 + (1 - k) t_down/2 + t_stop/2 + (Phi / w) ((1 - s) + s / k).
+  // The network takes the phases from the table; at Phi = 2.2 rad * 200 * 2 = 880 rad (the
+  // table's 879.65 rad rounded) the two agree to well under a millisecond; the ramps add
+  // 3.5 s to the 34.8 s at full speed.
+  const DriveSystemNetwork net = BuildDriveSystemNetwork(LoadProject(kFlaps));
+  Box box = NominalBox(net);
+  ASSERT_NE(PropagatePhysics(net, box).status, Status::kInfeasible);
+  const double w = 25.3, phi = 2.2 * 200 * 2, k = 0.25, s = 0.03;
+  const double closed = 0.2 + 0.5 * (1 - k) * 0.2 + 0.05 + phi / w * ((1 - s) + s / k);
+  const Interval t = In(net, box, "travel_time.extension");
+  EXPECT_NEAR(t.lower(), closed, 1e-3);
+  EXPECT_NEAR(t.upper(), closed, 1e-3);
+  EXPECT_GT(t.lower(), phi / w + 3.0);
+  // Slower PDU, longer extension: T - t_ramps scales with 1 / w.
+  Box slow = NominalBox(net);
+  slow[net.network.FindVariable("pdu.max_output_speed").value] = Interval(w / 2, w / 2);
+  ASSERT_NE(PropagatePhysics(net, slow).status, Status::kInfeasible);
+  const double t_ramps = 0.2 + 0.5 * (1 - k) * 0.2 + 0.1 * (1 - 0.5 * k);
+  EXPECT_NEAR(In(net, slow, "travel_time.extension").lower() - t_ramps, 2.0 * (t.lower() - t_ramps), 1e-6);
+}
+
+/// icsp and `highlift peak` (reduced_models::AnalysePeaks) compute the same sizing cases: for every
+/// case the network builds, the enclosure over the project domains contains reduced_models'
+/// nominal value and matches its enclosure, and at the nominal values it collapses onto it.
+TEST(DriveSystem, SizingCasesAgreeWithReducedModelsPeak) {
+  constexpr double kTolerance = 1e-6;  // relative; both sides widen eigenvalues by 1e-9
+  const Project project = LoadProject(kFlaps);
+  const DriveSystemNetwork net = BuildDriveSystemNetwork(project);
+  Box wide = net.network.InitialBox();
+  ASSERT_NE(PropagatePhysics(net, wide).status, Status::kInfeasible);
+  Box nominal = NominalBox(net);
+  ASSERT_NE(PropagatePhysics(net, nominal).status, Status::kInfeasible);
+  reduced_models::PeakOptions options;
+  options.rank = false;
+  const reduced_models::PeakReport report = reduced_models::AnalysePeaks(project, options);
+  int compared = 0, ruptures = 0;
+  auto near = [&](double ours, double theirs) { return std::fabs(ours - theirs) <= kTolerance * std::fabs(theirs); };
+  for (const reduced_models::PeakCase& pc : report.cases) {
+    const std::string p = "peak." + pc.name + ".";
+    if (net.network.FindVariable(p + "torque").value < 0) continue;  // not a scenario of the project
+    SCOPED_TRACE(pc.name);
+    ++compared;
+    ruptures += pc.kind == "rupture";
+    const Interval torque = In(net, wide, p + "torque");
+    EXPECT_LE(torque.lower(), pc.tau_dynamic.nominal);
+    EXPECT_GE(torque.upper(), pc.tau_dynamic.nominal);
+    EXPECT_LE(torque.lower(), pc.tau_dynamic.bounds.lo * (1 + kTolerance));
+    EXPECT_GE(torque.upper(), pc.tau_dynamic.bounds.hi * (1 - kTolerance));
+    EXPECT_TRUE(near(torque.lower(), pc.tau_dynamic.bounds.lo)) << torque.lower() << " vs " << pc.tau_dynamic.bounds.lo;
+    EXPECT_TRUE(near(torque.upper(), pc.tau_dynamic.bounds.hi)) << torque.upper() << " vs " << pc.tau_dynamic.bounds.hi;
+    const Interval speed = In(net, wide, p + "speed");
+    EXPECT_TRUE(near(speed.lower(), pc.w_max_bounds.lo)) << speed.lower() << " vs " << pc.w_max_bounds.lo;
+    EXPECT_TRUE(near(speed.upper(), pc.w_max_bounds.hi)) << speed.upper() << " vs " << pc.w_max_bounds.hi;
+    // At the nominal values: the same w, w1, J*, c*, tau and static torque.
+    for (const auto& [name, value] : std::vector<std::pair<std::string, double>>{
+             {"speed", pc.w_max}, {"omega", pc.omega}, {"inertia", pc.J_star}, {"stiffness", pc.c_star},
+             {"torque", pc.tau_dynamic.nominal}, {"static_torque", pc.tau_static}, {"total_torque", pc.tau_total.nominal}}) {
+      const Interval x = In(net, nominal, p + name);
+      EXPECT_TRUE(near(x.lower(), value) && near(x.upper(), value)) << name << " [" << x.lower() << ", " << x.upper() << "] vs " << value;
+    }
+  }
+  EXPECT_EQ(compared, 13);  // jam_l1 .. jam_r6 and rupture_wtb
+  EXPECT_EQ(ruptures, 1);
+}
+
+TEST(DriveSystem, NominalFlapDesignViolatesTheRuptureShaftRequirement) {
+  // A finding of the reduced-model physics: after a rupture of shaft_l1 the outboard shaft spins
+  // up to about 349 rad/s before the wing-tip brake engages (100 ms latency), and the rigid-stop
+  // peak w w1 J* = 2454 N*m plus 204 N*m back-drive, times 1.5, exceeds shaft_l7's 2791 N*m. The
+  // domains can meet the requirement (short latencies, a stiff enough shaft), the nominal design
+  // cannot, and check says so.
+  const CheckResult r = CheckDriveSystem(BuildDriveSystemNetwork(LoadProject(kFlaps)));
+  ASSERT_TRUE(r.feasible);
+  ASSERT_TRUE(r.nominal_checked);
+  EXPECT_FALSE(r.nominal_feasible);
+  EXPECT_NE(r.nominal_explanation.text.find("rupture_wtb_shaft"), std::string::npos) << r.nominal_explanation.text;
+  // The latencies that let the domains meet it: the brake must engage within about 129 ms.
+  const Interval latency = Final(r, "wtb_left.engagement_latency");
+  EXPECT_LT(latency.upper(), 150.0);
+  EXPECT_GT(latency.upper(), 100.0);
+}
+
+TEST(DriveSystem, RequirementOnAMissingSizingCaseSaysWhyItIsMissing) {
+  Project project = LoadProject(kFlaps);
+  project.load_cases.clear();  // the sizing cases need the operating speed and the airloads
+  try {
+    BuildDriveSystemNetwork(project);
+    FAIL() << "expected an InputError";
+  } catch (const InputError& e) {
+    const std::string message = e.message();
+    EXPECT_NE(message.find("travel_time.extension"), std::string::npos) << message;  // the first such requirement
+    EXPECT_NE(message.find("the sizing cases peak.<case>.* and the travel times could not be built"), std::string::npos)
+        << message;
+    EXPECT_NE(message.find("has no load cases"), std::string::npos) << message;
+  }
+}
+
 TEST(DriveSystem, InfeasibleVariantNamesTheConflictingRequirements) {
   const DriveSystemNetwork net = BuildDriveSystemNetwork(LoadProject(kInfeasible));
   const CheckResult r = CheckDriveSystem(net);
@@ -66,6 +189,10 @@ TEST(CheckCommand, FeasibleProjectExitsZero) {
   const auto r = testing::RunCli({"check", "examples/a380_class_flaps.json"});
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("all requirements can be met"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("but not by the nominal design (every parameter at its nominal value): requirements violated "
+                       "there: rupture_wtb_shaft"),
+            std::string::npos)
+      << r.out;
   EXPECT_NE(r.out.find("shaft_l0a.c"), std::string::npos);
   EXPECT_NE(r.out.find("narrowed %"), std::string::npos);
 }
@@ -112,14 +239,25 @@ TEST(CheckCommand, UsesEstimatedDomainsWhereTheProjectGivesNone) {
 }
 
 TEST(TradeoffCommand, SlicesTheSpeedDomain) {
+  // The speed's display unit is rpm: 190-310 rpm spans the design domain of 20-32 rad/s.
   const auto r = testing::RunCli({"tradeoff", "examples/a380_class_flaps_infeasible.json", "--vary",
-                                  "pdu.max_output_speed=20:32:4", "--show", "travel_time.extension,peak.jam_l1.torque",
+                                  "pdu.max_output_speed=190:310:4", "--show", "travel_time.extension,peak.jam_l1.torque",
                                   "--json"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto doc = nlohmann::json::parse(r.out);
   ASSERT_EQ(doc["rows"].size(), 4u);
-  // Every slice conflicts (too slow or too hard a jam); the project itself says so.
-  for (const auto& row : doc["rows"]) EXPECT_FALSE(row["feasible"].get<bool>()) << row.dump();
+  // Every slice conflicts (too slow for 32 s, or too hard a jam above about 25 rad/s); the
+  // project itself says so. None is outside the domain.
+  for (const auto& row : doc["rows"]) {
+    EXPECT_FALSE(row["feasible"].get<bool>()) << row.dump();
+    EXPECT_FALSE(row["outside_domain"].get<bool>()) << row.dump();
+  }
+  // The base project fixes the speed at 242 rpm: slices away from it are outside its domain, which
+  // is not the same as a design that fails.
+  const auto outside = testing::RunCli({"tradeoff", "examples/a380_class_flaps.json", "--vary",
+                                        "pdu.max_output_speed=100:200:2", "--show", "travel_time.extension"});
+  EXPECT_EQ(outside.exit_code, 0) << outside.err;
+  EXPECT_NE(outside.out.find("outside the domain"), std::string::npos) << outside.out;
   const auto ok = testing::RunCli({"tradeoff", "examples/a380_class_flaps.json", "--vary",
                                    "gra_l1.ratio=150:250:2", "--show", "travel_time.extension"});
   EXPECT_EQ(ok.exit_code, 0) << ok.err;

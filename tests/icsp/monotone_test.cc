@@ -83,5 +83,31 @@ TEST(Monotone, ConflictWithAFormulaIsProved) {
   EXPECT_EQ(Propagate(net, box).status, Status::kInfeasible);
 }
 
+TEST(Monotone, CostlyFunctionIsEvaluatedOnlyAtNewCorners) {
+  // A black box such as an eigenvalue is costly: a revision whose corners did not move reuses the
+  // last values, and a y that the box's image already fits needs no backward projection.
+  Network net;
+  const VariableId w = net.AddVariable("w", Whole());
+  const VariableId c = net.AddVariable("c", Interval(100, 400));
+  const VariableId J = net.AddVariable("J", Interval(1, 4));
+  const VariableId k = net.AddVariable("k", Interval(0, 1000));
+  int calls = 0;
+  net.AddMonotone(w, {c, J}, Frequency(&calls), {"f1", "", ConstraintRole::kPhysics});
+  AddConstraintText(net, "w <= 100", {"R1", "", ConstraintRole::kRequirement});  // never cuts [5, 20]
+  AddConstraintText(net, "k == 2 * w", {"R2", "", ConstraintRole::kRequirement});  // revisits w
+  Box box = net.InitialBox();
+  const PropagationReport report = Propagate(net, box);
+  ASSERT_EQ(report.status, Status::kFixedPoint);
+  EXPECT_EQ(calls, 2);  // the two corners, once each
+  EXPECT_NEAR(box[k.value].upper(), 40.0, 1e-9);
+  // A y that cuts into the image still projects back (and evaluates more).
+  AddConstraintText(net, "w >= 15", {"R3", "", ConstraintRole::kRequirement});
+  box = net.InitialBox();
+  calls = 0;
+  ASSERT_EQ(Propagate(net, box).status, Status::kFixedPoint);
+  EXPECT_GT(calls, 2);
+  EXPECT_NEAR(box[c.value].lower(), 225.0, 1e-6);
+}
+
 }  // namespace
 }  // namespace highlift::icsp

@@ -1,2 +1,249 @@
-// Drive-system projects to simulation models, and the scenarios (sim/src/drive_network.cc).
+// Drive-system projects to simulation models, and the scenarios (sim/src/drive_network.cc):
+// the structure of the full and reduced models, the errors, and the qualitative results the
+// issue names for the scenarios of examples/a380_class_flaps.json, with the energy balance.
+#include "highlift/sim/drive_network.h"
+
 #include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "highlift/core/error.h"
+#include "highlift/core/project_io.h"
+#include "highlift/sim/simulator.h"
+
+namespace highlift::sim {
+namespace {
+
+constexpr double kEnergyTolerance = 2e-3;  // |residual| / scale of the energy balance
+
+const Project& Example() {
+  static const Project project = LoadProject(std::string(HIGHLIFT_SOURCE_DIR) + "/examples/a380_class_flaps.json");
+  return project;
+}
+
+bool Has(const Network& net, const std::string& id, const std::string& type) {
+  const NetworkElement* e = net.Find(id);
+  return e != nullptr && e->type == type;
+}
+
+template <class F>
+void ExpectThrowsWith(F f, const std::string& text) {
+  try {
+    f();
+    ADD_FAILURE() << "no exception; expected one containing: " << text;
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(text), std::string::npos) << e.what();
+  }
+}
+
+struct Run {
+  DriveModel model;
+  MemorySink sink;
+  SimulationReport report;
+  double At(const std::string& column, double t) const {
+    const int c = sink.Column(column);
+    EXPECT_GE(c, 0) << "no column " << column;
+    if (c < 0) return NAN;
+    const auto& times = sink.times();
+    const auto it = std::lower_bound(times.begin(), times.end(), t);
+    const std::size_t i = std::min<std::size_t>(it - times.begin(), times.size() - 1);
+    return sink.rows()[i][c];
+  }
+  double MaxAbs(const std::string& column, double from = -1) const {
+    const int c = sink.Column(column);
+    EXPECT_GE(c, 0) << "no column " << column;
+    double m = 0;
+    for (std::size_t i = 0; c >= 0 && i < sink.times().size(); ++i)
+      if (sink.times()[i] >= from) m = std::max(m, std::abs(sink.rows()[i][c]));
+    return m;
+  }
+};
+
+std::unique_ptr<Run> Simulate(const Project& project, const Scenario& scenario, DriveResolution resolution,
+                              double stop_time, double output_interval = 2e-3) {
+  auto run = std::make_unique<Run>();
+  DriveNetworkOptions options;
+  options.resolution = resolution;
+  run->model = BuildDriveNetwork(project, &scenario, options);
+  Simulator simulator(run->model.network);
+  SimulationOptions o = run->model.Options(project);
+  o.stop_time = stop_time;
+  o.output_interval = output_interval;
+  o.energy = true;
+  DerivedColumnSink sink(run->model.derived, run->sink);
+  run->report = simulator.Run(o, sink);
+  EXPECT_TRUE(run->report.ok()) << run->report.FullReport();
+  return run;
+}
+
+void ExpectEnergyBalance(const SimulationReport& report) {
+  ASSERT_TRUE(report.energy.computed);
+  const double scale = report.energy.Scale();
+  EXPECT_GT(scale, 0);
+  EXPECT_LT(std::abs(report.energy.Residual()), kEnergyTolerance * scale)
+      << "source " << report.energy.source_work << " J, dissipated " << report.energy.dissipated << " J, kinetic "
+      << report.energy.kinetic_start << " -> " << report.energy.kinetic_end << " J, potential "
+      << report.energy.potential_start << " -> " << report.energy.potential_end << " J, impulsive "
+      << report.energy.impulsive_loss << " J";
+}
+
+TEST(DriveNetworkOptions, DefaultsAreValidAndResolutionsRoundTrip) {
+  DriveNetworkOptions options;
+  EXPECT_NO_THROW(options.Validate());
+  EXPECT_EQ(options.resolution, DriveResolution::kFull);
+  for (auto r : {DriveResolution::kFull, DriveResolution::kReduced}) EXPECT_EQ(ParseDriveResolution(ToString(r)), r);
+  ExpectThrowsWith([] { ParseDriveResolution("fine"); }, "model 'fine' is not a model resolution; choose 'full'");
+  options.shaft_elements = -1;
+  ExpectThrowsWith([&] { options.Validate(); }, "option shaft_elements = -1 must be 0");
+}
+
+TEST(DriveNetwork, FullModelNamesElementsAfterTheComponents) {
+  const DriveModel model = BuildDriveNetwork(Example(), {.scenario = "extension"});
+  const Network& net = model.network;
+  EXPECT_EQ(model.shaft_elements, 4);  // the project's setting, at least 4
+  EXPECT_EQ(model.load_case, "extend_opposing");
+  EXPECT_DOUBLE_EQ(model.stop_time, 40.0);
+  EXPECT_TRUE(Has(net, "pdu", "PDU"));
+  EXPECT_TRUE(Has(net, "stl_left", "TorqueLimiter"));
+  EXPECT_TRUE(Has(net, "stl_l3", "TorqueLimiter"));
+  EXPECT_TRUE(Has(net, "tgb_l3", "BranchGearbox"));
+  EXPECT_TRUE(Has(net, "gra_l3", "GearedRotaryActuator"));
+  EXPECT_TRUE(Has(net, "wtb_left", "WingTipBrake"));
+  EXPECT_TRUE(Has(net, "brg_l3", "LossyInertia"));
+  EXPECT_TRUE(Has(net, "monitor", "Monitoring"));
+  for (int i = 1; i <= 4; ++i) EXPECT_TRUE(Has(net, "shaft_l3a.e" + std::to_string(i), "SpringDamper"));
+  EXPECT_EQ(net.Find("shaft_l3a.e5"), nullptr);
+  EXPECT_TRUE(Has(net, "shaft_l3a.m0", "LossyInertia"));  // drag_per_length > 0, at the ends
+  EXPECT_TRUE(Has(net, "shaft_l3a.m2", "Inertia"));
+  EXPECT_TRUE(Has(net, "gra_l3.airload", "Torque"));
+  EXPECT_TRUE(Has(net, "gra_l3.airload_table", "CombiTable1Ds"));
+  // Airload against the output angle: 5 kN*m at 0, 20 kN*m at the travel of 2.2 rad, opposing.
+  const auto& table = net.Find("gra_l3.airload_table")->parameters.tables.at("table");
+  EXPECT_DOUBLE_EQ(table.front()[1], -5000);
+  EXPECT_DOUBLE_EQ(table.back()[0], 2.2);
+  EXPECT_DOUBLE_EQ(table.back()[1], -20000);
+  // The shaft torque column is derived from the spring-damper at port a.
+  bool derived = false;
+  for (const auto& d : model.derived)
+    if (d.name == "shaft_l3a.tau") derived = d.source == "shaft_l3a.e1.tau" && d.factor == -1.0;
+  EXPECT_TRUE(derived);
+  EXPECT_EQ(model.component_of.at("shaft_l3a.e2"), "shaft_l3a");
+}
+
+TEST(DriveNetwork, ElementsOptionSplitsEveryShaft) {
+  const DriveModel model = BuildDriveNetwork(Example(), {.shaft_elements = 7, .scenario = "extension"});
+  EXPECT_TRUE(Has(model.network, "shaft_l1.e7", "SpringDamper"));
+  EXPECT_EQ(model.network.Find("shaft_l1.e8"), nullptr);
+}
+
+TEST(DriveNetwork, ScenarioPartsRuptureAndJam) {
+  const DriveModel rupture = BuildDriveNetwork(Example(), {.scenario = "rupture_wtb"});
+  EXPECT_TRUE(Has(rupture.network, "shaft_l1.e2", "Disconnector"));  // mid-span of shaft_l1
+  EXPECT_DOUBLE_EQ(rupture.network.Find("shaft_l1.e2")->parameters.scalars.at("t_disconnect"), 1.0);
+  const DriveModel jam = BuildDriveNetwork(Example(), {.scenario = "jam_l3"});
+  ASSERT_TRUE(Has(jam.network, "gra_l3.jam", "Jam"));
+  EXPECT_DOUBLE_EQ(jam.network.Find("gra_l3.jam")->parameters.scalars.at("t_jam"), 1.0);
+  EXPECT_DOUBLE_EQ(jam.network.Find("gra_l3.jam")->parameters.scalars.at("c"), 1e5 * 200 * 200);
+  EXPECT_EQ(jam.network.Find("gra_l1.jam"), nullptr);
+}
+
+TEST(DriveNetwork, ReducedModelLumpsChainsBetweenGearboxes) {
+  const DriveModel full = BuildDriveNetwork(Example(), {.scenario = "extension"});
+  const DriveModel reduced =
+      BuildDriveNetwork(Example(), {.resolution = DriveResolution::kReduced, .scenario = "extension"});
+  EXPECT_LT(reduced.network.elements().size(), full.network.elements().size() / 2);
+  // ujoint_left - shaft_l0a - brg_l0 - shaft_l0b is one chain.
+  EXPECT_TRUE(Has(reduced.network, "ujoint_left-shaft_l0b.spring", "SpringDamper"));
+  EXPECT_EQ(reduced.network.Find("shaft_l0a.e1"), nullptr);
+  bool note = false;
+  for (const auto& n : reduced.notes) note = note || n == "ujoint_left-shaft_l0b: ujoint_left, shaft_l0a, brg_l0, shaft_l0b";
+  EXPECT_TRUE(note);
+  int shaft_columns = 0;
+  for (const auto& d : reduced.derived)
+    if (d.source == "ujoint_left-shaft_l0b.spring.tau") ++shaft_columns;
+  EXPECT_EQ(shaft_columns, 2);  // shaft_l0a.tau and shaft_l0b.tau
+}
+
+TEST(DriveNetwork, ErrorsNameTheThingAndTheRemedy) {
+  ExpectThrowsWith([] { BuildDriveNetwork(Example(), {.scenario = "rupture_wtbx"}); },
+                   "scenario 'rupture_wtbx' is not in the project; did you mean 'rupture_wtb'?");
+  Scenario jam = SizingScenario(Example(), "jam", "gra_l2");
+  EXPECT_EQ(jam.name, "jam_l2");  // the project's own scenario
+  jam.jam_component = "shaft_l1";
+  ExpectThrowsWith([&] { BuildDriveNetwork(Example(), &jam, {}); },
+                   "scenario 'jam_l2': jam component 'shaft_l1' must be a jam element or an actuator");
+  Scenario bad_case = jam;
+  bad_case.jam_component = "gra_l2";
+  bad_case.load_case = "extend_opposin";
+  ExpectThrowsWith([&] { BuildDriveNetwork(Example(), &bad_case, {}); },
+                   "scenario 'jam_l2': unknown load case 'extend_opposin'; did you mean 'extend_opposing'?");
+  Project p = Example();
+  p.FindComponent("shaft_l2a")->parameters.at("length").nominal.reset();
+  ExpectThrowsWith([&] { BuildDriveNetwork(p, {.scenario = "extension"}); },
+                   "component 'shaft_l2a' (torque_shaft): parameter 'length' has no value to simulate with");
+}
+
+TEST(DriveNetwork, SizingScenarioMadeUpForARupture) {
+  const Scenario s = SizingScenario(Example(), "rupture", "shaft_l3a");
+  EXPECT_EQ(s.name, "rupture_shaft_l3a");
+  EXPECT_EQ(s.load_case, "extend_opposing");
+  ASSERT_TRUE(s.rupture_time.has_value());
+  EXPECT_DOUBLE_EQ(*s.rupture_time, 1.0);
+  EXPECT_EQ(s.wtb_trigger, "monitor");
+}
+
+// Extension: the drive speeds up to w_max; the speed along the transmission (referred to the
+// PDU) varies only slightly, and the STL torque rises with the airloads. The GRAs' travel is
+// shortened so that the airloads sweep their table within the short run.
+TEST(DriveScenarios, ExtensionSpeedsAlongTheTransmissionAndRisingSystemLimiterTorque) {
+  Project p = Example();
+  for (auto& c : p.components)
+    if (c.type == "geared_rotary_actuator") c.parameters.at("travel_angle").nominal = 0.08;
+  const auto run = Simulate(p, *p.FindScenario("extension"), DriveResolution::kReduced, 2.0);
+  const double w_pdu = run->At("pdu.w", 1.5);
+  EXPECT_NEAR(w_pdu, 25.3, 0.5);
+  for (const std::string tip : {"appu_left.w", "appu_right.w", "fppu.w"}) {
+    EXPECT_NEAR(run->At(tip, 1.5), w_pdu, 0.02 * w_pdu) << tip;
+  }
+  const double early = std::abs(run->At("stl_left.tau", 0.6)), late = std::abs(run->At("stl_left.tau", 1.9));
+  EXPECT_GT(early, 50);
+  EXPECT_GT(late, 2.0 * early) << "STL torque " << early << " -> " << late << " N*m";
+  EXPECT_LT(run->MaxAbs("stl_left.y"), 0.5);  // the STL does not lock out in normal operation
+  ExpectEnergyBalance(run->report);
+}
+
+// Rupture of shaft_l1 at 1 s: the outboard part is back-driven, the monitor fires, the WTB
+// stops it, and the largest torque of the event outboard of the rupture is at the WTB.
+TEST(DriveScenarios, RuptureMonitorAppliesTheWingTipBrakeWhichTakesTheLargestTorque) {
+  const auto run = Simulate(Example(), *Example().FindScenario("rupture_wtb"), DriveResolution::kFull, 3.0);
+  EXPECT_GT(run->At("monitor.wtb", 3.0), 0.5);
+  EXPECT_LT(run->At("monitor.wtb", 0.99), 0.5);
+  EXPECT_LT(std::abs(run->At("appu_left.w", 3.0)), 0.5);  // stopped by the WTB
+  const double wtb = run->MaxAbs("wtb_left.tau", 1.0);
+  EXPECT_GT(wtb, 100);
+  for (const std::string shaft : {"shaft_l2a", "shaft_l3a", "shaft_l4a", "shaft_l5a", "shaft_l6", "shaft_l7"})
+    EXPECT_GT(wtb, run->MaxAbs(shaft + ".tau", 1.0)) << shaft;
+  ExpectEnergyBalance(run->report);
+}
+
+// Jam of the actuator at station l3 at 1 s: the station limiter locks out; the peak torques
+// are reported per component.
+TEST(DriveScenarios, JamLocksOutTheStationLimiterAndReportsPeaks) {
+  const auto run = Simulate(Example(), *Example().FindScenario("jam_l3"), DriveResolution::kReduced, 1.4);
+  EXPECT_LT(run->At("stl_l3.y", 0.99), 1e-9);
+  EXPECT_GT(run->MaxAbs("stl_l3.y", 1.0), 0.99);  // locked out (balls at the end stop)
+  const auto peaks = ComponentPeakTorques(run->model, Example(), run->report);
+  const auto find = [&](const std::string& id) {
+    for (const auto& p : peaks)
+      if (p.element == id) return std::abs(p.tau);
+    return -1.0;
+  };
+  EXPECT_GT(find("stl_l3"), 180);  // beyond the lock-out torque
+  // The shaft ahead of the station carries more than in normal operation (before the jam).
+  EXPECT_GT(find("shaft_l3a"), 1.5 * std::abs(run->At("shaft_l3a.tau", 0.99)));
+  ExpectEnergyBalance(run->report);
+}
+
+}  // namespace
+}  // namespace highlift::sim

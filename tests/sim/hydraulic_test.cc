@@ -1,2 +1,431 @@
-// Hydraulic components and the hydraulic PDU (sim/src/hydraulic_elements.cc).
+// Hydraulic components and the hydraulic PDU (sim/src/hydraulic_elements.cc,
+// sim/src/hydraulic_pdu.cc): analytic steady states of the orifice, the cylinder and the motor,
+// the PDU's speed step and one motor lost, the energy balance of a hydraulic drive, and the
+// messages for bad parameters and ill-posed hydraulic nodes.
 #include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <numbers>
+
+#include "highlift/core/error.h"
+#include "highlift/sim/simulator.h"
+#include "hydraulic_pdu.h"
+
+namespace highlift::sim {
+namespace {
+
+using Scalars = std::map<std::string, double>;
+
+ElementParameters P(Scalars s) { return {std::move(s), {}}; }
+
+struct RunResult {
+  MemorySink sink;
+  SimulationReport report;
+  std::vector<double> Col(const std::string& name) const { return sink.Series(name); }
+  double Last(const std::string& name) const { return sink.Series(name).back(); }
+  /// Value of column `name` at the output row nearest to time t.
+  double At(const std::string& name, double t) const {
+    const auto& times = sink.times();
+    std::size_t best = 0;
+    for (std::size_t i = 0; i < times.size(); ++i)
+      if (std::abs(times[i] - t) < std::abs(times[best] - t)) best = i;
+    return sink.Series(name)[best];
+  }
+};
+
+RunResult Simulate(const Network& net, double stop, double dt, bool energy = false, double rtol = 1e-7) {
+  RunResult r;
+  Simulator sim(net);
+  SimulationOptions o;
+  o.energy = energy;
+  o.stop_time = stop;
+  o.output_interval = dt;
+  o.relative_tolerance = rtol;
+  o.absolute_tolerance = 1e-10;
+  r.report = sim.Run(o, r.sink);
+  return r;
+}
+
+std::string ErrorOf(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// Turbulent law: V = Cd*A*sqrt(2*dp/rho). Two equal orifices in series between 200 bar and
+// 5 bar around a line volume: in the steady state the volume sits at the mean pressure and each
+// orifice carries Cd*A*sqrt(2*(dp/2)/rho). The regularisation changes the flow by a relative
+// 1/4*(dp_small/dp)^2 = 1e-8 here.
+TEST(TurbulentResistance, SteadyFlowMatchesTurbulentLaw) {
+  Network net;
+  net.AddElement("PressureSource", "supply", P({{"p_supply", 200e5}}));
+  net.AddElement("TurbulentResistance", "r1", P({{"A", 1e-6}}));
+  net.AddElement("Volume", "line", P({{"V", 1e-5}}));
+  net.AddElement("TurbulentResistance", "r2", P({{"A", 1e-6}}));
+  net.AddElement("Tank", "tank", P({{"p_return", 5e5}}));
+  net.Connect("supply.port", "r1.port_a");
+  net.Connect("r1.port_b", "line.port");
+  net.Connect("line.port", "r2.port_a");
+  net.Connect("r2.port_b", "tank.port");
+  const RunResult r = Simulate(net, 0.05, 1e-3);
+  ASSERT_TRUE(r.report.ok()) << r.report.FullReport();
+  const double dp = (200e5 - 5e5) / 2;
+  const double expected = 0.7 * 1e-6 * std::sqrt(2 * dp / 850.0);
+  EXPECT_NEAR(r.Last("line.p"), (200e5 + 5e5) / 2, 1.0);
+  EXPECT_NEAR(r.Last("r1.V_flow"), expected, 1e-6 * expected);
+  EXPECT_NEAR(r.Last("r2.V_flow"), expected, 1e-6 * expected);
+  EXPECT_NEAR(r.Last("supply.V_flow"), expected, 1e-6 * expected);  // delivered = consumed
+  EXPECT_NEAR(r.Last("tank.V_flow"), -expected, 1e-6 * expected);
+}
+
+// Near zero pressure drop the regularised law is linear: V = Cd*A*sqrt(2/rho)*dp/sqrt(dp_small).
+TEST(TurbulentResistance, RegularisedNearZeroIsLinear) {
+  Network net;
+  net.AddElement("PressureSource", "supply", P({{"p_supply", 5e5 + 100}}));
+  net.AddElement("TurbulentResistance", "r1", P({{"A", 1e-6}}));
+  net.AddElement("Volume", "line", P({{"V", 1e-7}, {"p_start", 5e5 + 50}}));
+  net.AddElement("TurbulentResistance", "r2", P({{"A", 1e-6}}));
+  net.AddElement("Tank", "tank", P({{"p_return", 5e5}}));
+  net.Connect("supply.port", "r1.port_a");
+  net.Connect("r1.port_b", "line.port");
+  net.Connect("line.port", "r2.port_a");
+  net.Connect("r2.port_b", "tank.port");
+  const RunResult r = Simulate(net, 1e-3, 1e-4);
+  ASSERT_TRUE(r.report.ok()) << r.report.FullReport();
+  const double dp = 50.0, k = 0.7 * 1e-6 * std::sqrt(2 / 850.0);
+  const double linear = k * dp / std::sqrt(1e4);
+  EXPECT_NEAR(r.Last("r1.V_flow"), linear, 1e-4 * linear);  // (dp/dp_small)^2 = 2.5e-5
+  EXPECT_NEAR(r.Last("r1.dp"), dp, 1e-6);
+}
+
+// Closed chambers: p(s) = p0 - E*ln(V(s)/V(s0)) per chamber, so the hydraulic spring has the
+// stiffness k = E*A_A^2/V_A + E*A_B^2/V_B. A force step F on the damped rod moves it by F/k.
+TEST(DifferentialCylinder, StiffnessFromBulkModulus) {
+  Network net;
+  net.AddElement("DifferentialCylinder", "cyl", P({{"s_start", 0.05}, {"d", 1.2e4}}));
+  net.AddElement("Mass", "rod", P({{"m", 1.0}}));
+  net.AddElement("TorqueStep", "force", P({{"stepTorque", 2000}, {"startTime", 0.02}}));
+  net.Connect("cyl.flange", "rod.flange_a");
+  net.Connect("force.flange", "rod.flange_b");
+  const RunResult r = Simulate(net, 0.04, 1e-4);
+  ASSERT_TRUE(r.report.ok()) << r.report.FullReport();
+  const double E = 1.2e9, A_A = 1e-3, A_B = 5e-4, V0 = 1e-5, s_max = 0.1;
+  // Equilibrium before the step (the 1 bar start pushes with p0*(A_A - A_B)) from the exact law.
+  auto net_force = [&](double s, double F) {
+    const double pA = 1e5 - E * std::log((V0 + A_A * s) / (V0 + A_A * 0.05));
+    const double pB = 1e5 - E * std::log((V0 + A_B * (s_max - s)) / (V0 + A_B * (s_max - 0.05)));
+    return pA * A_A - pB * A_B + F;
+  };
+  auto equilibrium = [&](double F) {
+    double lo = 0.04, hi = 0.06;
+    for (int i = 0; i < 200; ++i) ((net_force(0.5 * (lo + hi), F) > 0) ? lo : hi) = 0.5 * (lo + hi);
+    return 0.5 * (lo + hi);
+  };
+  const double s1 = r.At("cyl.s", 0.0199), s2 = r.Last("cyl.s");
+  EXPECT_NEAR(s1, equilibrium(0.0), 1e-9);
+  EXPECT_NEAR(s2, equilibrium(2000.0), 1e-9);
+  const double V_A = V0 + A_A * 0.05, V_B = V0 + A_B * 0.05;
+  const double k = E * A_A * A_A / V_A + E * A_B * A_B / V_B;  // 2.857e7 N/m
+  EXPECT_NEAR(2000.0 / (s2 - s1), k, 2e-3 * k);
+  EXPECT_NEAR(r.Last("cyl.f"), -2000.0, 1e-3);  // the cylinder holds the load
+}
+
+// A motor at displacement eps fed through an orifice, driving a damped inertia: in the steady
+// state w = (V_flow - G_leak*dp)/(eps*D_max) and eta_m*eps*D_max*dp = d*w.
+TEST(VariableDisplacementMotor, SpeedFromDisplacementAndFlow) {
+  Network net;
+  net.AddElement("PressureSource", "supply", P({{"p_supply", 200e5}}));
+  net.AddElement("TurbulentResistance", "line", P({{"A", 2e-6}}));
+  net.AddElement("Volume", "inlet", P({{"V", 1e-5}}));
+  net.AddElement("VariableDisplacementMotor", "motor", P({{"D_max", 1e-6}, {"G_leak", 1e-12}}));
+  net.AddElement("Tank", "tank");
+  net.AddElement("Constant", "swash", P({{"k", 0.5}}));
+  net.AddElement("Inertia", "rotor", P({{"J", 1e-3}}));
+  net.AddElement("Damper", "load", P({{"d", 0.01}}));
+  net.AddElement("Fixed", "ground");
+  net.Connect("supply.port", "line.port_a");
+  net.Connect("line.port_b", "inlet.port");
+  net.Connect("inlet.port", "motor.port_A");
+  net.Connect("motor.port_B", "tank.port");
+  net.Connect("swash.y", "motor.eps");
+  net.Connect("motor.flange", "rotor.flange_a");
+  net.Connect("rotor.flange_b", "load.flange_a");
+  net.Connect("load.flange_b", "ground.flange");
+  const RunResult r = Simulate(net, 3.0, 1e-2);
+  ASSERT_TRUE(r.report.ok()) << r.report.FullReport();
+  const double q = r.Last("line.V_flow"), dp = r.Last("motor.dp"), w = r.Last("rotor.w");
+  EXPECT_GT(w, 100.0);
+  EXPECT_NEAR(w, (q - 1e-12 * dp) / (0.5 * 1e-6), 1e-5 * w);
+  EXPECT_NEAR(0.95 * 0.5 * 1e-6 * dp, 0.01 * w, 1e-5 * 0.01 * w);
+  EXPECT_NEAR(r.Last("motor.tau"), 0.01 * w, 1e-5 * 0.01 * w);
+}
+
+// Energy balance of a valve-controlled motor drive (servo valve opening, motor accelerating a
+// load, then reversing): supply work = kinetic + stored (oil, springs) + losses.
+TEST(HydraulicDrive, EnergyBalances) {
+  Network net;
+  net.AddElement("PressureSource", "supply", P({{"p_supply", 207e5}}));
+  net.AddElement("TurbulentResistance", "line", P({{"A", 2e-5}}));
+  net.AddElement("Volume", "p_line", P({{"V", 2e-5}, {"p_start", 207e5}}));
+  net.AddElement("ServoValve", "valve", P({{"A_max", 5e-6}}));
+  net.AddElement("Volume", "a_line", P({{"V", 1e-5}}));
+  net.AddElement("Volume", "b_line", P({{"V", 1e-5}}));
+  net.AddElement("Tank", "tank");
+  net.AddElement("Sine", "command", P({{"amplitude", 1.0}, {"f", 2.0}}));
+  net.AddElement("VariableDisplacementMotor", "motor", P({}));
+  net.AddElement("Constant", "swash", P({{"k", 1.0}}));
+  net.AddElement("Inertia", "rotor", P({{"J", 0.01}}));
+  net.AddElement("SpringDamper", "load", P({{"c", 50}, {"d", 0.02}}));
+  net.AddElement("Fixed", "ground");
+  net.Connect("supply.port", "line.port_a");
+  net.Connect("line.port_b", "p_line.port");
+  net.Connect("p_line.port", "valve.port_P");
+  net.Connect("valve.port_T", "tank.port");
+  net.Connect("valve.port_A", "a_line.port");
+  net.Connect("valve.port_B", "b_line.port");
+  net.Connect("a_line.port", "motor.port_A");
+  net.Connect("b_line.port", "motor.port_B");
+  net.Connect("command.y", "valve.u");
+  net.Connect("swash.y", "motor.eps");
+  net.Connect("motor.flange", "rotor.flange_a");
+  net.Connect("rotor.flange_b", "load.flange_a");
+  net.Connect("load.flange_b", "ground.flange");
+  const RunResult r = Simulate(net, 0.5, 1e-4, true, 1e-8);
+  ASSERT_TRUE(r.report.ok()) << r.report.FullReport();
+  const EnergyBalance& e = r.report.energy;
+  ASSERT_TRUE(e.computed);
+  EXPECT_GT(e.source_work, 10.0);
+  EXPECT_GT(e.dissipated, 1.0);
+  EXPECT_LT(std::abs(e.Residual()), 1e-3 * e.Scale())
+      << "source " << e.source_work << " dissipated " << e.dissipated << " kinetic "
+      << e.kinetic_end - e.kinetic_start << " potential " << e.potential_end - e.potential_start;
+}
+
+// The cylinder's chambers store V*p^2/(2E); the work of the linear law with a varying volume
+// is reported as the cylinder's source power, so a cylinder stroked by a valve balances too.
+TEST(DifferentialCylinder, EnergyBalancesWhenStroked) {
+  Network net;
+  net.AddElement("PressureSource", "supply", P({{"p_supply", 345e5}}));
+  net.AddElement("ServoValve", "valve", P({{"A_max", 1e-6}}));
+  net.AddElement("Tank", "tank");
+  net.AddElement("Sine", "command", P({{"amplitude", 0.5}, {"f", 5.0}}));
+  net.AddElement("DifferentialCylinder", "cyl",
+                 P({{"A_A", 1e-4}, {"A_B", 5e-5}, {"s_max", 0.02}, {"V0_A", 1e-6}, {"V0_B", 1e-6},
+                    {"s_start", 0.01}}));
+  net.AddElement("Mass", "rod", P({{"m", 0.1}}));
+  net.Connect("supply.port", "valve.port_P");
+  net.Connect("valve.port_T", "tank.port");
+  net.Connect("valve.port_A", "cyl.port_A");
+  net.Connect("valve.port_B", "cyl.port_B");
+  net.Connect("command.y", "valve.u");
+  net.Connect("cyl.flange", "rod.flange_a");
+  const RunResult r = Simulate(net, 0.3, 1e-4, true, 1e-8);
+  ASSERT_TRUE(r.report.ok()) << r.report.FullReport();
+  const EnergyBalance& e = r.report.energy;
+  EXPECT_GT(e.dissipated, 0.1);
+  EXPECT_LT(std::abs(e.Residual()), 1e-3 * e.Scale()) << "residual " << e.Residual();
+}
+
+TEST(Hydraulics, NodeWithoutVolumeIsRejectedByName) {
+  Network net;
+  net.AddElement("PressureSource", "supply");
+  net.AddElement("TurbulentResistance", "r1");
+  net.AddElement("TurbulentResistance", "r2");
+  net.AddElement("Tank", "tank");
+  net.Connect("supply.port", "r1.port_a");
+  net.Connect("r1.port_b", "r2.port_a");
+  net.Connect("r2.port_b", "tank.port");
+  const std::string message = ErrorOf([&] { Simulator sim(net); });
+  EXPECT_NE(message.find("r1.port_b, r2.port_a"), std::string::npos) << message;
+  EXPECT_NE(message.find("no volume and no source"), std::string::npos) << message;
+  EXPECT_NE(message.find("connect a Volume"), std::string::npos) << message;
+}
+
+TEST(Hydraulics, TwoSourcesOnOneNodeAreRejected) {
+  Network net;
+  net.AddElement("PressureSource", "supply");
+  net.AddElement("Tank", "tank");
+  net.Connect("supply.port", "tank.port");
+  const std::string message = ErrorOf([&] { Simulator sim(net); });
+  EXPECT_NE(message.find("two pressure sources, 'supply' and 'tank'"), std::string::npos) << message;
+}
+
+TEST(Hydraulics, HydraulicPortCannotJoinFlange) {
+  Network net;
+  net.AddElement("Tank", "tank");
+  net.AddElement("Inertia", "rotor", P({{"J", 1}}));
+  const std::string message = ErrorOf([&] { net.Connect("tank.port", "rotor.flange_a"); });
+  EXPECT_NE(message.find("a hydraulic port cannot be connected to a flange port"), std::string::npos)
+      << message;
+}
+
+TEST(Hydraulics, BadParametersAreRejectedWithMessages) {
+  {
+    Network net;
+    const std::string message =
+        ErrorOf([&] { net.AddElement("TurbulentResistance", "orifice", P({{"A", -1e-6}})); });
+    EXPECT_NE(message.find("orifice"), std::string::npos) << message;
+    EXPECT_NE(message.find("'A'"), std::string::npos) << message;
+  }
+  {
+    Network net;
+    const std::string message = ErrorOf([&] { net.AddElement("Volume", "line", P({{"V", 0.0}})); });
+    EXPECT_NE(message.find("'V'"), std::string::npos) << message;
+  }
+  {
+    Network net;
+    const std::string message =
+        ErrorOf([&] { net.AddElement("VariableDisplacementMotor", "motor", P({{"eta_m", 1.2}})); });
+    EXPECT_NE(message.find("'eta_m'"), std::string::npos) << message;
+  }
+  {
+    Network net;
+    net.AddElement("DifferentialCylinder", "cyl", P({{"s_start", 0.2}}));
+    net.AddElement("Mass", "rod", P({{"m", 1}}));
+    net.Connect("cyl.flange", "rod.flange_a");
+    const std::string message = ErrorOf([&] { Simulator sim(net); });
+    EXPECT_NE(message.find("element 'cyl' (DifferentialCylinder): parameter 's_start' = 0.2"),
+              std::string::npos)
+        << message;
+    EXPECT_NE(message.find("outside the stroke"), std::string::npos) << message;
+  }
+  {
+    Network net;
+    net.AddElement("ServoValve", "valve", P({{"leakage", 2.0}}));
+    net.AddElement("Constant", "u", P({{"k", 0}}));
+    net.Connect("u.y", "valve.u");
+    const std::string message = ErrorOf([&] { Simulator sim(net); });
+    EXPECT_NE(message.find("element 'valve' (ServoValve): parameter 'leakage' = 2"), std::string::npos)
+        << message;
+  }
+}
+
+// A PDU with the A380-class numbers (345 bar) driving both wings: each wing a root shaft
+// (1900 N*m/rad) to an inertia carrying 360 N*m of opposing airload (domain.md s3).
+Component HydraulicPduComponent() {
+  Component pdu;
+  pdu.id = "pdu";
+  pdu.type = "pdu";
+  pdu.texts["drive"] = "hydraulic";
+  pdu.parameters["supply_pressure"].nominal = 345e5;
+  return pdu;
+}
+
+Network PduRig(const Component& pdu, double w_step, double t_step) {
+  Network net;
+  const detail::PduPorts ports = detail::AddHydraulicPdu(net, pdu);
+  net.AddElement("Step", "command", P({{"height", w_step}, {"startTime", t_step}}));
+  net.Connect("command.y", ports.w_ref);
+  net.AddElement("Fixed", "ground");
+  for (const std::string side : {"left", "right"}) {
+    // Wing: shaft stiffness to the lumped wing inertia, which carries the opposing airload
+    // (applied with the command, so the drive holds it from standstill).
+    net.AddElement("SpringDamper", "shaft_" + side, P({{"c", 1900}, {"d", 2}}));
+    net.AddElement("Inertia", "wing_" + side, P({{"J", 0.15}}));
+    net.AddElement("TorqueStep", "airload_" + side, P({{"stepTorque", -360}, {"startTime", t_step}}));
+    net.Connect(side == "left" ? ports.flange_left : ports.flange_right, "shaft_" + side + ".flange_a");
+    net.Connect("shaft_" + side + ".flange_b", "wing_" + side + ".flange_a");
+    net.Connect("wing_" + side + ".flange_b", "airload_" + side + ".flange");
+  }
+  return net;
+}
+
+// Stated response: after a step of the command from 0 to w_max = 25.3 rad/s the output speed is
+// within 2 % of it 0.6 s later and stays there, against 720 N*m of airload applied with the
+// step (back-driven at first: the worst case; the scenarios ramp the command over 0.4 s).
+TEST(HydraulicPdu, FollowsSpeedStepWithinStatedTime) {
+  const Component pdu = HydraulicPduComponent();
+  ASSERT_TRUE(detail::IsHydraulicPdu(pdu));
+  const RunResult r = Simulate(PduRig(pdu, 25.3, 0.05), 1.0, 1e-3, false, 1e-6);
+  ASSERT_TRUE(r.report.ok()) << r.report.FullReport();
+  const auto w = r.Col("pdu.w");
+  const auto& t = r.sink.times();
+  if (std::getenv("HYDRAULIC_TRACE") != nullptr)
+    for (double ti = 0.0; ti <= 1.0; ti += 0.025)
+      std::printf("t %.3f w %.3f eps %.3f eps_ref %.3f u %.3f z %.3f ps %.1f bar\n", ti, r.At("pdu.w", ti),
+                  r.At("pdu.control1.eps", ti), r.At("pdu.control1.eps_ref", ti), r.At("pdu.control1.u", ti),
+                  r.At("pdu.control1.z", ti), r.At("pdu.supply_volume.p", ti) * 1e-5);
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    if (t[i] < 0.05) {
+      EXPECT_NEAR(w[i], 0.0, 0.01) << "t = " << t[i];  // settling of the 1-bar start
+    }
+    if (t[i] >= 0.65) {
+      EXPECT_NEAR(w[i], 25.3, 0.02 * 25.3) << "t = " << t[i];
+    }
+  }
+  EXPECT_NEAR(w.back(), 25.3, 1e-3 * 25.3);  // the integral action removes the load error
+  // Torque at the output: both wings' airload, through the motors at a part displacement.
+  EXPECT_NEAR(r.Last("shaft_left.tau") + r.Last("shaft_right.tau"), 720.0, 2.0);
+  const double eps = r.Last("pdu.motor1.eps");
+  EXPECT_GT(eps, 0.3);
+  EXPECT_LT(eps, 1.0);
+  EXPECT_NEAR(r.Last("pdu.motor1.w"), 20 * 25.3, 0.01 * 20 * 25.3);
+}
+
+// One motor lost: its displacement goes to 0 and its pressure-off brake holds it; the remaining
+// motor keeps its speed, so the differential delivers half the output speed, and the full
+// stall torque remains available (the same motor torque reaches the output).
+TEST(HydraulicPdu, OneMotorLostGivesHalfSpeed) {
+  Component pdu = HydraulicPduComponent();
+  pdu.parameters["motor_lost_time"].nominal = 0.6;
+  const RunResult r = Simulate(PduRig(pdu, 25.3, 0.05), 1.4, 1e-3, false, 1e-6);
+  ASSERT_TRUE(r.report.ok()) << r.report.FullReport();
+  EXPECT_NEAR(r.At("pdu.w", 0.55), 25.3, 0.02 * 25.3);
+  EXPECT_NEAR(r.Last("pdu.w"), 25.3 / 2, 0.02 * 25.3 / 2);
+  EXPECT_NEAR(r.Last("pdu.rotor2.w"), 0.0, 1e-3);
+  EXPECT_NEAR(r.Last("pdu.motor1.w"), 20 * 25.3, 0.02 * 20 * 25.3);
+  // The same airload at half speed: the remaining motor delivers the torque of two (the
+  // differential's torque ratio does not change; the brake reacts the lost motor's side).
+  EXPECT_NEAR(r.Last("pdu.motor1.tau"), 2 * r.At("pdu.motor1.tau", 0.55), 0.03 * r.Last("pdu.motor1.tau"));
+}
+
+TEST(HydraulicPdu, FullTorqueWithOneMotor) {
+  // Stall: a stiff load and a large command; with one motor braked the remaining motor at full
+  // displacement holds the same output torque as two motors (the differential halves speed,
+  // not torque).
+  auto stall_torque = [](bool lost) {
+    Component pdu = HydraulicPduComponent();
+    if (lost) pdu.parameters["motor_lost_time"].nominal = 0.0;
+    Network net;
+    const detail::PduPorts ports = detail::AddHydraulicPdu(net, pdu);
+    net.AddElement("Constant", "command", P({{"k", 25.3}}));
+    net.Connect("command.y", ports.w_ref);
+    net.AddElement("Fixed", "ground");
+    net.AddElement("SpringDamper", "jam", P({{"c", 2e4}, {"d", 500}}));
+    net.Connect(ports.flange_left, "jam.flange_a");
+    net.Connect("jam.flange_b", "ground.flange");
+    const RunResult r = Simulate(net, 0.6, 1e-2, false, 1e-6);
+    EXPECT_TRUE(r.report.ok()) << r.report.FullReport();
+    return -r.Last("jam.tau");
+  };
+  const double both = stall_torque(false), one = stall_torque(true);
+  EXPECT_NEAR(both, 1000.0, 50.0);  // sized from stall_torque = 1000 N*m
+  EXPECT_NEAR(one, both, 0.02 * both);
+}
+
+TEST(HydraulicPdu, BadSettingsAreRejected) {
+  Component pdu = HydraulicPduComponent();
+  pdu.texts["drive"] = "hydrolic";
+  EXPECT_NE(ErrorOf([&] { detail::IsHydraulicPdu(pdu); })
+                .find("component 'pdu' (pdu): parameter 'drive' = \"hydrolic\" is not a drive kind"),
+            std::string::npos);
+  pdu = HydraulicPduComponent();
+  pdu.parameters.erase("supply_pressure");
+  Network net;
+  EXPECT_NE(ErrorOf([&] { detail::AddHydraulicPdu(net, pdu); })
+                .find("needs parameter 'supply_pressure'; give the aircraft system pressure"),
+            std::string::npos);
+  pdu = HydraulicPduComponent();
+  pdu.parameters["motor_count"].nominal = 3;
+  Network net3;
+  EXPECT_NE(ErrorOf([&] { detail::AddHydraulicPdu(net3, pdu); }).find("'motor_count' = 3"),
+            std::string::npos);
+}
+
+}  // namespace
+}  // namespace highlift::sim

@@ -17,7 +17,18 @@ namespace highlift {
 enum class PortKind {
   kFlange,  ///< rotational mechanical flange (phi, tau)
   kSignal,  ///< real-valued signal (e.g. a sensor output, a brake command)
+  kHydraulic,  ///< hydraulic port (p, V_flow): connected ports form a node with one pressure
 };
+
+/// "flange", "signal" or "hydraulic" (reports, JSON, the component reference).
+inline const char* PortKindName(PortKind kind) {
+  switch (kind) {
+    case PortKind::kFlange: return "flange";
+    case PortKind::kSignal: return "signal";
+    case PortKind::kHydraulic: return "hydraulic";
+  }
+  return "flange";
+}
 
 struct PortSpec {
   std::string name;         ///< e.g. "input", "output", "branch", "left", "right"

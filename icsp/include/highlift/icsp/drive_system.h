@@ -5,13 +5,16 @@
 //
 // Names: "<component>.<parameter>" for parameters; derived quantities:
 //   <shaft>.polar_moment, .c (stiffness), .J (inertia), .mass, .torque_capacity, .drive_torque,
-//   .shear_stress; <gra>.max_load, .input_torque_opposing, .input_torque_aiding,
-//   .reflected_inertia; <branch gearbox>.station_torque; <limiter>.torque_through, .margin;
-//   <wtb>.holding_torque, .holding_margin; pdu.reflected_inertia, pdu.output_torque,
-//   pdu.required_power; travel_time.extension; peak.<scenario>.stiffness / .inertia / .speed /
-//   .torque and peak.<scenario>.<component> for the components the peak load passes through
-//   (the paper's equation (1), tau = w * sqrt(c* J*), with c* the series stiffness of the shafts
-//   on the load path and J* the inertia that the stop must absorb).
+//   .shear_stress; <component>.reflected_inertia / .reflected_stiffness (at the PDU speed);
+//   <gra>.max_load, .input_torque_opposing, .input_torque_aiding; <branch gearbox>.station_torque;
+//   <limiter>.torque_through, .margin; <wtb>.holding_torque, .holding_margin; pdu.output_torque,
+//   pdu.required_power, pdu.operating_speed; travel_time.<load case> and travel_time.extension
+//   (with the ramps of the speed profile); and for the sizing cases of reduced_models (`highlift
+//   peak`) that a scenario names or a requirement mentions: peak.<case>.speed / .omega (first
+//   eigenfrequency, a monotone black box over reduced_models' lumped model) / .inertia (J*) /
+//   .stiffness (c* = J* w1^2) / .torque (the paper's equation (1), w sqrt(c* J*)) /
+//   .static_torque / .total_torque, and peak.<case>.<component> for the components the peak
+//   passes through. docs/icsp.md describes the physics.
 #pragma once
 
 #include <map>
@@ -29,6 +32,7 @@ struct DriveSystemNetwork {
   std::map<int, std::string> requirement_of;  ///< constraint index -> requirement id
   int physics_constraints = 0;
   int requirement_constraints = 0;
+  std::vector<std::pair<int, double>> nominal;  ///< variable index -> the parameter's nominal value (SI)
 };
 
 /// Builds the network. Throws InputError when a requirement does not parse or names an unknown
@@ -50,9 +54,16 @@ struct CheckResult {
   std::vector<ParameterResult> parameters;
   bool feasible = true;
   Explanation explanation;     ///< when infeasible
+  /// The nominal design: every parameter with a nominal value fixed at it. When the domains can
+  /// meet the requirements but the nominal values cannot, this names what the nominal design
+  /// violates (the domains were narrowed away from it).
+  bool nominal_checked = false;
+  bool nominal_feasible = true;
+  Explanation nominal_explanation;  ///< when the nominal design is infeasible
 };
 
-/// Propagates the project network and, when infeasible, explains it.
+/// Propagates the project network and, when infeasible, explains it; when feasible, also checks
+/// the nominal design and explains what it violates.
 CheckResult CheckDriveSystem(const DriveSystemNetwork& net, const PropagationOptions& options = {});
 
 /// Value in SI converted to `unit` for display (SI when the unit is empty or not convertible).

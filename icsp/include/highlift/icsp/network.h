@@ -146,6 +146,7 @@ class Network {
   /// Nodes of an expression constraint in topological order (operands first).
   std::span<const int> TopoOf(ConstraintId c) const;
   const MonotoneFunction& monotone(int index) const { return monotone_[index]; }
+  int num_monotone() const { return static_cast<int>(monotone_.size()); }
 
   /// g OP 0 as text with variable names, e.g. "tau - 1 * sqrt(c * J) == 0"; for a monotone
   /// constraint "y = f(x1, x2)".

@@ -3,7 +3,9 @@
 // after the rupture of every shaft segment), with interval enclosures and parameter ranking.
 #pragma once
 
+#include <map>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -105,5 +107,56 @@ struct PeakOptions {
 };
 /// Throws InputError when `only_case` names no case (listing the cases).
 PeakReport AnalysePeaks(const Project& project, const PeakOptions& options = {});
+
+}  // namespace highlift::reduced_models
+
+namespace highlift::reduced_models {
+
+/// The structure of the sizing cases of AnalysePeaks, for constraint solvers that rebuild the
+/// same single-DOF physics over their own parameter domains (icsp): the component graph seen from
+/// the PDU, and per case the transmission in focus with the stop, so that a caller can fill in
+/// the reflected inertias and stiffnesses, build the lumped model (BuildLumpedModel with
+/// `elements` sub-elements) and take its first eigenfrequency with the stop clamped.
+struct PeakGraphNode {
+  std::string id;           ///< component id
+  std::string type;         ///< component type
+  int parent = -1;          ///< index of the upstream node, -1 for the PDU
+  std::string gear;         ///< the gearbox whose ratio divides the speed from the parent to this
+                            ///< node (an angle gearbox's output, a branch gearbox's branch); empty if none
+  std::vector<int> children;
+};
+
+struct PeakCaseStructure {
+  std::string name;                    ///< as PeakCase::name
+  std::string kind;                    ///< "jam" or "rupture"
+  std::string component;               ///< jammed actuator or ruptured shaft
+  std::string acts_at;                 ///< jammed station or wing-tip brake
+  std::vector<std::string> load_path;  ///< as PeakCase::load_path
+  int root = -1;                       ///< graph node the part in focus starts at (-1: the whole graph)
+  std::vector<int> part;               ///< graph nodes in focus
+  Transmission transmission;           ///< the part in focus at nominal values
+  std::vector<int> point_of_node;      ///< per graph node: the point holding its concentrated inertia (-1 outside)
+  std::vector<int> link_of_node;       ///< per graph node: its link (shaft or elastic component), -1 if none
+  int stop_point = -1;                 ///< the transmission point that is clamped
+  std::string sensor;                  ///< rupture: the position sensor whose thresholds trip the brake ("" none)
+  std::string brake;                   ///< rupture: the wing-tip brake
+};
+
+struct PeakStructure {
+  std::vector<PeakGraphNode> nodes;            ///< parents before children
+  int elements_per_segment = 1;                ///< sub-elements per link in the lumped model
+  double w_operating = 0.0;                    ///< rad/s, largest PDU speed of the load cases
+  double w_reference = 0.0;                    ///< rad/s, the PDU's max_output_speed (overspeed reference)
+  std::map<std::string, double> aiding;        ///< actuator -> aiding output torque (<= 0) of the rupture
+  std::vector<PeakCaseStructure> cases;        ///< same order and names as AnalysePeaks
+};
+/// The structure behind AnalysePeaks(project, options) (options.only_case is ignored).
+PeakStructure DescribePeaks(const Project& project, const PeakOptions& options = {});
+
+/// The value the reduced models read for a parameter: the component's own, else the catalogue
+/// default (throws InputError naming the parameter when there is none).
+double ReducedModelValue(const Component& component, std::string_view name);
+/// Whether the reduced models find a value for the parameter (own or catalogue default).
+bool HasReducedModelValue(const Component& component, std::string_view name);
 
 }  // namespace highlift::reduced_models
