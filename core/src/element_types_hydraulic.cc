@@ -22,6 +22,7 @@ PortSpec Hydraulic(std::string name, std::string description, bool required = tr
 
 void AppendHydraulicTypes(std::vector<ComponentTypeSpec>& types) {
   using namespace dimensions;
+  const std::size_t first = types.size();
   const Domain any = Domain::Whole();
   const Domain non_negative{0.0, kInf};
   const Domain positive{std::nextafter(0.0, 1.0), kInf};
@@ -134,6 +135,10 @@ void AppendHydraulicTypes(std::vector<ComponentTypeSpec>& types) {
                        {Flange("flange_a", "flange, translational (rigidly tied to flange_b)", false),
                         Flange("flange_b", "flange, translational (rigidly tied to flange_a)", false)},
                        {Scalar("m", Mass(), "kg", std::nullopt, non_negative, "mass")}));
+  // Provenance: the HighLift library's classes (the translational Mass is the MSL's).
+  for (std::size_t k = first; k < types.size(); ++k)
+    if (types[k].name != "Mass")
+      for (auto& p : types[k].parameters) p.source = "HighLift.Hydraulics." + types[k].name;
 }
 
 }  // namespace highlift::element_types

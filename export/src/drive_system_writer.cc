@@ -121,6 +121,7 @@ class DriveSystemWriter {
   // --- instances of the components ---
   void EmitComponent(const Component& c);
   void EmitPdu(const Component& c);
+  void EmitHydraulicPdu(const Component& c);  // drive = "hydraulic" (docs/hydraulics.md)
   void EmitTorqueLimiter(const Component& c);
   void EmitShaftFull(const Component& c);
   void EmitSteadyBearing(const Component& c);
@@ -200,7 +201,158 @@ std::string DriveSystemWriter::TableModifier(const std::string& name,
   return name;
 }
 
+// The hydraulic PDU: the parts of sim/src/hydraulic_pdu.cc (AddHydraulicPdu) as instances of
+// HighLift.Hydraulics and the MSL, with the same values and connections.
+void DriveSystemWriter::EmitHydraulicPdu(const Component& c) {
+  auto value = [&](const std::string& param) {
+    if (auto v = Value(c, param)) return *v;
+    const ComponentTypeSpec* spec = FindComponentType("pdu");
+    const ParameterSpec* p = spec ? spec->FindParameter(param) : nullptr;
+    if (p && p->nominal) return *p->nominal;
+    return RequireValue(c, param);  // throws naming the parameter
+  };
+  auto real = [&](double v, const std::string& param) { return Real(v, c, param); };
+  const int n_m = static_cast<int>(ValueOr(c, "motor_count", 2));
+  if (n_m != 1 && n_m != 2)
+    throw InputError("component '" + c.id + "' (pdu): parameter 'motor_count' = " + std::to_string(n_m) +
+                         "; the hydraulic drive sums 1 or 2 motors (one differential); use 1 or 2",
+                     c.where);
+  const double ratio = value("ratio"), p_s = value("supply_pressure"), p_r = value("return_pressure");
+  const double eta_m = value("motor_mechanical_efficiency") * value("efficiency");
+  const double D_max = Value(c, "motor_displacement")
+                           ? *Value(c, "motor_displacement")
+                           : value("stall_torque") / (n_m * ratio * eta_m * (p_s - p_r));
+  const double s_max = value("cylinder_stroke");
+  const std::string supply = Name(c.id + "_supply"), tank = Name(c.id + "_tank");
+  const std::string line = Name(c.id + "_supply_line"), volume = Name(c.id + "_supply_volume");
+  Add("HighLift.Hydraulics.PressureSource", supply, {{"p_supply", real(p_s, "supply_pressure"), {}}}, "hydraulic supply");
+  Add("HighLift.Hydraulics.Tank", tank, {{"p_return", real(p_r, "return_pressure"), {}}}, "return line");
+  Add("HighLift.Hydraulics.TurbulentResistance", line, {{"A", real(value("supply_line_area"), "supply_line_area"), {}}},
+      "supply line and filters");
+  Add("HighLift.Hydraulics.Volume", volume,
+      {{"V", real(value("supply_volume"), "supply_volume"), {}}, {"p_start", real(p_s, "supply_pressure"), {}}},
+      "oil volume of the supply line");
+  writer_.AddConnect(supply + ".port", line + ".port_a");
+  writer_.AddConnect(line + ".port_b", volume + ".port");
+  const std::string w_ref = Name(c.id + "_w_ref");
+  Add("Modelica.Blocks.Math.Gain", w_ref, {{"k", "1", {}}}, "PDU output speed command to the motors");
+  std::optional<double> t_lost;
+  if (scenario_)
+    if (auto it = scenario_->values.find("motor_lost_time"); it != scenario_->values.end()) t_lost = it->second;
+  std::vector<std::string> rotors;
+  for (int k = 1; k <= n_m; ++k) {
+    const std::string n = std::to_string(k);
+    const std::string valve = Name(c.id + "_valve" + n), cylinder = Name(c.id + "_cylinder" + n);
+    const std::string rod = Name(c.id + "_rod" + n), control = Name(c.id + "_control" + n);
+    const std::string motor = Name(c.id + "_motor" + n), rotor = Name(c.id + "_rotor" + n);
+    const std::string active = Name(c.id + "_active" + n);
+    Add("HighLift.Hydraulics.ServoValve", valve,
+        {{"A_max", real(value("valve_area"), "valve_area"), {}},
+         {"T_v", real(value("valve_time_constant"), "valve_time_constant"), {}}},
+        "servo valve of the displacement cylinder of motor " + n);
+    Add("HighLift.Hydraulics.DifferentialCylinder", cylinder,
+        {{"A_A", real(value("cylinder_area"), "cylinder_area"), {}},
+         {"A_B", real(value("cylinder_annulus_area"), "cylinder_annulus_area"), {}},
+         {"s_max", real(s_max, "cylinder_stroke"), {}},
+         {"V0_A", real(value("cylinder_dead_volume"), "cylinder_dead_volume"), {}},
+         {"V0_B", real(value("cylinder_dead_volume"), "cylinder_dead_volume"), {}},
+         {"d", real(value("cylinder_damping"), "cylinder_damping"), {}},
+         {"s_start", real(0.5 * s_max, "cylinder_stroke"), {}}},
+        "displacement cylinder of motor " + n + " (mid-stroke: zero displacement)");
+    Add("Modelica.Mechanics.Translational.Components.Mass", rod, {{"m", real(value("cylinder_mass"), "cylinder_mass"), {}}},
+        "piston, rod and swash plate of motor " + n);
+    Add("HighLift.Hydraulics.MotorSpeedControl", control,
+        {{"ratio", real(ratio, "ratio"), {}},
+         {"k_w", real(value("speed_gain"), "speed_gain"), {}},
+         {"T_i", real(value("speed_integral_time"), "speed_integral_time"), {}},
+         {"k_s", real(value("position_gain"), "position_gain"), {}},
+         {"s_max", real(s_max, "cylinder_stroke"), {}}},
+        "speed loop of motor " + n);
+    Add("HighLift.Hydraulics.VariableDisplacementMotor", motor,
+        {{"D_max", real(D_max, "motor_displacement"), {}},
+         {"G_leak", real(value("motor_leakage"), "motor_leakage"), {}},
+         {"eta_m", real(eta_m, "motor_mechanical_efficiency"), {}}},
+        "variable-displacement motor " + n + " (eta_m includes the PDU gearbox efficiency)");
+    Add("Modelica.Mechanics.Rotational.Components.Inertia", rotor, {{"J", real(value("motor_inertia"), "motor_inertia"), {}}},
+        "rotor of motor " + n);
+    const bool lost = t_lost && k == n_m;
+    if (lost)
+      Add("Modelica.Blocks.Sources.Step", active,
+          {{"height", "-1", {}}, {"offset", "1", {}}, {"startTime", FormatModelicaReal(*t_lost, "motor_lost_time"), {}}},
+          "motor " + n + " lost");
+    else
+      Add("Modelica.Blocks.Sources.Constant", active, {{"k", "1", {}}}, "motor " + n + " in operation");
+    writer_.AddConnect(valve + ".port_P", volume + ".port");
+    writer_.AddConnect(valve + ".port_T", tank + ".port");
+    writer_.AddConnect(valve + ".port_A", cylinder + ".port_A");
+    writer_.AddConnect(valve + ".port_B", cylinder + ".port_B");
+    writer_.AddConnect(cylinder + ".flange", rod + ".flange_a");
+    writer_.AddConnect(w_ref + ".y", control + ".w_ref");
+    writer_.AddConnect(active + ".y", control + ".active");
+    writer_.AddConnect(rotor + ".flange_a", control + ".flange_m");
+    writer_.AddConnect(rod + ".flange_b", control + ".flange_s");
+    writer_.AddConnect(control + ".u", valve + ".u");
+    writer_.AddConnect(control + ".eps", motor + ".eps");
+    writer_.AddConnect(motor + ".port_A", volume + ".port");
+    writer_.AddConnect(motor + ".port_B", tank + ".port");
+    writer_.AddConnect(motor + ".flange", rotor + ".flange_a");
+    if (lost) {
+      const std::string pob = Name(c.id + "_pob" + n), command = Name(c.id + "_pob_command" + n);
+      Add("Modelica.Blocks.Sources.Step", command,
+          {{"height", "1", {}}, {"startTime", FormatModelicaReal(*t_lost, "motor_lost_time"), {}}},
+          "pressure-off brake of the lost motor applied");
+      Add("Modelica.Mechanics.Rotational.Components.Brake", pob,
+          {{"fn_max", real(2.0 * value("brake_torque") / ratio, "brake_torque"), {}},
+           {"mu_pos", "[0, 0.5]", {}}},
+          "pressure-off brake of motor " + n + " (brake_torque at the output)");
+      writer_.AddConnect(command + ".y", pob + ".f_normalized");
+      writer_.AddConnect(rotor + ".flange_b", pob + ".flange_a");
+    }
+    rotors.push_back(rotor);
+  }
+  const std::string gear = Name(c.id + "_gear"), output = Name(c.id + "_output");
+  Add("Modelica.Mechanics.Rotational.Components.IdealGear", gear, {{"ratio", real(ratio, "ratio"), {}}}, "PDU gearbox");
+  if (n_m == 2) {
+    const std::string differential = Name(c.id + "_differential");
+    Add("Modelica.Mechanics.Rotational.Components.IdealPlanetary", differential, {{"ratio", "1", {}}},
+        "speed-summing differential");
+    writer_.AddConnect(rotors[0] + ".flange_b", differential + ".sun");
+    writer_.AddConnect(rotors[1] + ".flange_b", differential + ".ring");
+    writer_.AddConnect(differential + ".carrier", gear + ".flange_a");
+  } else {
+    writer_.AddConnect(rotors[0] + ".flange_b", gear + ".flange_a");
+  }
+  Add("Modelica.Mechanics.Rotational.Components.Inertia", output, {{"J", real(value("gear_inertia"), "gear_inertia"), {}}},
+      "differential and gears at the output");
+  writer_.AddConnect(gear + ".flange_b", output + ".flange_a");
+  const std::string angle = Name(c.id);
+  pdu_instance_ = angle;  // <pdu>.phi feeds the monitoring
+  Add("Modelica.Mechanics.Rotational.Sensors.AngleSensor", angle, {}, c.description + " (output angle)");
+  writer_.AddConnect(output + ".flange_a", angle + ".flange");
+  Map(c, "left", output + ".flange_b");
+  Map(c, "right", output + ".flange_a");
+
+  std::vector<std::vector<double>> rows;
+  if (load_case_ && load_case_->pdu_speed) {
+    const Table& t = *load_case_->pdu_speed;
+    for (std::size_t i = 0; i < t.x.size(); ++i) rows.push_back({t.x[i], direction_ * t.y[i]});
+  } else {
+    rows = {{0.0, 0.0}, {1.0, 0.0}};
+  }
+  speed_table_ = Name(c.id + "_speed");
+  std::vector<Modifier> table_mods;
+  TableModifier(speed_table_, rows, table_mods);
+  table_mods.push_back({"extrapolation", "Modelica.Blocks.Types.Extrapolation.HoldLastPoint", {}});
+  Add("Modelica.Blocks.Sources.CombiTimeTable", speed_table_, table_mods,
+      "PDU output speed command [rad/s]" + std::string(load_case_ ? " of load case " + load_case_->name : ""));
+  writer_.AddConnect(speed_table_ + ".y[1]", w_ref + ".u");
+}
+
 void DriveSystemWriter::EmitPdu(const Component& c) {
+  if (auto drive = c.texts.find("drive"); drive != c.texts.end() && drive->second == "hydraulic") {
+    EmitHydraulicPdu(c);
+    return;
+  }
   const std::string name = Name(c.id);
   pdu_instance_ = name;
   std::vector<Modifier> mods = {

@@ -32,6 +32,41 @@ double ToDisplay(double si, const std::string& unit) {
 
 namespace {
 
+/// Smallest eigenvalue w1 [rad/s] of K v = w^2 M v for a forest of free nodes in breadth-first
+/// `order` (parent before child; `parent` -1 at a root), diagonal K, off-diagonal -c_parent
+/// between a node and its parent, M > 0. Leaf-first elimination of K - lambda M has no fill-in on
+/// a tree, and by Sylvester's law of inertia its negative pivots count the eigenvalues below
+/// lambda; bisection on that count brackets w1^2 to a relative 1e-13 in O(n) per step. NaN when
+/// there is a rigid-body mode (a part not held).
+double FirstOmegaOfTree(const std::vector<int>& order, const std::vector<int>& parent, const std::vector<double>& c_parent,
+                        const std::vector<double>& K, const std::vector<double>& M) {
+  if (order.empty()) return std::numeric_limits<double>::quiet_NaN();
+  std::vector<double> d(K.size());
+  auto below = [&](double lambda) {  // number of eigenvalues below lambda
+    for (int u : order) d[u] = K[u] - lambda * M[u];
+    int negative = 0;
+    for (auto it = order.rbegin(); it != order.rend(); ++it) {
+      const int u = *it;
+      if (d[u] == 0.0) d[u] = -std::numeric_limits<double>::min();  // lambda is an eigenvalue: count it below
+      if (d[u] < 0.0) ++negative;
+      if (parent[u] >= 0) d[parent[u]] -= c_parent[u] * c_parent[u] / d[u];
+    }
+    return negative;
+  };
+  double scale = 0.0;  // Gershgorin bound of the largest eigenvalue of M^-1 K
+  for (int u : order) scale = std::max(scale, 2.0 * K[u] / M[u]);
+  if (!(scale > 0.0) || !std::isfinite(scale)) return std::numeric_limits<double>::quiet_NaN();
+  if (below(1e-12 * scale) > 0) return std::numeric_limits<double>::quiet_NaN();  // a rigid-body mode
+  double lo = 1e-12 * scale, hi = scale;
+  while (below(hi) == 0) hi *= 2.0;
+  while (hi - lo > 1e-13 * hi) {
+    const double mid = 0.5 * (lo + hi);
+    if (mid <= lo || mid >= hi) break;
+    (below(mid) > 0 ? hi : lo) = mid;
+  }
+  return std::sqrt(0.5 * (lo + hi));
+}
+
 /// First eigenfrequency [rad/s] of a lumped model with node `stop` clamped: the smallest w with
 /// K v = w^2 M v. The spring graph of a transmission is a tree, so K - lambda M factors leaf first
 /// without fill-in, and by Sylvester's law of inertia the number of negative pivots is the number
@@ -80,32 +115,149 @@ double FirstOmega(const reduced_models::LumpedModel& m, int stop) {
       }
     }
   }
-  if (order.empty()) return std::numeric_limits<double>::quiet_NaN();
-  std::vector<double> d(n);
-  auto below = [&](double lambda) {  // number of eigenvalues below lambda
-    for (int u : order) d[u] = K[u] - lambda * M[u];
-    int negative = 0;
-    for (auto it = order.rbegin(); it != order.rend(); ++it) {
-      const int u = *it;
-      if (d[u] == 0.0) d[u] = -std::numeric_limits<double>::min();  // lambda is an eigenvalue: count it below
-      if (d[u] < 0.0) ++negative;
-      if (parent[u] >= 0) d[parent[u]] -= parent_c[u] * parent_c[u] / d[u];
-    }
-    return negative;
-  };
-  double scale = 0.0;  // Gershgorin bound of the largest eigenvalue of M^-1 K
-  for (int u : order) scale = std::max(scale, 2.0 * K[u] / M[u]);
-  if (!(scale > 0.0) || !std::isfinite(scale)) return std::numeric_limits<double>::quiet_NaN();
-  if (below(1e-12 * scale) > 0) return std::numeric_limits<double>::quiet_NaN();  // a rigid-body mode
-  double lo = 1e-12 * scale, hi = scale;
-  while (below(hi) == 0) hi *= 2.0;
-  while (hi - lo > 1e-13 * hi) {
-    const double mid = 0.5 * (lo + hi);
-    if (mid <= lo || mid >= hi) break;
-    (below(mid) > 0 ? hi : lo) = mid;
-  }
-  return std::sqrt(0.5 * (lo + hi));
+  std::vector<double> c_parent(n, 0.0);
+  for (int u : order) c_parent[u] = parent_c[u];
+  return FirstOmegaOfTree(order, parent, c_parent, K, M);
 }
+
+/// One argument of a sizing case's first-mode function: a concentrated inertia at a transmission
+/// point, or the stiffness or distributed inertia of a link.
+struct ModeArg {
+  enum Kind { kPointJ, kLinkC, kLinkJ } kind;
+  int index;
+};
+
+/// w1 of a sizing case as a function of its arguments (see Builder::PeakCase). With one element
+/// per link (`peak`'s default) reduced_models' lumped model has node p = point p, spring l = link
+/// l and node J = point J + half the J of each link at it, and its tree order is fixed: an
+/// evaluation fills arrays and bisects, without building the model. The fast model is checked
+/// against reduced_models::BuildLumpedModel once, at construction; other element counts, or a
+/// mismatch, build the lumped model on every evaluation.
+class FirstModeFunction {
+ public:
+  FirstModeFunction(reduced_models::Transmission base, int stop, std::vector<ModeArg> args, int elements)
+      : base_(std::move(base)), stop_(stop), args_(std::move(args)), elements_(elements) {
+    for (auto& point : base_.points) point.J = 0.0;
+    for (auto& link : base_.links) link.J = 0.0;
+    fast_ = elements_ == 1 && Prepare();
+  }
+
+  double operator()(std::span<const double> x) const {
+    for (double v : x)
+      if (!(v >= 0.0)) return std::numeric_limits<double>::quiet_NaN();
+    return fast_ ? Fast(x) : Slow(x);
+  }
+
+ private:
+  /// The transmission with the arguments filled in.
+  reduced_models::Transmission Fill(std::span<const double> x) const {
+    reduced_models::Transmission t = base_;
+    for (std::size_t i = 0; i < args_.size(); ++i) {
+      if (args_[i].kind == ModeArg::kPointJ) t.points[args_[i].index].J += x[i];
+      else if (args_[i].kind == ModeArg::kLinkC) t.links[args_[i].index].c = x[i];
+      else t.links[args_[i].index].J = x[i];
+    }
+    return t;
+  }
+  double Slow(std::span<const double> x) const {
+    try {
+      const reduced_models::LumpedModel m =
+          reduced_models::BuildLumpedModel(Fill(x), reduced_models::Reduction::kFullResolution, elements_);
+      return FirstOmega(m, m.NodeOfPoint(stop_));
+    } catch (const std::exception&) {
+      return std::numeric_limits<double>::quiet_NaN();  // degenerate corner: no finite w1
+    }
+  }
+  /// Node inertias and link stiffnesses of the one-element model.
+  void Arrays(std::span<const double> x, std::vector<double>& J, std::vector<double>& c) const {
+    J.assign(base_.points.size(), 0.0);
+    c.resize(base_.links.size());
+    for (std::size_t l = 0; l < base_.links.size(); ++l) c[l] = base_.links[l].c;
+    for (std::size_t i = 0; i < args_.size(); ++i) {
+      const int k = args_[i].index;
+      if (args_[i].kind == ModeArg::kPointJ) {
+        J[k] += x[i];
+      } else if (args_[i].kind == ModeArg::kLinkC) {
+        c[k] = x[i];
+      } else {
+        J[base_.links[k].a] += 0.5 * x[i];
+        J[base_.links[k].b] += 0.5 * x[i];
+      }
+    }
+  }
+  bool Prepare() {
+    // Check the one-element rule against reduced_models at a probe point.
+    std::vector<double> probe(args_.size());
+    for (std::size_t i = 0; i < probe.size(); ++i) probe[i] = 1.0 + 0.001 * static_cast<double>(i);
+    reduced_models::LumpedModel m;
+    try {
+      m = reduced_models::BuildLumpedModel(Fill(probe), reduced_models::Reduction::kFullResolution, 1);
+    } catch (const std::exception&) {
+      return false;
+    }
+    std::vector<double> J, c;
+    Arrays(probe, J, c);
+    if (m.nodes.size() != J.size() || m.springs.size() != c.size()) return false;
+    for (std::size_t i = 0; i < J.size(); ++i)
+      if (m.nodes[i].point != static_cast<int>(i) || std::fabs(m.nodes[i].J - J[i]) > 1e-12 * std::fabs(J[i])) return false;
+    for (std::size_t l = 0; l < c.size(); ++l) {
+      const auto& spring = m.springs[l];
+      if (spring.link != static_cast<int>(l) || spring.a != base_.links[l].a || spring.b != base_.links[l].b ||
+          spring.c != c[l])
+        return false;
+    }
+    // The tree order of the free nodes (the stop is clamped).
+    const int n = static_cast<int>(J.size());
+    std::vector<std::vector<std::pair<int, int>>> adjacent(n);
+    for (std::size_t l = 0; l < base_.links.size(); ++l) {
+      const int a = base_.links[l].a, b = base_.links[l].b;
+      if (a == stop_ || b == stop_) continue;
+      adjacent[a].push_back({b, static_cast<int>(l)});
+      adjacent[b].push_back({a, static_cast<int>(l)});
+    }
+    parent_.assign(n, -2);
+    parent_link_.assign(n, -1);
+    for (int r = 0; r < n; ++r) {
+      if (r == stop_ || parent_[r] != -2) continue;
+      parent_[r] = -1;
+      const std::size_t begin = order_.size();
+      order_.push_back(r);
+      for (std::size_t k = begin; k < order_.size(); ++k) {
+        const int u = order_[k];
+        for (const auto& [v, l] : adjacent[u]) {
+          if (l == parent_link_[u]) continue;
+          if (parent_[v] != -2) return false;  // a cycle
+          parent_[v] = u;
+          parent_link_[v] = l;
+          order_.push_back(v);
+        }
+      }
+    }
+    return !order_.empty();
+  }
+  double Fast(std::span<const double> x) const {
+    Arrays(x, J_, c_);
+    K_.assign(J_.size(), 0.0);
+    for (std::size_t l = 0; l < c_.size(); ++l) {
+      K_[base_.links[l].a] += c_[l];
+      K_[base_.links[l].b] += c_[l];
+    }
+    c_parent_.assign(J_.size(), 0.0);
+    for (int u : order_) {
+      if (!(J_[u] > 0.0)) return std::numeric_limits<double>::quiet_NaN();
+      if (parent_link_[u] >= 0) c_parent_[u] = c_[parent_link_[u]];
+    }
+    return FirstOmegaOfTree(order_, parent_, c_parent_, K_, J_);
+  }
+
+  reduced_models::Transmission base_;  // topology and the stiffnesses that are not arguments
+  int stop_;
+  std::vector<ModeArg> args_;
+  int elements_;
+  bool fast_ = false;
+  std::vector<int> order_, parent_, parent_link_;  // free nodes breadth first; parent node and link
+  mutable std::vector<double> J_, c_, K_, c_parent_;  // scratch
+};
 
 class Builder {
  public:
@@ -161,7 +313,11 @@ class Builder {
           d = Interval(spec->default_domain.lo, spec->default_domain.hi);
         else d = Whole();
         const VariableId v = net().AddVariable(c.id + "." + name, d, spec ? spec->unit : "", ToString(p.provenance));
+        // The nominal design: the nominal value, else the middle of a bounded domain (as
+        // reduced_models reads a parameter given only as an interval).
         if (p.nominal && std::isfinite(*p.nominal)) out_.nominal.push_back({v.value, *p.nominal});
+        else if (!p.nominal && std::isfinite(d.lower()) && std::isfinite(d.upper()) && d.lower() < d.upper())
+          out_.nominal.push_back({v.value, 0.5 * (d.lower() + d.upper())});
       }
     }
   }
@@ -450,6 +606,7 @@ class Builder {
       }
     }
   }
+
   /// Torque of the stations outboard of `id` summed, as text ("0" when none).
   std::string StationSum(const std::string& id) const {
     std::string sum;
@@ -565,8 +722,7 @@ class Builder {
     const std::string p = "peak." + pc.name + ".";
     const int n_elements = peaks_->elements_per_segment;
     // Arguments of the eigenvalue: reflected link stiffnesses (rising) and inertias (falling).
-    struct Arg { enum Kind { kPointJ, kLinkC, kLinkJ } kind; int index; };
-    std::vector<Arg> args;
+    std::vector<ModeArg> args;
     std::vector<VariableId> vars;
     std::vector<Monotonicity> mono;
     std::string inertia;  // J*
@@ -575,13 +731,13 @@ class Builder {
       const std::string J = NodeVar(k, "reflected_inertia"), c = NodeVar(k, "reflected_stiffness");
       const int link = pc.link_of_node[k], point = pc.point_of_node[k];
       if (link >= 0 && !c.empty()) {
-        args.push_back({Arg::kLinkC, link});
+        args.push_back({ModeArg::kLinkC, link});
         vars.push_back(net().FindVariable(c));
         mono.push_back(Monotonicity::kIncreasing);
       }
       if (J.empty()) continue;
       if (shaft && link >= 0) {
-        args.push_back({Arg::kLinkJ, link});
+        args.push_back({ModeArg::kLinkJ, link});
         vars.push_back(net().FindVariable(J));
         mono.push_back(Monotonicity::kDecreasing);
         // A link's distributed inertia goes J/(2n) to each end: the end at the stop is clamped.
@@ -590,36 +746,15 @@ class Builder {
         inertia += (inertia.empty() ? "" : " + ") +
                    (ends_at_stop ? Num(1.0 - ends_at_stop / (2.0 * n_elements)) + " * " : std::string()) + J;
       } else if (!shaft && point >= 0 && point != pc.stop_point) {
-        args.push_back({Arg::kPointJ, point});
+        args.push_back({ModeArg::kPointJ, point});
         vars.push_back(net().FindVariable(J));
         mono.push_back(Monotonicity::kDecreasing);
         inertia += (inertia.empty() ? "" : " + ") + J;
       }
     }
     if (args.empty() || inertia.empty()) return;
-    const reduced_models::Transmission base = pc.transmission;
-    const int stop = pc.stop_point;
     MonotoneFunction first_mode;
-    first_mode.f = [base, stop, args, n_elements](std::span<const double> x) {
-      reduced_models::Transmission t = base;
-      for (auto& point : t.points) point.J = 0.0;
-      for (auto& link : t.links) link.J = 0.0;
-      for (std::size_t i = 0; i < args.size(); ++i) {
-        if (!(x[i] >= 0.0)) return std::numeric_limits<double>::quiet_NaN();
-        if (args[i].kind == Arg::kPointJ) t.points[args[i].index].J += x[i];
-        else if (args[i].kind == Arg::kLinkC) t.links[args[i].index].c = x[i];
-        else t.links[args[i].index].J = x[i];
-      }
-      // Degenerate corners (a zero stiffness or a free node without inertia) have no finite
-      // eigenfrequency: NaN widens the enclosure to the whole line.
-      try {
-        const reduced_models::LumpedModel m =
-            reduced_models::BuildLumpedModel(t, reduced_models::Reduction::kFullResolution, n_elements);
-        return FirstOmega(m, m.NodeOfPoint(stop));
-      } catch (const std::exception&) {
-        return std::numeric_limits<double>::quiet_NaN();
-      }
-    };
+    first_mode.f = FirstModeFunction(pc.transmission, pc.stop_point, args, n_elements);
     first_mode.monotonicity = mono;
     first_mode.relative_error = 1e-9;  // eigenvalue round-off, as reduced_models' enclosures
     first_mode.bisection_steps = 30;

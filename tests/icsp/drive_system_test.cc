@@ -102,9 +102,10 @@ TEST(DriveSystem, ExtensionTimeIncludesTheRampsOfTheSpeedProfile) {
 /// icsp and `highlift peak` (reduced_models::AnalysePeaks) compute the same sizing cases: for every
 /// case the network builds, the enclosure over the project domains contains reduced_models'
 /// nominal value and matches its enclosure, and at the nominal values it collapses onto it.
-TEST(DriveSystem, SizingCasesAgreeWithReducedModelsPeak) {
+void ExpectAgreementWithPeak(const std::string& file, int cases) {
+  SCOPED_TRACE(file);
   constexpr double kTolerance = 1e-6;  // relative; both sides widen eigenvalues by 1e-9
-  const Project project = LoadProject(kFlaps);
+  const Project project = LoadProject(file);
   const DriveSystemNetwork net = BuildDriveSystemNetwork(project);
   Box wide = net.network.InitialBox();
   ASSERT_NE(PropagatePhysics(net, wide).status, Status::kInfeasible);
@@ -139,8 +140,14 @@ TEST(DriveSystem, SizingCasesAgreeWithReducedModelsPeak) {
       EXPECT_TRUE(near(x.lower(), value) && near(x.upper(), value)) << name << " [" << x.lower() << ", " << x.upper() << "] vs " << value;
     }
   }
-  EXPECT_EQ(compared, 13);  // jam_l1 .. jam_r6 and rupture_wtb
+  EXPECT_EQ(compared, cases);  // the jam scenarios and rupture_wtb
   EXPECT_EQ(ruptures, 1);
+}
+
+TEST(DriveSystem, SizingCasesAgreeWithReducedModelsPeak) {
+  ExpectAgreementWithPeak(kFlaps, 13);  // jam_l1 .. jam_r6 and the rupture of shaft_l1
+  ExpectAgreementWithPeak(std::string(HIGHLIFT_SOURCE_DIR) + "/examples/a320_class_flaps.json", 9);
+  ExpectAgreementWithPeak(std::string(HIGHLIFT_SOURCE_DIR) + "/examples/a320_class_slats.json", 21);
 }
 
 TEST(DriveSystem, NominalFlapDesignViolatesTheRuptureShaftRequirement) {

@@ -58,4 +58,30 @@ TEST(SimulateCli, UnknownScenarioListsTheScenarios) {
   EXPECT_NE(r.err.find("scenario 'nope' is not in the project; choose one of: msl"), std::string::npos) << r.err;
 }
 
+TEST(SimulateCli, ModelOptionsApplyOnlyToDriveSystemProjects) {
+  const auto r = highlift::testing::RunCli({"simulate", "tests/sim/msl/First.json", "--model", "reduced"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--model and --elements apply to drive-system projects"), std::string::npos) << r.err;
+}
+
+TEST(SimulateCli, DriveSystemProjectRejectsAnUnknownResolution) {
+  const auto r = highlift::testing::RunCli(
+      {"simulate", "examples/a380_class_flaps.json", "--scenario", "extension", "--model", "fine"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("model 'fine' is not a model resolution; choose 'full'"), std::string::npos) << r.err;
+}
+
+TEST(SimulateCli, DriveSystemProjectWithSeveralScenariosNeedsOne) {
+  const auto r = highlift::testing::RunCli({"simulate", "examples/a380_class_flaps.json"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("choose one with --scenario NAME (extension, jam_l1"), std::string::npos) << r.err;
+}
+
+TEST(SimulateCli, DriveSystemProjectRejectsZeroElements) {
+  const auto r = highlift::testing::RunCli(
+      {"simulate", "examples/a380_class_flaps.json", "--scenario", "jam_l1", "--elements", "0"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--elements 0: a shaft needs at least 1 spring-damper"), std::string::npos) << r.err;
+}
+
 }  // namespace
