@@ -6,7 +6,7 @@ set -euo pipefail
 packages=(
   build-essential cmake ninja-build pkg-config
   libboost-dev libeigen3-dev libsqlite3-dev sqlite3 nlohmann-json3-dev
-  libsundials-dev libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev libfmt-dev
+  libsundials-dev libsuitesparse-dev libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev libfmt-dev
   libudunits2-dev libudunits2-data
 )
 

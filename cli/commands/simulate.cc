@@ -140,6 +140,7 @@ class SimulateCommand : public Command {
     }
     sim::Simulator simulator(network);
     sim::SimulationOptions options;
+    if (drive) options = drive_model.Options(project);
     options.stop_time = scenario->stop_time;
     options.relative_tolerance = project.settings.relative_tolerance;
     options.output_interval = project.settings.output_interval;

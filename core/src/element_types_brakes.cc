@@ -62,6 +62,9 @@ void AppendBrakeTypes(std::vector<ComponentTypeSpec>& types) {
                 "decay of the Stribeck torque with speed, equation (3)"),
         Default("peak", Dimensionless(), "1", 1.0, {1.0, kInf},
                 "static friction at standstill = peak*(tau_C + tau_S)"),
+        Default("w_small", AngularVelocity(), "rad/s", 0.0, non_negative,
+                "regularisation speed: 0 = exact stick/slip; > 0 = friction and load loss "
+                "scaled by tanh(w/w_small), continuous, no stick/slip events"),
     };
   };
   auto eta_ge = [&] {

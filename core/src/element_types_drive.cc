@@ -70,6 +70,8 @@ void AppendDriveTypes(std::vector<ComponentTypeSpec>& t) {
        pdu(Scalar("t_ramp", Time(), "s", 0.4, positive,
                   "time from 0 to the maximum output speed (speed ramp)")),
        pdu(Scalar("T_w", Time(), "s", 0.02, positive, "time constant of the closed speed loop")),
+       pdu(Scalar("T_i", Time(), "s", 0.08, non_negative,
+                  "integral time of the speed loop (PI; 0 = proportional only)")),
        pdu(Scalar("tauPOB", Torque(), "N*m", 1100, non_negative,
                   "holding torque of the pressure-off brakes at the output")),
        pdu(Scalar("t_POB", Time(), "s", 0.05, non_negative,

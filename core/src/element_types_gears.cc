@@ -71,6 +71,9 @@ void AppendGearTypes(std::vector<ComponentTypeSpec>& types) {
     if (with_peak)
       p.push_back(Default("peak", Dimensionless(), "1", 1.0, {1.0, kInf},
                           "breakaway factor: static friction at standstill = peak*(tau_C + tau_S)"));
+    p.push_back(Default("w_small", AngularVelocity(), "rad/s", 0.0, non_negative,
+                        "regularisation speed: 0 = exact stick/slip; > 0 = friction and "
+                        "load-dependent loss scaled by tanh(w/w_small), no stick/slip events"));
     return p;
   };
   // ElastoBacklash in front of the element (elastic = true).

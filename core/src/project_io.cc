@@ -398,7 +398,8 @@ class Reader {
 
   Settings ReadSettings(const Node& n) const {
     RequireObject(n, "'settings'");
-    CheckKeys(n, {"shaft_elements", "relative_tolerance", "output_interval", "values"}, "the settings");
+    CheckKeys(n, {"shaft_elements", "relative_tolerance", "output_interval", "structural_damping", "values"},
+              "the settings");
     Settings s;
     if (n.has("shaft_elements")) {
       const Node e = n["shaft_elements"];
@@ -415,6 +416,12 @@ class Reader {
     if (n.has("output_interval")) {
       s.output_interval = Scalar(n["output_interval"], dimensions::Time(), "settings 'output_interval'");
       if (!(s.output_interval > 0)) Fail(n["output_interval"], "settings 'output_interval' must be > 0 (e.g. \"1 ms\")");
+    }
+    if (n.has("structural_damping")) {
+      s.structural_damping = Scalar(n["structural_damping"], dimensions::Time(), "settings 'structural_damping'");
+      if (!(s.structural_damping >= 0 && s.structural_damping < 1))
+        Fail(n["structural_damping"], "settings 'structural_damping' (d = beta*c) must lie in [0, 1) s "
+                                      "(e.g. \"0.4 ms\"; 0: no damping beyond the components' own)");
     }
     if (n.has("values")) s.values = Values(n["values"], "settings value");
     return s;
@@ -940,7 +947,8 @@ nlohmann::json ProjectToJson(const Project& project) {
   if (!project.sources.empty()) o["sources"] = project.sources;
   json settings = {{"shaft_elements", project.settings.shaft_elements},
                    {"relative_tolerance", project.settings.relative_tolerance},
-                   {"output_interval", project.settings.output_interval}};
+                   {"output_interval", project.settings.output_interval},
+                   {"structural_damping", project.settings.structural_damping}};
   if (!project.settings.values.empty()) settings["values"] = project.settings.values;
   o["settings"] = settings;
   if (!project.components.empty()) {

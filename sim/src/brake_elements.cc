@@ -117,13 +117,16 @@ StribeckFriction::StribeckFriction(const NetworkElement& e, bool with_inertia)
       d_vis(Param(e, "d_vis")),
       tau_S(Param(e, "tau_S")),
       f_exp(Param(e, "f_exp")),
-      eta_GE(Param(e, "eta_GE")) {
+      eta_GE(Param(e, "eta_GE")),
+      w_small(Param(e, "w_small")) {
   if (with_inertia) J = Param(e, "J");
   else use_eta_input = Param(e, "useEfficiencyInput") != 0.0;
   peak = Param(e, "peak");
   split = use_eta_input || eta_GE < 1.0;
   frictionless = !split && tau_C == 0.0 && tau_S == 0.0 && d_vis == 0.0;
+  regularized = !frictionless && w_small > 0.0;
   if (frictionless) mode = msl::kFree;
+  if (regularized) mode = msl::kForward;  // always "sliding": the smooth law has no stuck mode
 }
 
 std::vector<std::vector<std::string>> StribeckFriction::RigidFlanges() const {
@@ -183,6 +186,20 @@ void StribeckFriction::Forces(Eval& e) {
     tau = 0.0;
     return;
   }
+  if (regularized) {
+    // tanh(w/w_small) * (tau_C + tau_S*exp(-f_exp*|w|)) + d_vis*w: continuous and odd in w.
+    const double w = WF(e);
+    tau_stribeck = Smooth(e) * (tau_C + tau_S * std::exp(-f_exp * std::abs(w))) + d_vis * w;
+    if (split) {
+      e.AddForce(a, -0.5 * tau_stribeck);
+      e.AddForce(b, -0.5 * tau_stribeck);
+    } else {
+      e.AddForce(a, -tau_stribeck);
+    }
+    e.AddForce(m, tau_stribeck);
+    tau = tau_stribeck;
+    return;
+  }
   if (!Sliding()) {
     if (mode != msl::kStuck) tau = 0.0;
     return;
@@ -210,8 +227,8 @@ void StribeckFriction::Constraints(Eval& e) {
   if (split) {
     Constraint& c = e.NewConstraint(index);
     c.row = {{a, 1.0}, {b, -1.0}};
-    if (Sliding()) {
-      const double k = mode * (1.0 - Eta(e)) * quadrant;
+    if (regularized || Sliding()) {
+      const double k = (regularized ? Smooth(e) : mode) * (1.0 - Eta(e)) * quadrant;
       c.column = {{a, -(1.0 + 0.5 * k)}, {b, 1.0 - 0.5 * k}, {m, k}};
     } else {
       c.column = {{a, -1.0}, {b, 1.0}};
@@ -231,6 +248,8 @@ void StribeckFriction::AfterSolve(Eval& e) {
   if (rigid >= 0) tau_load = e.constraints[rigid].lambda;
   if (stuck >= 0) {
     tau = e.constraints[stuck].lambda;
+  } else if (regularized) {
+    tau = tau_stribeck + (split ? Smooth(e) * (1.0 - Eta(e)) * quadrant * tau_load : 0.0);
   } else if (Sliding()) {
     tau = tau_stribeck + (split ? mode * (1.0 - Eta(e)) * quadrant * tau_load : 0.0);
   } else {
@@ -277,6 +296,16 @@ void StribeckFriction::Fix(const Eval& e) {
   ++flips;
 }
 
+// The load loss (1 - eta)*|tau_load| was linearised with quadrant = the assumed sign of
+// tau_load; the loss is continuous across tau_load = 0, so either branch is exact there.
+bool StribeckFriction::Reassume(const Eval& e) {
+  const double scale = 1e-12 * (1.0 + std::abs(tau_stribeck));
+  (void)e;
+  if (tau_load * quadrant >= -scale) return false;
+  quadrant = -quadrant;
+  return true;
+}
+
 void StribeckFriction::AfterEventRow() {
   Friction::AfterEventRow();
   flips = 0;
@@ -294,7 +323,12 @@ void StribeckFriction::Outputs(const Eval& e, double* out) const {
   out[k++] = AF(e);
   out[k++] = tau;
   if (split) out[k++] = tau_load;
-  out[k++] = frictionless ? msl::kFree : OutputMode();
+  if (regularized) {
+    const double w = WF(e);
+    out[k++] = w > w_small ? msl::kForward : (w < -w_small ? msl::kBackward : msl::kStuck);
+  } else {
+    out[k++] = frictionless ? msl::kFree : OutputMode();
+  }
 }
 
 // ------------------------------------------------------------------------------------------

@@ -88,10 +88,15 @@ class StribeckFriction : public msl::Friction {
   void Constraints(Eval& e) override;
   void AfterSolve(Eval& e) override;
 
-  int NumRoots() const override { return frictionless ? 0 : 4; }
+  int NumRoots() const override { return frictionless || regularized ? 0 : 4; }
   void Roots(const Eval& e, double* g) const override;
   void RootDirections(int* d) const override;
-  bool IsSwitching() const override { return !frictionless; }
+  bool IsSwitching() const override { return !frictionless && !regularized; }
+  /// Regularised (w_small > 0): the sign of tau_load is assumed, checked after the solve.
+  bool HasAssumptions() const override { return regularized && split; }
+  bool Reassume(const Eval& e) override;
+  /// Regularised law: tanh(w/w_small), the smooth sign of the sliding speed.
+  double Smooth(const Eval& e) const { return std::tanh(WF(e) / w_small); }
   void PrepareEvent(const Eval& e) override;
   double Violation(const Eval& e) const override;
   void Fix(const Eval& e) override;
@@ -103,6 +108,8 @@ class StribeckFriction : public msl::Friction {
 
   double J = 0.0;                               // kg*m^2
   double tau_C, d_vis, tau_S, f_exp, eta_GE;    // N*m, N*m*s/rad, N*m, s/rad, 1
+  double w_small = 0.0;                         // rad/s, regularisation speed (0: stick/slip)
+  bool regularized = false;                     // w_small > 0: no stick/slip state machine
   bool use_eta_input = false;
   bool split = false;        // flange_a and flange_b are separate nodes (load loss active)
   bool frictionless = false;  // no friction at all: a rigid shaft (plus J)
@@ -123,6 +130,8 @@ class BrakeActuation : public Element {
   explicit BrakeActuation(const NetworkElement& e);
   std::vector<std::string> SignalInputs() const override { return {"trigger"}; }
   std::vector<std::string> SignalOutputs() const override { return {"y"}; }
+  /// y depends on time and on the command held since the last event, not on the state.
+  bool SignalsFollowState() const override { return false; }
   void Bind(const std::function<int(const std::string&)>& node_of,
             const std::function<int(const std::string&)>& signal_of) override;
   double Y(const Eval& e) const;

@@ -62,6 +62,7 @@ class Pdu : public Friction {
         P_max(Param(e, "P_max")),
         t_ramp(Param(e, "t_ramp")),
         T_w(Param(e, "T_w")),
+        T_i(Param(e, "T_i")),
         tauPOB(Param(e, "tauPOB")),
         t_POB(Param(e, "t_POB")),
         w_hold(Param(e, "w_hold")),
@@ -94,9 +95,13 @@ class Pdu : public Friction {
     u = signal_of("w_ref");
   }
   void AddInertia(std::vector<Node>& nodes) const override { nodes[p].J += J; }
-  int NumStates() const override { return 1; }
-  std::vector<std::string> StateNames() const override { return {id + ".w_set"}; }
-  void InitStates(const Eval&, double* y) const override { y[state_offset] = 0.0; }
+  // States: the ramped set point w_set and the integral z of the speed error (rad).
+  int NumStates() const override { return 2; }
+  std::vector<std::string> StateNames() const override { return {id + ".w_set", id + ".z"}; }
+  void InitStates(const Eval&, double* y) const override {
+    y[state_offset] = 0.0;
+    y[state_offset + 1] = 0.0;
+  }
   void Signals(const Eval& e, double* out) const override {
     out[0] = e.phi[p];
     out[1] = e.w[p];
@@ -111,14 +116,27 @@ class Pdu : public Friction {
     return Clamp(e.signal[u], -w_avail, w_avail);
   }
   double WSet(const Eval& e) const { return e.y[state_offset]; }
+  double Z(const Eval& e) const { return e.y[state_offset + 1]; }
   /// Torque limit at the output speed: stall torque, and the power limit P_max/|w|.
   double TauLimit(const Eval& e) const {
     return std::min(tau_stall, P_max / std::max(std::abs(e.w[p]), 1e-60));
   }
+  /// The PI law before the limit: k_w*(e + z/T_i), e = w_set - w (T_i = 0: proportional).
+  double TauRaw(const Eval& e) const {
+    const double error = WSet(e) - e.w[p];
+    return k_w * (T_i > 0 ? error + Z(e) / T_i : error);
+  }
+  /// The motors hold the output until the pressure-off brakes have built up their torque
+  /// (t_POB after the application); only then is the drive torque removed.
+  bool Driving(const Eval& e) const {
+    if (!applied) return true;
+    const double full = t_on + t_POB;  // a time event: switch with the right limit
+    return e.t_segment < full - TimeTolerance(full);
+  }
   double TauDrive(const Eval& e) const {
-    if (applied) return 0.0;
+    if (!Driving(e)) return 0.0;
     const double lim = TauLimit(e);
-    return Clamp(k_w * (WSet(e) - e.w[p]), -lim, lim);
+    return Clamp(TauRaw(e), -lim, lim);
   }
   /// Normalized brake torque (BrakeActuation y with t_rise = t_POB).
   double Actuation(const Eval& e) const {
@@ -143,6 +161,18 @@ class Pdu : public Friction {
   void Derivatives(Eval& e) override {
     const double rate = w_max / t_ramp;
     e.ydot[state_offset] = Clamp((WTarget(e) - WSet(e)) / T_w, -rate, rate);
+    // Integral with back-calculation anti-windup (continuous): in the limit z relaxes to the
+    // value that gives the limited torque; held while the brakes are applied.
+    if (T_i > 0 && Driving(e))
+      e.ydot[state_offset + 1] = WSet(e) - e.w[p] + (tau_drive - TauRaw(e)) / k_w;
+    else
+      e.ydot[state_offset + 1] = 0.0;
+  }
+  // Bumpless release: when the brakes open, the integral takes over the torque they held, so
+  // the loads do not back-drive the transmission while the loop builds up its integral.
+  void EventStates(const Eval&, double* y) override {
+    if (T_i > 0 && was_applied && !applied) y[state_offset + 1] = T_i * hold_torque / k_w;
+    was_applied = applied;
   }
 
   // --- events: the friction roots 0..2, then |w_target| <= w_hold and |w_set| <= w_hold ---
@@ -169,7 +199,9 @@ class Pdu : public Friction {
     command_at_rest = Fired(3) ? !command_at_rest : g_command >= 0;
     set_point_at_rest = Fired(4) ? !set_point_at_rest : g_set >= 0;
     const bool now = command_at_rest && set_point_at_rest;
-    if (now && !applied) t_on = e.t;
+    // Applied at the start: the brakes have held the parked drive, their torque is built up.
+    if (now && !applied) t_on = e.initial ? e.t - t_POB : e.t;
+    if (applied && !now) hold_torque = mode == kStuck ? -tau : 0.0;  // torque the brakes held
     applied = now;
     n_active = NActive(e);
     Friction::PrepareEvent(e);
@@ -204,11 +236,12 @@ class Pdu : public Friction {
   double SourcePower(const Eval& e) const override { return tau_drive * (e.w[p] - e.w[m]); }
 
   int n_m;
-  double J_m, ratio, J_g, w_max, tau_stall, P_max, t_ramp, T_w, tauPOB, t_POB, w_hold, t_motor_lost;
+  double J_m, ratio, J_g, w_max, tau_stall, P_max, t_ramp, T_w, T_i, tauPOB, t_POB, w_hold, t_motor_lost;
   double J = 0.0, k_w = 0.0;
   int u = -1;
   // Discrete state.
-  bool command_at_rest = false, set_point_at_rest = false, applied = false;
+  bool command_at_rest = false, set_point_at_rest = false, applied = false, was_applied = false;
+  double hold_torque = 0.0;  ///< N*m, the torque on the shaft the brakes held at their release
   double t_on = 0.0;
   int n_active = 0;
   mutable double tau_drive = 0.0;
@@ -259,6 +292,8 @@ class Monitoring : public Element {
       default: return std::abs(s(kPhiPdu) - s(kPhiCmd)) - phi_unc;
     }
   }
+  /// The detections and the command are held between events.
+  bool SignalsFollowState() const override { return false; }
   bool Asymmetry() const { return enable_asymmetry && (held[0] || held[1] || held[2]); }
   bool Overspeed() const { return enable_overspeed && (held[3] || held[4]); }
   bool Uncommanded() const { return enable_uncommanded && held[5]; }

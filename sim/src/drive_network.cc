@@ -79,7 +79,8 @@ struct ShaftValues {
   double drag = 0;  // N*m, Coulomb drag of the whole segment
 };
 
-ShaftValues ShaftData(const Component& s) {
+/// `beta`: the project's structural damping (d = beta*c when the shaft gives no damping).
+ShaftValues ShaftData(const Component& s, double beta) {
   ShaftValues data;
   const double L = Require(s, "length");
   const auto D = Value(s, "outer_diameter");
@@ -106,7 +107,7 @@ ShaftValues ShaftData(const Component& s) {
   } else {
     data.J = Require(s, "density") * polar * L;
   }
-  data.d = ValueOr(s, "damping", 0.0);
+  data.d = ValueOr(s, "damping", beta * data.c);
   data.drag = ValueOr(s, "drag_per_length", 0.0) * L;
   return data;
 }
@@ -126,6 +127,13 @@ class Builder {
   void Connect(const std::string& a, const std::string& b) { model_.network.Connect(a, b); }
   void Map(const Component& c, const std::string& port, const std::string& ref) { ports_[{c.id, port}] = ref; }
   Scalars Stribeck(const Component& c) const;
+  /// The project's structural damping beta (s): d = beta*c for elastic elements without their own.
+  double Beta() const { return project_.settings.structural_damping; }
+  /// `s` with the friction regularisation of the options (w_small), when it is on.
+  Scalars Regularised(Scalars s) const {
+    if (options_.friction_speed > 0) s["w_small"] = options_.friction_speed;
+    return s;
+  }
 
   void CheckScenario();
   void ComputeSpeedFactors();
@@ -233,7 +241,10 @@ std::vector<std::vector<double>> Builder::SpeedCommandRows() const {
 
 void Builder::EmitPdu(const Component& c) {
   if (detail::IsHydraulicPdu(c)) {
-    pdu_ports_ = detail::AddHydraulicPdu(model_.network, c);
+    std::optional<double> motor_lost_time;  // the scenario value, as t_motor_lost below
+    if (scenario_)
+      if (auto it = scenario_->values.find("motor_lost_time"); it != scenario_->values.end()) motor_lost_time = it->second;
+    pdu_ports_ = detail::AddHydraulicPdu(model_.network, c, motor_lost_time);
     for (const auto& e : model_.network.elements())
       if (!model_.component_of.count(e.id)) model_.component_of[e.id] = c.id;
   } else {
@@ -277,6 +288,7 @@ void Builder::EmitTorqueLimiter(const Component& c) {
        {"tau2_ext", tau2},
        {"tau2_ret", tau2 * tau1_ret / tau1_ext},
        {"c1", Require(c, "stiffness_normal")},
+       {"d", Beta() * Require(c, "stiffness_normal")},  // structural damping of the balls and ramps
        {"c2", Require(c, "stiffness_lockout")},
        {"c3", Require(c, "stiffness_end_stop")},
        {"tauB_max", Require(c, "max_brake_torque")},
@@ -287,7 +299,7 @@ void Builder::EmitTorqueLimiter(const Component& c) {
 }
 
 void Builder::EmitShaftFull(const Component& c) {
-  const ShaftValues data = ShaftData(c);
+  const ShaftValues data = ShaftData(c, Beta());
   const int n = model_.shaft_elements;
   const bool ruptured = scenario_ && scenario_->rupture_component == c.id;
   const int broken = ruptured ? (n + 1) / 2 : 0;  // the spring-damper replaced by a Disconnector
@@ -299,7 +311,7 @@ void Builder::EmitShaftFull(const Component& c) {
     // in the reduced model: interior masses without Coulomb friction avoid stick/slip events
     // of every sub-element while the shaft starts and stops.
     if (data.drag > 0 && (i == 0 || i == n))
-      Add("LossyInertia", mass, {{"J", data.J * share}, {"tau_C", data.drag * 0.5}}, c.id);
+      Add("LossyInertia", mass, Regularised({{"J", data.J * share}, {"tau_C", data.drag * 0.5}}), c.id);
     else
       Add("Inertia", mass, {{"J", data.J * share}}, c.id);
     masses.push_back(mass);
@@ -321,7 +333,7 @@ void Builder::EmitShaftFull(const Component& c) {
 }
 
 void Builder::EmitSteadyBearing(const Component& c) {
-  Scalars s = Stribeck(c);
+  Scalars s = Regularised(Stribeck(c));
   s["J"] = Require(c, "inertia");
   Add("LossyInertia", c.id, s, c.id);
   Map(c, "a", c.id + ".flange_a");
@@ -334,10 +346,11 @@ void Builder::EmitUniversalJoint(const Component& c) {
   if (b > 0 && !c_joint)
     throw InputError("component '" + c.id + "' (universal_joint): a backlash needs a stiffness: give 'stiffness'",
                      c.where);
-  Scalars s = {{"J", Require(c, "inertia")}, {"eta_GE", Require(c, "efficiency")}};
+  Scalars s = Regularised({{"J", Require(c, "inertia")}, {"eta_GE", Require(c, "efficiency")}});
   if (c_joint) {
     s["elastic"] = 1;
     s["c"] = *c_joint;
+    s["d"] = Beta() * *c_joint;
     s["b"] = b;
     s["ratio"] = 1;
     Add("GeneralRotationalElement", c.id, s, c.id);
@@ -354,11 +367,12 @@ void Builder::EmitGearbox(const Component& c) {
   if (b > 0 && !stiffness)
     throw InputError("component '" + c.id + "' (" + c.type + "): a backlash needs a stiffness: give 'stiffness'",
                      c.where);
-  Scalars s = Stribeck(c);
+  Scalars s = Regularised(Stribeck(c));
   s["ratio"] = Require(c, "ratio");
   s["elastic"] = stiffness ? 1 : 0;
   if (stiffness) {
     s["c"] = *stiffness;
+    s["d"] = Beta() * *stiffness;
     s["b"] = b;
   }
   s["J"] = Require(c, "inertia");
@@ -377,7 +391,7 @@ void Builder::EmitGearbox(const Component& c) {
 
 void Builder::EmitActuator(const Component& c) {
   const double ratio = Require(c, "ratio");
-  Scalars s = Stribeck(c);
+  Scalars s = Regularised(Stribeck(c));
   s["ratio"] = ratio;
   s["eta_op"] = Require(c, "eta_opposing");
   s["eta_ai"] = Require(c, "eta_aiding");
@@ -388,6 +402,7 @@ void Builder::EmitActuator(const Component& c) {
   if (auto stiffness = Value(c, "stiffness")) {
     s["elastic"] = 1;
     s["c"] = *stiffness;
+    s["d"] = Beta() * *stiffness;
     s["b"] = ValueOr(c, "backlash", 0.0);
   } else if (ValueOr(c, "backlash", 0.0) > 0) {
     throw InputError("component '" + c.id + "' (" + c.type + "): a backlash needs a stiffness: give 'stiffness'",
@@ -398,7 +413,8 @@ void Builder::EmitActuator(const Component& c) {
   // A jam of this actuator: its output is tied to the structure at the scenario's time.
   if (scenario_ && scenario_->jam_component == c.id) {
     const std::string jam = c.id + ".jam";
-    Add("Jam", jam, {{"c", kJamStiffness * ratio * ratio}, {"t_jam", *scenario_->jam_time}}, c.id);
+    const double c_jam = kJamStiffness * ratio * ratio;
+    Add("Jam", jam, {{"c", c_jam}, {"d", Beta() * c_jam}, {"t_jam", *scenario_->jam_time}}, c.id);
     Connect(c.id + ".flange_b", jam + ".flange");
   }
 }
@@ -433,7 +449,7 @@ void Builder::EmitDisconnector(const Component& c) {
 }
 
 void Builder::EmitJam(const Component& c) {
-  Scalars s = {{"c", Require(c, "stiffness")}};
+  Scalars s = {{"c", Require(c, "stiffness")}, {"d", Beta() * Require(c, "stiffness")}};
   if (scenario_ && scenario_->jam_component == c.id) s["t_jam"] = *scenario_->jam_time;
   Add("Jam", c.id, s, c.id);
   Map(c, "a", c.id + ".flange");
@@ -514,7 +530,7 @@ void Builder::EmitChain(std::size_t index) {
       members_text += (members_text.empty() ? "" : ", ") + m->id;
       if (scenario_ && scenario_->rupture_component == m->id) ruptured = true;
       if (m->type == "torque_shaft") {
-        const ShaftValues d = ShaftData(*m);
+        const ShaftValues d = ShaftData(*m, Beta());
         compliance += 1.0 / d.c;
         if (d.d > 0) damping_compliance += 1.0 / d.d;
         J += d.J;
@@ -525,6 +541,7 @@ void Builder::EmitChain(std::size_t index) {
         drag += ValueOr(*m, "coulomb_torque", 0.0);
         if (auto c = Value(*m, "stiffness")) {
           compliance += 1.0 / *c;
+          if (Beta() > 0) damping_compliance += 1.0 / (Beta() * *c);
           elastic = true;
         }
       }
@@ -533,7 +550,7 @@ void Builder::EmitChain(std::size_t index) {
     model_.notes.push_back(base + ": " + members_text);
     auto mass = [&](const std::string& name, double share) {
       if (drag > 0)
-        Add("LossyInertia", name, {{"J", J * share}, {"tau_C", drag * share}}, "");
+        Add("LossyInertia", name, Regularised({{"J", J * share}, {"tau_C", drag * share}}), "");
       else
         Add("Inertia", name, {{"J", J * share}}, "");
     };
@@ -883,6 +900,10 @@ void DriveNetworkOptions::Validate() const {
   if (shaft_elements < 0 || shaft_elements > 1000)
     throw InputError("option shaft_elements = " + std::to_string(shaft_elements) +
                      " must be 0 (the project's setting, at least 4) or 1..1000 spring-dampers per shaft");
+  if (!(friction_speed >= 0 && friction_speed < 1e3))
+    throw InputError("option friction_speed = " + std::to_string(friction_speed) +
+                     " rad/s must be >= 0 (0: exact stick/slip) and small against the shaft speed, "
+                     "e.g. 0.01 rad/s");
 }
 
 SimulationOptions DriveModel::Options(const Project& project) const {
@@ -890,6 +911,7 @@ SimulationOptions DriveModel::Options(const Project& project) const {
   o.stop_time = stop_time;
   o.relative_tolerance = project.settings.relative_tolerance;
   o.output_interval = project.settings.output_interval;
+  o.initial_equilibrium = true;  // the drive starts held, the loads acting (airloads on a brake)
   return o;
 }
 

@@ -77,6 +77,8 @@ class GearedRotaryActuator : public LossyGear {
         f_exp(Param(e, "f_exp")),
         peak(Param(e, "peak")) {
     ideal = eta_op == 1.0 && eta_ai == 1.0 && tau_C == 0.0 && tau_S == 0.0 && d_vis == 0.0;
+    w_small = Param(e, "w_small");
+    if (Regularized() && !ideal) mode = kForward;  // always rolling, direction from the speed
   }
 
   void AddInertia(std::vector<Node>& nodes) const override {
@@ -111,10 +113,29 @@ class GearedRotaryActuator : public LossyGear {
     return Make(1.0, 1.0, bf, bf);
   }
   /// True while the power flows back from the load (rolling against the sign of tau_a).
-  bool Aiding() const { return Rolling() && mode * quadrant < 0; }
+  bool Aiding(const Eval& e) const { return Rolling() && Direction(e) * quadrant < 0; }
   double EtaGE(const Eval& e) const {
-    return 1.0 - Engagement(e) * (1.0 - (Aiding() ? eta_ai : eta_op));
+    return 1.0 - Engagement(e) * (1.0 - (Aiding(e) ? eta_ai : eta_op));
   }
+
+  // Regularised: one root, the input speed crossing zero (a start from rest or a reversal),
+  // where the angle of figure 7 restarts; the law is continuous there (e_speed = 0).
+  bool RegularizedLaw() const { return Regularized() && !ideal; }
+  int NumRoots() const override { return RegularizedLaw() ? 1 : LossyGear::NumRoots(); }
+  void Roots(const Eval& e, double* g) const override {
+    if (RegularizedLaw()) g[0] = WA(e);
+    else LossyGear::Roots(e, g);
+  }
+  void RootDirections(int* d) const override {
+    if (RegularizedLaw()) d[0] = 0;
+    else LossyGear::RootDirections(d);
+  }
+  bool IsSwitching() const override { return !RegularizedLaw() && LossyGear::IsSwitching(); }
+  bool RootRestarts(int k) const override { return !RegularizedLaw() && LossyGear::RootRestarts(k); }
+  void ContinuousRoot(int k, const Eval& e) override {
+    if (RegularizedLaw() && k == 0) phi_start = Phi(e);
+  }
+  void InitStates(const Eval& e, double*) const override { phi_start = Phi(e); }
 
   std::vector<std::string> SignalOutputs() const override { return {"eta_GE"}; }
   void Signals(const Eval& e, double* out) const override { out[0] = EtaGE(e); }
@@ -127,7 +148,7 @@ class GearedRotaryActuator : public LossyGear {
     LossyGear::PrepareEvent(e);
   }
   void AfterEventRow() override {
-    if (mode != mode_before) phi_start = phi_event;
+    if (!RegularizedLaw() && mode != mode_before) phi_start = phi_event;
     mode_before = mode;
     LossyGear::AfterEventRow();
   }
@@ -145,13 +166,15 @@ class GearedRotaryActuator : public LossyGear {
     out[6] = EtaGE(e);
     out[7] = mode == kUnknown || mode == kFree ? kStuck : mode;
     if (ideal) out[7] = WA(e) > 0 ? kForward : (WA(e) < 0 ? kBackward : kStuck);
+    if (RegularizedLaw()) out[7] = WA(e) > w_small ? kForward : (WA(e) < -w_small ? kBackward : kStuck);
   }
   /// The input torque (the torque the transmission sees).
   double PeakTorque(const Eval&) const override { return tau_a; }
 
   double eta_op, eta_ai, phi_eta, w_eta, J_in, J_load, tau_C, d_vis, tau_S, f_exp;
   double peak;  ///< breakaway factor: static friction = peak*(tau_C + tau_S)
-  double phi_start = 0.0, phi_event = 0.0;
+  mutable double phi_start = 0.0;  // set by InitStates (const) and at events
+  double phi_event = 0.0;
   int mode_before = kUnknown;
 };
 
@@ -396,6 +419,7 @@ std::optional<Composite> ExpandGeneral(const NetworkElement& e) {
                           {"tau_S", Param(e, "tau_S")},
                           {"f_exp", Param(e, "f_exp")},
                           {"peak", Param(e, "peak")},
+                          {"w_small", Param(e, "w_small")},
                           {"eta_GE", eta_GE}}));
     chain.push_back(e.id + ".lossyInertia");
     if (spec->FindPort("support") != nullptr) supports.push_back(e.id + ".lossyInertia.support");
@@ -417,7 +441,7 @@ std::optional<Composite> ExpandBranch(const NetworkElement& e) {
   if (Param(e, "elastic") != 0.0) RequireStiffness(e);
   std::map<std::string, double> p;
   for (const char* name : {"ratio", "elastic", "d", "b", "J", "tau_C", "d_vis", "tau_S", "f_exp",
-                           "eta_GE"})
+                           "w_small", "eta_GE"})
     p[name] = Param(e, name);
   if (Given(e, "c")) p["c"] = Param(e, "c");
   Composite out;

@@ -116,6 +116,10 @@ class Element {
   virtual std::vector<std::string> SignalOutputs() const {
     return IsSignalBlock() ? std::vector<std::string>{"y"} : std::vector<std::string>{};
   }
+  /// Whether the signal outputs may change continuously with the state (sensors, tables of a
+  /// measured angle). False for outputs that change only at events or with time (a monitor's
+  /// latched command, a brake actuation): they do not couple the Jacobian.
+  virtual bool SignalsFollowState() const { return true; }
   /// First slot of this element's outputs in Eval::signal (-1 if it has none).
   int signal_offset = -1;
   /// Called once ports are resolved: node index per flange, signal source element per input.
@@ -143,6 +147,9 @@ class Element {
   /// InputError for a conflict, e.g. two sources on one node).
   virtual void DeclareHydraulic(std::vector<HydraulicNode>& nodes) const { (void)nodes; }
   virtual std::vector<std::string> StateNames() const { return {}; }
+  /// Own states (offsets from state_offset) that are twists of a spring: the unknowns of the
+  /// static equilibrium at rest (SimulationOptions::initial_equilibrium).
+  virtual std::vector<int> TwistStates() const { return {}; }
 
   // --- initial conditions ---
   /// Equations sum(coef*phi[node]) = value that fix initial angles (and the speed version).
@@ -189,6 +196,30 @@ class Element {
     return INFINITY;
   }
   virtual bool IsSwitching() const { return false; }
+  /// Whether root k of this element needs the full event treatment (mode iteration, speed
+  /// projection, integrator restart). A root where the right-hand side stays continuous (a
+  /// backlash contact, a spring breakpoint, a regularised gear reversing) does not: the
+  /// integrator goes on, after ContinuousRoot() has updated the element.
+  virtual bool RootRestarts(int k) const {
+    (void)k;
+    return IsSwitching();
+  }
+  /// Root k (one for which RootRestarts() is false) was crossed at the state of `e`; the
+  /// element may update discrete variables that leave the right-hand side continuous there.
+  virtual void ContinuousRoot(int k, const Eval& e) {
+    (void)k;
+    (void)e;
+  }
+  /// Elements whose law assumes a branch of a piecewise-linear relation in a constraint torque
+  /// (the sign of a transmitted torque, a quadrant of a lossy gear) before the solve.
+  virtual bool HasAssumptions() const { return false; }
+  /// After the solve: true when the assumption contradicts the solution; the element has then
+  /// switched to the other branch and the forces, constraints and solve are redone. The result
+  /// is a function of the state alone (the consistent branch), not of the history.
+  virtual bool Reassume(const Eval& e) {
+    (void)e;
+    return false;
+  }
   /// Root k of this element fired at the current event (set before PrepareEvent, cleared by
   /// AfterEventRow): a threshold it located is taken as crossed even when the margin at the
   /// returned time is within roundoff.
@@ -210,6 +241,13 @@ class Element {
     return 0.0;
   }
   virtual void Fix(const Eval& e) { (void)e; }
+  /// At the end of an event, after the modes are consistent: the element may re-initialise
+  /// its own states in y (a controller's integral when a brake opens). The integrator restarts
+  /// from the new state.
+  virtual void EventStates(const Eval& e, double* y) {
+    (void)e;
+    (void)y;
+  }
   /// Resets the flags that are true only at the event instant (startForward, ...).
   virtual void AfterEventRow() {}
   /// A short description of the discrete state, for the event log ("" if none).

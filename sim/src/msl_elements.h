@@ -136,6 +136,10 @@ class Compliant : public TwoFlange {
 
   int NumStates() const override { return 1; }
   std::vector<std::string> StateNames() const override { return {id + ".phi_rel"}; }
+  /// The relative angle, unless it was given (phi_rel_start fixes it).
+  std::vector<int> TwistStates() const override {
+    return std::isnan(phi_rel_start) ? std::vector<int>{0} : std::vector<int>{};
+  }
   void InitialEquations(std::vector<InitialEquation>& position,
                         std::vector<InitialEquation>& speed) const override {
     if (!std::isnan(phi_rel_start)) position.push_back({{{b, 1.0}, {a, -1.0}}, phi_rel_start});
@@ -581,6 +585,10 @@ class Clutch : public SurfaceFriction {
   }
   int NumStates() const override { return 1; }
   std::vector<std::string> StateNames() const override { return {id + ".phi_rel"}; }
+  /// The relative angle, unless it was given (phi_rel_start fixes it).
+  std::vector<int> TwistStates() const override {
+    return std::isnan(phi_rel_start) ? std::vector<int>{0} : std::vector<int>{};
+  }
   void InitialEquations(std::vector<InitialEquation>& position,
                         std::vector<InitialEquation>& speed) const override {
     if (!std::isnan(phi_rel_start)) position.push_back({{{p, 1.0}, {m, -1.0}}, phi_rel_start});
@@ -651,16 +659,31 @@ class LossyGear : public GearBase {
   virtual Coefficients RollingCoefficients(const Eval& e) const { return At(std::abs(WA(e))); }
   /// Coefficients of the start thresholds of the stuck gear (MSL: the loss table at w = 0).
   virtual Coefficients RestCoefficients() const { return At(0.0); }
+  /// Regularised (w_small > 0, HighLift laws only): always rolling, in the direction of the
+  /// input speed, with the loss of that direction scaled by |tanh(w_a/w_small)|; continuous
+  /// in the state, no stuck mode and no stick/slip events.
+  bool Regularized() const { return w_small > 0; }
+  double Smooth(const Eval& e) const { return std::tanh(WA(e) / w_small); }
+  /// Direction of rolling: the mode, or the sign of the speed when regularised.
+  int Direction(const Eval& e) const {
+    if (!Regularized()) return mode;
+    return WA(e) >= 0 ? kForward : kBackward;
+  }
   // tau_loss = k * tau_a + c0 in the active quadrant.
   void Law(const Eval& e, double& k, double& c0) const {
     const Coefficients c = RollingCoefficients(e);
     const bool q_pos = quadrant >= 0;
-    if (mode == kForward) {
+    if (Direction(e) == kForward) {
       k = q_pos ? 1 - c.eta1 : 1 - 1 / c.eta2;
       c0 = q_pos ? c.bf1 : c.bf2;
     } else {
       k = q_pos ? 1 - 1 / c.eta2 : 1 - c.eta1;
       c0 = q_pos ? -c.bf2 : -c.bf1;
+    }
+    if (Regularized()) {
+      const double r = std::abs(Smooth(e));
+      k *= r;
+      c0 *= r;
     }
   }
   bool Rolling() const { return mode == kForward || mode == kBackward; }
@@ -704,9 +727,19 @@ class LossyGear : public GearBase {
   }
   double TauEta(const Eval& e) const {
     const double bf_a = RollingCoefficients(e).bf_a;
-    if (mode == kForward) return tau_a - bf_a;
-    if (mode == kBackward) return tau_a + bf_a;
+    const int direction = Direction(e);
+    if (direction == kForward) return tau_a - bf_a;
+    if (direction == kBackward) return tau_a + bf_a;
     return tau_a;
+  }
+  /// Regularised: the quadrant (side of the quadrant boundary of TauEta) is assumed before the
+  /// solve and corrected after it; the loss is continuous across the boundary.
+  bool HasAssumptions() const override { return Regularized() && !ideal; }
+  bool Reassume(const Eval& e) override {
+    const double te = TauEta(e);
+    if (te * quadrant >= -1e-12 * (1.0 + std::abs(tau_a))) return false;
+    quadrant = -quadrant;
+    return true;
   }
   // Start thresholds (zero-speed values, current tau_a).
   double LossMaxForward() const {
@@ -829,6 +862,7 @@ class LossyGear : public GearBase {
 
   Table table;
   bool ideal = false;
+  double w_small = 0.0;  ///< rad/s, regularisation speed (0: the MSL stick/slip law)
   int mode = kFree;
   int quadrant = 1;
   int flips = 0;

@@ -6,7 +6,10 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <sstream>
+#include <cstdio>
+#include <cstdlib>
 
 #include "highlift/core/error.h"
 #include "sundials_compat.h"
@@ -26,8 +29,8 @@ void SimulationOptions::Validate() const {
     fail("relative_tolerance = " + std::to_string(relative_tolerance) + " must lie in (0, 1)");
   if (!(absolute_tolerance > 0)) fail("absolute_tolerance must be > 0");
   if (max_step < 0) fail("max_step must be >= 0 (0: no limit)");
-  if (linear_solver != "auto" && linear_solver != "dense" && linear_solver != "band")
-    fail("linear_solver = '" + linear_solver + "' must be one of auto, dense, band");
+  if (linear_solver != "auto" && linear_solver != "dense" && linear_solver != "band" && linear_solver != "sparse")
+    fail("linear_solver = '" + linear_solver + "' must be one of auto, dense, band, sparse");
 }
 
 std::string ToString(SimulationStatus status) {
@@ -109,8 +112,49 @@ const std::vector<std::string>& Simulator::OutputNames() const {
 
 namespace {
 
+/// The Jacobian by difference quotients on the sparsity pattern of the network: columns that
+/// share no row are perturbed together (a greedy colouring), so one right-hand side per colour
+/// gives all their columns (Curtis, Powell and Reid).
+struct ColoredJacobian {
+  std::vector<int> colptr, rows;         ///< the pattern (compressed columns)
+  std::vector<std::vector<int>> colors;  ///< the columns of each colour
+  std::vector<double> increment;         ///< per column, of the current evaluation
+  N_Vector work_y = nullptr, work_f = nullptr, weights = nullptr;
+  long rhs_evaluations = 0;
+
+  void Build(const std::vector<int>& pattern_colptr, const std::vector<int>& pattern_rows) {
+    colptr = pattern_colptr;
+    rows = pattern_rows;
+    const int n = static_cast<int>(colptr.size()) - 1;
+    // The pattern is structurally symmetric (cliques), so the columns with an entry in row i
+    // are the rows of column i.
+    std::vector<int> color(n, -1), mark;
+    for (int j = 0; j < n; ++j) {
+      mark.assign(colors.size() + 1, 0);
+      for (int k = colptr[j]; k < colptr[j + 1]; ++k) {
+        const int i = rows[k];
+        for (int m = colptr[i]; m < colptr[i + 1]; ++m)
+          if (color[rows[m]] >= 0) mark[color[rows[m]]] = 1;
+      }
+      int c = 0;
+      while (mark[c]) ++c;
+      color[j] = c;
+      if (c == static_cast<int>(colors.size())) colors.emplace_back();
+      colors[c].push_back(j);
+    }
+    increment.assign(n, 0.0);
+  }
+  ~ColoredJacobian() {
+    if (work_y != nullptr) N_VDestroy(work_y);
+    if (work_f != nullptr) N_VDestroy(work_f);
+    if (weights != nullptr) N_VDestroy(weights);
+  }
+};
+
 struct CallbackData {
   System* system = nullptr;
+  void* cvode = nullptr;
+  ColoredJacobian* jacobian = nullptr;
   std::string message;
   std::string element;
   std::string cvode_message;  ///< last message of CVODE's error handler
@@ -140,6 +184,84 @@ int Rhs(sunrealtype t, N_Vector y, N_Vector ydot, void* user) {
     data->message = "right-hand side: unknown exception";
     return -1;
   }
+}
+
+// The sparse Jacobian: the increments of CVODE's own difference quotients
+// (cvLsDenseDQJac: sqrt(unit roundoff) * |y_j|, at least a minimum increment from the error
+// weights, the step and the norm of f), one right-hand side per colour.
+int SparseJacobian(sunrealtype t, N_Vector y, N_Vector fy, SUNMatrix J, void* user, N_Vector, N_Vector,
+                   N_Vector) {
+  auto* data = static_cast<CallbackData*>(user);
+  ColoredJacobian& jac = *data->jacobian;
+  try {
+    const int n = static_cast<int>(N_VGetLength(y));
+    if (CVodeGetErrWeights(data->cvode, jac.weights) != CV_SUCCESS) return -1;
+    sunrealtype h = 0.0;
+    CVodeGetCurrentStep(data->cvode, &h);
+    const double roundoff = std::numeric_limits<double>::epsilon();
+    const double srur = std::sqrt(roundoff);
+    const double fnorm = N_VWrmsNorm(fy, jac.weights);
+    const double min_inc = fnorm != 0.0 ? 1000.0 * std::abs(h) * roundoff * n * fnorm : 1.0;
+    const double* yv = N_VGetArrayPointer(y);
+    const double* fv = N_VGetArrayPointer(fy);
+    const double* wv = N_VGetArrayPointer(jac.weights);
+    double* yp = N_VGetArrayPointer(jac.work_y);
+    double* fp = N_VGetArrayPointer(jac.work_f);
+    sunindextype* colptr = SUNSparseMatrix_IndexPointers(J);
+    sunindextype* rowind = SUNSparseMatrix_IndexValues(J);
+    double* values = SUNSparseMatrix_Data(J);
+    for (int j = 0; j <= n; ++j) colptr[j] = jac.colptr[j];
+    for (std::size_t k = 0; k < jac.rows.size(); ++k) rowind[k] = jac.rows[k];
+    std::copy(yv, yv + n, yp);
+    for (const auto& group : jac.colors) {
+      for (int j : group) {
+        const double inc = std::max(srur * std::abs(yv[j]), min_inc / wv[j]);
+        // The increment that is actually represented in floating point.
+        yp[j] = yv[j] + inc;
+        jac.increment[j] = yp[j] - yv[j];
+      }
+      ++jac.rhs_evaluations;
+      if (!data->system->Evaluate(t, yp, fp)) {
+        data->message = data->system->error();
+        data->element = data->system->error_element();
+        return 1;  // recoverable: CVODE retries with a smaller step
+      }
+      for (int j : group) {
+        const double inv = 1.0 / jac.increment[j];
+        for (int k = jac.colptr[j]; k < jac.colptr[j + 1]; ++k) {
+          const int i = jac.rows[k];
+          values[k] = (fp[i] - fv[i]) * inv;
+        }
+        yp[j] = yv[j];
+      }
+    }
+    return 0;
+  } catch (const std::exception& ex) {
+    data->message = std::string("Jacobian: ") + ex.what();
+    return -1;
+  } catch (...) {
+    data->message = "Jacobian: unknown exception";
+    return -1;
+  }
+}
+
+/// Whether a root function changed sign from `before` to `after` in the allowed direction
+/// (CVodeSetRootDirection: 0 either, 1 rising, -1 falling); marks them in `info` (+1 rising,
+/// -1 falling, as CVodeGetRootInfo). A function that is exactly zero before is not a crossing.
+bool SignChanged(const std::vector<double>& before, const std::vector<double>& after, const std::vector<int>& direction,
+                 std::vector<int>& info) {
+  bool any = false;
+  for (std::size_t i = 0; i < info.size(); ++i) {
+    info[i] = 0;
+    if (before[i] == 0.0) continue;
+    const bool rising = before[i] < 0.0 && after[i] >= 0.0;
+    const bool falling = before[i] > 0.0 && after[i] <= 0.0;
+    if ((rising && direction[i] >= 0) || (falling && direction[i] <= 0)) {
+      info[i] = rising ? 1 : -1;
+      any = true;
+    }
+  }
+  return any;
 }
 
 int RootFunction(sunrealtype t, N_Vector y, sunrealtype* g, void* user) {
@@ -220,8 +342,41 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
     out.resize(columns.size());
     report.energy.computed = true;
   }
-  bool first_row = true;
+  // Peak torques and the energy balance follow the solution at every integrator step (and at
+  // both limits of every event), so they do not depend on the output interval; output rows
+  // are interpolated on the output grid.
+  bool first_sample = true;
   double last_t = options.start_time, last_loss = 0.0, last_source = 0.0, impulsive_base = 0.0;
+  System::EnergyState energy_now;
+  auto sample = [&](double t) {
+    sys.PeakTorques(tau);
+    for (std::size_t i = 0; i < tau.size(); ++i) {
+      if (std::isnan(tau[i])) continue;
+      has_torque[i] = true;
+      if (std::abs(tau[i]) > std::abs(report.peak_torques[i].tau))
+        report.peak_torques[i] = {elements[i]->id, tau[i], t};
+    }
+    if (!options.energy) return;
+    energy_now = sys.Energy();
+    EnergyBalance& b = report.energy;
+    if (first_sample) {
+      impulsive_base = sys.impulsive_loss();  // the initial projection precedes the balance
+      b.kinetic_start = energy_now.kinetic;
+      b.potential_start = energy_now.potential;
+    } else {
+      const double h = t - last_t;
+      b.dissipated += 0.5 * h * (energy_now.loss_power + last_loss);
+      b.source_work += 0.5 * h * (energy_now.source_power + last_source);
+    }
+    b.kinetic_end = energy_now.kinetic;
+    b.potential_end = energy_now.potential;
+    b.impulsive_loss = sys.impulsive_loss() - impulsive_base;
+    first_sample = false;
+    last_t = t;
+    last_loss = energy_now.loss_power;
+    last_source = energy_now.source_power;
+  };
+  // A row of the evaluated state at t (an output point or an event limit).
   auto write_row = [&](double t) {
     sys.Outputs(out.data());
     if (options.energy) {
@@ -231,33 +386,14 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
       x[1] = s.potential;
       x[2] = s.loss_power;
       x[3] = s.source_power;
-      EnergyBalance& b = report.energy;
-      if (first_row) {
-        impulsive_base = sys.impulsive_loss();  // the initial projection precedes the balance
-        b.kinetic_start = s.kinetic;
-        b.potential_start = s.potential;
-      } else {
-        const double h = t - last_t;
-        b.dissipated += 0.5 * h * (s.loss_power + last_loss);
-        b.source_work += 0.5 * h * (s.source_power + last_source);
-      }
-      b.kinetic_end = s.kinetic;
-      b.potential_end = s.potential;
-      b.impulsive_loss = sys.impulsive_loss() - impulsive_base;
-      x[4] = b.impulsive_loss;
-      first_row = false;
-      last_t = t;
-      last_loss = s.loss_power;
-      last_source = s.source_power;
+      x[4] = report.energy.impulsive_loss;
     }
     sink.Row(t, out);
-    sys.PeakTorques(tau);
-    for (std::size_t i = 0; i < tau.size(); ++i) {
-      if (std::isnan(tau[i])) continue;
-      has_torque[i] = true;
-      if (std::abs(tau[i]) > std::abs(report.peak_torques[i].tau))
-        report.peak_torques[i] = {elements[i]->id, tau[i], t};
-    }
+  };
+  // Both at once: the solution point itself (initial state, event limits, step ends on the grid).
+  auto sample_and_row = [&](double t) {
+    sample(t);
+    write_row(t);
   };
 
   sink.Begin(columns);
@@ -271,7 +407,26 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
     }
     for (std::size_t i = 0; i < who.size(); ++i)
       report.events.push_back({options.start_time, "initial", who[i], changes[i]});
-    write_row(options.start_time);
+    if (options.initial_equilibrium) {
+      bool found = false;
+      const double imbalance = sys.SolveEquilibrium(options.start_time, y0.data(), found);
+      std::ostringstream what;
+      if (found) {
+        what << "static equilibrium: loads balanced to " << imbalance << " N*m";
+        changes.clear();
+        who.clear();
+        if (!sys.HandleEvent(options.start_time, y0.data(), true, &changes, &who)) {
+          report.element = sys.error_element();
+          fail(SimulationStatus::kModelError, sys.error(), options.start_time);
+          return finish();
+        }
+      } else {
+        what << "no static equilibrium (largest torque imbalance " << imbalance
+             << " N*m): the springs start untwisted";
+      }
+      report.events.push_back({options.start_time, "initial", "", what.str()});
+    }
+    sample_and_row(options.start_time);
     sys.AfterEventRow();
   }
   if (n == 0) {
@@ -321,9 +476,26 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
   if (options.max_step > 0 && !check(CVodeSetMaxStep(cv.mem, options.max_step), "CVodeSetMaxStep", t))
     return finish();
   const int mu = std::min(sys.upper_bandwidth(), n - 1), ml = std::min(sys.lower_bandwidth(), n - 1);
-  const bool band = options.linear_solver == "band" ||
-                    (options.linear_solver == "auto" && n > 60 && (mu + ml + 1) * 4 < n);
-  if (band) {
+  const bool sparse = options.linear_solver == "sparse" || (options.linear_solver == "auto" && n > 60);
+  const bool band = options.linear_solver == "band";
+  ColoredJacobian colored;
+  data.cvode = cv.mem;
+  if (sparse) {
+    colored.Build(sys.jacobian_colptr(), sys.jacobian_rows());
+    colored.work_y = N_VClone(cv.y);
+    colored.work_f = N_VClone(cv.y);
+    colored.weights = N_VClone(cv.y);
+    if (!check_ptr(colored.work_y, "N_VClone") || !check_ptr(colored.work_f, "N_VClone") ||
+        !check_ptr(colored.weights, "N_VClone"))
+      return finish();
+    data.jacobian = &colored;
+    cv.A = SUNSparseMatrix(n, n, static_cast<sunindextype>(colored.rows.size()), CSC_MAT, cv.ctx);
+    if (!check_ptr(cv.A, "SUNSparseMatrix")) return finish();
+    cv.ls = SUNLinSol_KLU(cv.y, cv.A, cv.ctx);
+    if (!check_ptr(cv.ls, "SUNLinSol_KLU")) return finish();
+    report.statistics.linear_solver = "sparse(KLU, " + std::to_string(colored.rows.size()) + " entries, " +
+                                      std::to_string(colored.colors.size()) + " colours)";
+  } else if (band) {
     cv.A = SUNBandMatrix(n, mu, ml, cv.ctx);
     if (!check_ptr(cv.A, "SUNBandMatrix")) return finish();
     cv.ls = SUNLinSol_Band(cv.y, cv.A, cv.ctx);
@@ -337,6 +509,7 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
     report.statistics.linear_solver = "dense";
   }
   if (!check(CVodeSetLinearSolver(cv.mem, cv.ls, cv.A), "CVodeSetLinearSolver", t)) return finish();
+  if (sparse && !check(CVodeSetJacFn(cv.mem, SparseJacobian), "CVodeSetJacFn", t)) return finish();
   const int n_roots = sys.NumRoots();
   std::vector<int> root_info(std::max(n_roots, 1)), directions(std::max(n_roots, 1));
   auto set_directions = [&] {
@@ -360,6 +533,8 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
     if (CVodeGetNumNonlinSolvConvFails(cv.mem, &v) == CV_SUCCESS)
       s.nonlinear_convergence_failures += v;
     if (CVodeGetNumGEvals(cv.mem, &v) == CV_SUCCESS) s.root_evaluations += v;
+    s.rhs_evaluations += colored.rhs_evaluations;  // the sparse Jacobian's own
+    colored.rhs_evaluations = 0;
   };
   auto record_failure_state = [&] {
     double* yv = N_VGetArrayPointer(cv.y);
@@ -385,8 +560,7 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
   };
   auto handle_event = [&](double te, const char* kind, const std::string& what,
                           const int* fired) {
-    sys.Outputs(out.data());  // left limit (state and modes before the event)
-    write_row(te);
+    write_row(te);  // left limit (state and modes before the event), sampled at the step end
     std::vector<std::string> changes, who;
     double* yv = N_VGetArrayPointer(cv.y);
     if (!sys.HandleEvent(te, yv, false, &changes, &who, fired)) {
@@ -397,7 +571,7 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
     }
     if (who.empty()) report.events.push_back({te, kind, "", what});
     for (std::size_t i = 0; i < who.size(); ++i) report.events.push_back({te, kind, who[i], changes[i]});
-    write_row(te);
+    sample_and_row(te);  // right limit
     sys.AfterEventRow();
     if (static_cast<int>(report.events.size()) > options.max_events) {
       fail(SimulationStatus::kTooManyEvents,
@@ -412,48 +586,140 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
     return set_directions();
   };
 
+  // One step at a time (CV_ONE_STEP): every step end is sampled; the output points it passed
+  // are interpolated (CVodeGetDky); time events are stop times, state events roots.
   const double t0 = options.start_time, t_end = options.stop_time, dt = options.output_interval;
   const double eps_t = 1e-12 * std::max(1.0, std::abs(t_end));
-  long k = 1;
-  double last_progress = -1;
-  while (t < t_end - eps_t) {
-    double t_out = std::min(t0 + k * dt, t_end);
-    if (t_out <= t + eps_t) {
-      ++k;
-      continue;
+  long k = 1;  // next output point t0 + k*dt
+  auto next_output = [&] { return std::min(t0 + static_cast<double>(k) * dt, t_end); };
+  N_Vector interpolated = N_VClone(cv.y);
+  if (!check_ptr(interpolated, "N_VClone")) return finish();
+  struct VectorGuard {
+    N_Vector v;
+    ~VectorGuard() { N_VDestroy(v); }
+  } interpolated_guard{interpolated};
+  long steps_since_output = 0;
+  double last_progress = -1, stop_set = NAN;
+  // Root functions at the last sample point (a step end or an output point).
+  std::vector<double> g_prev(std::max(n_roots, 1), 1.0), g_out(std::max(n_roots, 1), 1.0), g_probe(g_out);
+  double g_prev_time = t;
+  if (n_roots > 0) {
+    sys.Evaluate(t, N_VGetArrayPointer(cv.y), nullptr);
+    sys.Roots(g_prev.data());
+  }
+  // The state at tq on the interpolant of the last step, evaluated.
+  auto interpolate = [&](double tq) {
+    if (!check(CVodeGetDky(cv.mem, tq, 0, interpolated), "CVodeGetDky", tq)) return false;
+    if (!sys.Evaluate(tq, N_VGetArrayPointer(interpolated), nullptr)) {
+      fail(SimulationStatus::kModelError, sys.error(), tq);
+      return false;
     }
+    return true;
+  };
+  // The earliest crossing in (ta, tb] of the roots flagged in root_info, on the interpolant, by
+  // bisection to CVODE's root tolerance; leaves `interpolated` and root_info at the root.
+  auto LocateRoot = [&](double ta, double tb, double& t_root) {
+    const double tol = 100.0 * std::numeric_limits<double>::epsilon() * std::max(std::abs(ta), std::abs(tb)) + 1e-15;
+    std::vector<int> flagged(root_info.begin(), root_info.end());
+    while (tb - ta > tol) {
+      const double tm = 0.5 * (ta + tb);
+      if (!interpolate(tm)) return false;
+      sys.Roots(g_probe.data());
+      std::vector<int> info(flagged.size(), 0);
+      if (SignChanged(g_prev, g_probe, directions, info)) {
+        tb = tm;
+        flagged = info;
+      } else {
+        ta = tm;
+      }
+    }
+    t_root = tb;
+    root_info = flagged;
+    return interpolate(tb);
+  };
+  while (t < t_end - eps_t) {
     const double t_event = sys.NextTimeEvent(t);
     const bool event_ahead = t_event <= t_end + eps_t;
-    double target = t_out;
-    if (event_ahead && t_event <= t_out + eps_t) target = t_event;
     const double stop = event_ahead ? std::min(t_event, t_end) : t_end;
-    if (!check(CVodeSetStopTime(cv.mem, std::max(stop, target)), "CVodeSetStopTime", t)) break;
+    if (stop != stop_set) {
+      if (!check(CVodeSetStopTime(cv.mem, stop), "CVodeSetStopTime", t)) break;
+      stop_set = stop;
+    }
     double t_ret = t;
-    const int flag = CVode(cv.mem, target, cv.y, &t_ret, CV_NORMAL);
+    const int flag = CVode(cv.mem, stop, cv.y, &t_ret, CV_ONE_STEP);
     if (flag < 0) {
       check(flag, "CVode", t_ret);
       record_failure_state();
       break;
     }
-    t = t_ret;
-    report.time = t;
-    if (flag == CV_ROOT_RETURN) {
-      if (!sys.Evaluate(t, N_VGetArrayPointer(cv.y), nullptr)) {
-        fail(SimulationStatus::kModelError, sys.error(), t);
+    // The output points the step passed (those at t_ret itself are written below). The root
+    // functions are checked there too, as CVODE does at output times in its normal mode: a
+    // sign change that a long step hides (a friction element that sticks and breaks away
+    // within one step) is located on the interpolant and handled as a root of the step.
+    bool failed = false, hidden_root = false;
+    while (next_output() < t_ret - eps_t) {
+      const double t_out = next_output();
+      if (!interpolate(t_out)) {
+        failed = true;
         break;
       }
-      if (!check(CVodeGetRootInfo(cv.mem, root_info.data()), "CVodeGetRootInfo", t)) break;
+      if (n_roots > 0) {
+        sys.Roots(g_out.data());
+        if (SignChanged(g_prev, g_out, directions, root_info)) {
+          double t_root = t_out;
+          if (!LocateRoot(g_prev_time, t_out, t_root)) {
+            failed = true;
+            break;
+          }
+          std::copy(N_VGetArrayPointer(interpolated), N_VGetArrayPointer(interpolated) + n, N_VGetArrayPointer(cv.y));
+          t_ret = t_root;
+          hidden_root = true;
+          break;
+        }
+        g_prev.swap(g_out);
+        g_prev_time = t_out;
+      }
+      sample(t_out);
+      write_row(t_out);
+      ++k;
+      steps_since_output = 0;
+    }
+    if (failed) break;
+    if (++steps_since_output > options.max_steps_per_output) {
+      // What CVODE's mxstep reports in its normal mode, counted here in one-step mode.
+      report.sundials_flag = detail::CvodeFlagName(CV_TOO_MUCH_WORK);
+      fail(SimulationStatus::kSolverFailure,
+           "CVode failed with " + report.sundials_flag + " at t = " + std::to_string(t_ret) + " s: more than " +
+               std::to_string(options.max_steps_per_output) +
+               " steps between two output points (the solution is stiff or chatters); raise max_steps_per_output",
+           t_ret);
+      report.time = t_ret;
+      record_failure_state();
+      break;
+    }
+    t = t_ret;
+    report.time = t;
+    if (!sys.Evaluate(t, N_VGetArrayPointer(cv.y), nullptr)) {
+      fail(SimulationStatus::kModelError, sys.error(), t);
+      break;
+    }
+    sample(t);
+    const bool on_output = std::abs(t - next_output()) <= eps_t;
+    if (flag == CV_ROOT_RETURN || hidden_root) {
+      if (!hidden_root && !check(CVodeGetRootInfo(cv.mem, root_info.data()), "CVodeGetRootInfo", t)) break;
       std::string what = "root";
-      bool switching = false;
       for (const auto& el : elements)
         for (int r = 0; r < el->NumRoots(); ++r)
-          if (root_info[el->root_offset + r] != 0) {
-            what = el->id + (el->IsSwitching() ? " root " + std::to_string(r) : " contact");
-            switching = switching || el->IsSwitching();
-          }
-      if (!switching) {
-        // A kink without a discrete state (backlash contact): the right-hand side stays
-        // continuous, so the integrator continues without a restart.
+          if (root_info[el->root_offset + r] != 0)
+            what = el->id + (el->RootRestarts(r) ? " root " + std::to_string(r) : " contact");
+      if (!sys.NeedsRestart(root_info.data())) {
+        // A kink (backlash contact, spring breakpoint, a regularised gear reversing): the
+        // right-hand side stays continuous, so the integrator continues without a restart.
+        if (!sys.HandleContinuousRoots(t, N_VGetArrayPointer(cv.y), root_info.data())) {
+          fail(SimulationStatus::kModelError, sys.error(), t);
+          break;
+        }
+        ++report.statistics.continuous_roots;
         write_row(t);
         report.events.push_back({t, "state", "", what});
         if (static_cast<int>(report.events.size()) > options.max_events) {
@@ -461,23 +727,31 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
                "more than " + std::to_string(options.max_events) + " events (chattering?)", t);
           break;
         }
-        if (std::abs(t - t_out) <= eps_t) ++k;
-        continue;
+        // CVODE stepped beyond a hidden root: it restarts from the root.
+        if (hidden_root) {
+          accumulate();
+          ++report.statistics.reinitialisations;
+          if (!check(CVodeReInit(cv.mem, t, cv.y), "CVodeReInit", t)) break;
+        }
+      } else if (!handle_event(t, "state", what, root_info.data())) {
+        break;
       }
-      if (!handle_event(t, "state", what, root_info.data())) break;
-      if (std::abs(t - t_out) <= eps_t) ++k;
-      continue;
-    }
-    if (!sys.Evaluate(t, N_VGetArrayPointer(cv.y), nullptr)) {
-      fail(SimulationStatus::kModelError, sys.error(), t);
-      break;
-    }
-    if (event_ahead && std::abs(t - t_event) <= eps_t && t < t_end - eps_t) {
+      if (on_output) ++k;
+    } else if (event_ahead && std::abs(t - t_event) <= eps_t && t < t_end - eps_t) {
       if (!handle_event(t, "time", "input", nullptr)) break;
-      if (std::abs(t - t_out) <= eps_t) ++k;
-    } else {
+      if (on_output) ++k;
+    } else if (on_output) {
       write_row(t);
       ++k;
+      steps_since_output = 0;
+    }
+    if (n_roots > 0) {  // the root functions where the next step starts
+      if (!sys.Evaluate(t, N_VGetArrayPointer(cv.y), nullptr)) {
+        fail(SimulationStatus::kModelError, sys.error(), t);
+        break;
+      }
+      sys.Roots(g_prev.data());
+      g_prev_time = t;
     }
     if (progress != nullptr) {
       const double fraction = (t - t0) / (t_end - t0);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <map>
 #include <numeric>
@@ -213,30 +214,12 @@ System::System(const Network& original) {
     for (std::size_t i = 0; i < elements_.size(); ++i)
       if (elements_[i]->signal_offset >= 0) visit(static_cast<int>(i));
   }
-  // States: node angle and speed at first use, then the element's own states.
-  auto assign_node = [&](int n) {
-    if (n < 0 || nodes_[n].ground || nodes_[n].s_phi >= 0) return;
-    nodes_[n].s_phi = n_states_++;
-    nodes_[n].s_w = n_states_++;
-    state_names_.push_back(nodes_[n].name + ".phi");
-    state_names_.push_back(nodes_[n].name + ".w");
-  };
-  auto assign_hydraulic = [&](int n) {
-    if (hnodes_[n].fixed || hnodes_[n].s_p >= 0) return;
-    hnodes_[n].s_p = n_states_++;
-    state_names_.push_back(hnodes_[n].name + ".p");
-  };
+  // Roots.
   for (auto& el : elements_) {
-    for (int n : el->Nodes()) assign_node(n);
-    for (int n : el->HydraulicNodes()) assign_hydraulic(n);
-    el->state_offset = n_states_;
-    n_states_ += el->NumStates();
-    for (const auto& s : el->StateNames()) state_names_.push_back(s);
     el->root_offset = n_roots_;
     n_roots_ += el->NumRoots();
   }
-  for (std::size_t n = 0; n < nodes_.size(); ++n) assign_node(static_cast<int>(n));
-  for (std::size_t n = 0; n < hnodes_.size(); ++n) assign_hydraulic(static_cast<int>(n));
+  AssignStates(signal_source, slot_owner);
   // Nodes whose acceleration nothing determines.
   std::vector<bool> coupled(nodes_.size(), false);
   for (const auto& el : elements_)
@@ -251,48 +234,8 @@ System::System(const Network& original) {
     output_offset_.push_back(static_cast<int>(output_names_.size()));
     for (const auto& o : el->OutputNames()) output_names_.push_back(el->id + "." + o);
   }
-  // Bandwidth: every element's footprint, widened over groups of coupled nodes.
-  {
-    UnionFind groups(static_cast<int>(nodes_.size()));
-    for (const auto& el : elements_) {
-      int first = -1;
-      for (int n : el->CoupledNodes()) {
-        if (nodes_[n].ground) continue;
-        if (first < 0) first = n;
-        else groups.Unite(first, n);
-      }
-    }
-    std::vector<int> lo(nodes_.size(), std::numeric_limits<int>::max()), hi(nodes_.size(), -1);
-    for (const auto& el : elements_) {
-      int emin = std::numeric_limits<int>::max(), emax = -1;
-      // Node angles are pure integrators (phi' = w, read by no law): only the speeds count.
-      for (int n : el->Nodes())
-        if (!nodes_[n].ground) {
-          emin = std::min(emin, nodes_[n].s_w);
-          emax = std::max(emax, nodes_[n].s_w);
-        }
-      for (int n : el->HydraulicNodes())
-        if (hnodes_[n].s_p >= 0) {
-          emin = std::min(emin, hnodes_[n].s_p);
-          emax = std::max(emax, hnodes_[n].s_p);
-        }
-      if (el->NumStates() > 0) {
-        emin = std::min(emin, el->state_offset);
-        emax = std::max(emax, el->state_offset + el->NumStates() - 1);
-      }
-      if (emax < 0) continue;
-      bandwidth_ = std::max(bandwidth_, emax - emin);
-      for (int n : el->Nodes())
-        if (!nodes_[n].ground) {
-          const int r = groups.Find(n);
-          lo[r] = std::min(lo[r], emin);
-          hi[r] = std::max(hi[r], emax);
-        }
-    }
-    for (std::size_t r = 0; r < nodes_.size(); ++r)
-      if (hi[r] >= 0) bandwidth_ = std::max(bandwidth_, hi[r] - lo[r]);
-    bandwidth_ = std::max(bandwidth_, 1);  // phi' = w within each node's pair
-  }
+  for (auto& el : elements_)
+    if (el->HasAssumptions()) assuming_.push_back(el.get());
   // Workspace.
   eval_.phi.assign(nodes_.size(), 0.0);
   eval_.w.assign(nodes_.size(), 0.0);
@@ -304,6 +247,230 @@ System::System(const Network& original) {
   eval_.cap.assign(hnodes_.size(), 0.0);
   parent_.resize(nodes_.size());
   local_.assign(nodes_.size(), -1);
+}
+
+void System::AssignStates(const std::map<std::string, int>& signal_source, const std::vector<int>& slot_owner) {
+  const int n_nodes = static_cast<int>(nodes_.size());
+  const int n_elements = static_cast<int>(elements_.size());
+  const int n_hydraulic = static_cast<int>(hnodes_.size());
+  // Blocks of states: a node's (phi, w), an element's own states, a hydraulic node's pressure.
+  const int n_blocks = n_nodes + n_elements + n_hydraulic;
+  auto element_block = [&](int i) { return n_nodes + i; };
+  auto hydraulic_block = [&](int h) { return n_nodes + n_elements + h; };
+  std::vector<int> block_size(n_blocks, 0);
+  for (int n = 0; n < n_nodes; ++n) block_size[n] = nodes_[n].ground ? 0 : 2;
+  for (int i = 0; i < n_elements; ++i) block_size[element_block(i)] = elements_[i]->NumStates();
+  for (int h = 0; h < n_hydraulic; ++h) block_size[hydraulic_block(h)] = hnodes_[h].fixed ? 0 : 1;
+  auto add = [&](std::vector<int>& set, int block) {
+    if (block_size[block] > 0) set.push_back(block);
+  };
+  auto tidy = [](std::vector<int>& set) {
+    std::sort(set.begin(), set.end());
+    set.erase(std::unique(set.begin(), set.end()), set.end());
+  };
+  // What each element reads: its nodes, its states, its hydraulic nodes.
+  std::vector<std::vector<int>> own(n_elements);
+  for (int i = 0; i < n_elements; ++i) {
+    for (int n : elements_[i]->Nodes()) add(own[i], n);
+    add(own[i], element_block(i));
+    for (int h : elements_[i]->HydraulicNodes()) add(own[i], hydraulic_block(h));
+    tidy(own[i]);
+  }
+  // The states a signal output follows: its element's own, and those of its inputs' sources
+  // (none for outputs that change only at events).
+  std::vector<std::vector<int>> follows(n_elements);
+  std::vector<char> state(n_elements, 0);
+  std::function<void(int)> visit = [&](int i) {
+    if (state[i] != 0) return;  // done, or on the stack (loops are rejected above)
+    state[i] = 1;
+    if (elements_[i]->SignalsFollowState()) {
+      follows[i] = own[i];
+      for (const auto& in : elements_[i]->SignalInputs()) {
+        auto it = signal_source.find(elements_[i]->id + "." + in);
+        if (it == signal_source.end()) continue;
+        const int source = slot_owner[it->second];
+        visit(source);
+        follows[i].insert(follows[i].end(), follows[source].begin(), follows[source].end());
+      }
+      tidy(follows[i]);
+    }
+    state[i] = 2;
+  };
+  // Everything an element's law depends on: what it reads and the states behind its inputs.
+  std::vector<std::vector<int>> footprint(n_elements);
+  for (int i = 0; i < n_elements; ++i) {
+    footprint[i] = own[i];
+    for (const auto& in : elements_[i]->SignalInputs()) {
+      auto it = signal_source.find(elements_[i]->id + "." + in);
+      if (it == signal_source.end()) continue;
+      const int source = slot_owner[it->second];
+      visit(source);
+      footprint[i].insert(footprint[i].end(), follows[source].begin(), follows[source].end());
+    }
+    tidy(footprint[i]);
+  }
+  // Groups of nodes that constraints may couple: their accelerations are solved together, so
+  // each depends on every law acting on the group.
+  UnionFind groups(n_nodes);
+  for (const auto& el : elements_) {
+    int first = -1;
+    for (int n : el->CoupledNodes()) {
+      if (nodes_[n].ground) continue;
+      if (first < 0) first = n;
+      else groups.Unite(first, n);
+    }
+  }
+  std::vector<std::vector<int>> group_blocks(n_nodes);  // by group root: the node blocks
+  for (int n = 0; n < n_nodes; ++n)
+    if (!nodes_[n].ground) group_blocks[groups.Find(n)].push_back(n);
+  // Cliques of the Jacobian's sparsity: every derivative in a clique may depend on every state
+  // in it.
+  std::vector<std::vector<int>> cliques;
+  std::vector<int> clique_of_group(n_nodes, -1);
+  for (int n = 0; n < n_nodes; ++n) {
+    if (nodes_[n].ground) continue;
+    const int r = groups.Find(n);
+    if (clique_of_group[r] < 0) {
+      clique_of_group[r] = static_cast<int>(cliques.size());
+      cliques.push_back(group_blocks[r]);
+    }
+  }
+  std::vector<std::vector<int>> hydraulic_clique(n_hydraulic);
+  for (int i = 0; i < n_elements; ++i) {
+    std::vector<int> element_clique = footprint[i];
+    for (int n : elements_[i]->Nodes()) {
+      if (nodes_[n].ground) continue;
+      auto& c = cliques[clique_of_group[groups.Find(n)]];
+      c.insert(c.end(), footprint[i].begin(), footprint[i].end());
+      const auto& g = group_blocks[groups.Find(n)];
+      element_clique.insert(element_clique.end(), g.begin(), g.end());
+    }
+    for (int h : elements_[i]->HydraulicNodes())
+      if (block_size[hydraulic_block(h)] > 0) {
+        auto& c = hydraulic_clique[h];
+        c.insert(c.end(), footprint[i].begin(), footprint[i].end());
+        c.push_back(hydraulic_block(h));
+      }
+    if (block_size[element_block(i)] > 0) cliques.push_back(std::move(element_clique));
+  }
+  for (auto& c : hydraulic_clique)
+    if (!c.empty()) cliques.push_back(std::move(c));
+  for (auto& c : cliques) tidy(c);
+  // Reverse Cuthill-McKee on the block graph (blocks adjacent when they share a clique).
+  std::vector<std::vector<int>> adjacent(n_blocks);
+  for (const auto& c : cliques)
+    for (int a : c)
+      for (int b : c)
+        if (a != b) adjacent[a].push_back(b);
+  for (auto& a : adjacent) tidy(a);
+  std::vector<int> order;
+  order.reserve(n_blocks);
+  std::vector<char> placed(n_blocks, 0);
+  auto degree = [&](int b) { return adjacent[b].size(); };
+  auto bfs_from = [&](int root, std::vector<int>& level_order, std::vector<int>& level) {
+    level_order.clear();
+    level.assign(n_blocks, -1);
+    level[root] = 0;
+    level_order.push_back(root);
+    for (std::size_t k = 0; k < level_order.size(); ++k)
+      for (int v : adjacent[level_order[k]])
+        if (level[v] < 0) {
+          level[v] = level[level_order[k]] + 1;
+          level_order.push_back(v);
+        }
+  };
+  std::vector<int> scratch, level;
+  for (int start = 0; start < n_blocks; ++start) {
+    if (placed[start] || block_size[start] == 0) continue;
+    // A pseudo-peripheral root of this component (George and Liu): move to a block of least
+    // degree in the last BFS level while that increases the eccentricity.
+    int root = start;
+    bfs_from(root, scratch, level);
+    int eccentricity = level[scratch.back()];
+    for (int pass = 0; pass < 8; ++pass) {
+      int far = scratch.back();
+      for (int v : scratch)
+        if (level[v] == eccentricity && degree(v) < degree(far)) far = v;
+      bfs_from(far, scratch, level);
+      const int e_far = level[scratch.back()];
+      if (e_far <= eccentricity) {
+        bfs_from(root, scratch, level);
+        break;
+      }
+      root = far;
+      eccentricity = e_far;
+    }
+    // Cuthill-McKee from the root: neighbours by increasing degree.
+    const std::size_t first = order.size();
+    order.push_back(root);
+    placed[root] = 1;
+    for (std::size_t k = first; k < order.size(); ++k) {
+      std::vector<int> next;
+      for (int v : adjacent[order[k]])
+        if (!placed[v]) next.push_back(v);
+      std::stable_sort(next.begin(), next.end(), [&](int a, int b) { return degree(a) < degree(b); });
+      for (int v : next) {
+        placed[v] = 1;
+        order.push_back(v);
+      }
+    }
+    std::reverse(order.begin() + static_cast<std::ptrdiff_t>(first), order.end());
+  }
+  // State indices in that order.
+  std::vector<int> first_state(n_blocks, -1);
+  for (int b : order) {
+    first_state[b] = n_states_;
+    if (b < n_nodes) {
+      nodes_[b].s_phi = n_states_++;
+      nodes_[b].s_w = n_states_++;
+      state_names_.push_back(nodes_[b].name + ".phi");
+      state_names_.push_back(nodes_[b].name + ".w");
+    } else if (b < n_nodes + n_elements) {
+      Element& el = *elements_[b - n_nodes];
+      el.state_offset = n_states_;
+      n_states_ += el.NumStates();
+      for (const auto& name : el.StateNames()) state_names_.push_back(name);
+    } else {
+      HydraulicNode& h = hnodes_[b - n_nodes - n_elements];
+      h.s_p = n_states_++;
+      state_names_.push_back(h.name + ".p");
+    }
+  }
+  for (auto& el : elements_)
+    if (el->NumStates() == 0) el->state_offset = n_states_;
+  HIGHLIFT_CHECK(static_cast<int>(state_names_.size()) == n_states_, "state names and states disagree");
+  // Sparsity of the Jacobian (compressed columns, rows sorted, the diagonal included): column
+  // j may have entries in every row of every clique that contains j.
+  {
+    std::vector<std::vector<int>> clique_states(cliques.size());
+    std::vector<std::vector<int>> cliques_of_state(n_states_);
+    for (std::size_t c = 0; c < cliques.size(); ++c)
+      for (int b : cliques[c])
+        for (int k = 0; k < block_size[b]; ++k) {
+          clique_states[c].push_back(first_state[b] + k);
+          cliques_of_state[first_state[b] + k].push_back(static_cast<int>(c));
+        }
+    jacobian_colptr_.assign(1, 0);
+    jacobian_rows_.clear();
+    std::vector<int> rows;
+    for (int j = 0; j < n_states_; ++j) {
+      rows.assign(1, j);
+      for (int c : cliques_of_state[j]) rows.insert(rows.end(), clique_states[c].begin(), clique_states[c].end());
+      tidy(rows);
+      jacobian_rows_.insert(jacobian_rows_.end(), rows.begin(), rows.end());
+      jacobian_colptr_.push_back(static_cast<int>(jacobian_rows_.size()));
+    }
+  }
+  // Half-bandwidth: the widest clique, in state indices.
+  bandwidth_ = 1;  // phi' = w within each node's pair
+  for (const auto& c : cliques) {
+    int lo = std::numeric_limits<int>::max(), hi = -1;
+    for (int b : c) {
+      lo = std::min(lo, first_state[b]);
+      hi = std::max(hi, first_state[b] + block_size[b] - 1);
+    }
+    if (hi >= 0) bandwidth_ = std::max(bandwidth_, hi - lo);
+  }
 }
 
 std::vector<double> System::InitialState(double t0) {
@@ -374,6 +541,74 @@ std::vector<double> System::InitialState(double t0) {
   return y;
 }
 
+double System::SolveEquilibrium(double t, double* y, bool& found) {
+  found = false;
+  std::vector<int> unknowns;
+  for (const auto& el : elements_)
+    for (int k : el->TwistStates()) unknowns.push_back(el->state_offset + k);
+  std::vector<int> rows;
+  double j_max = 0.0;
+  for (std::size_t n = 0; n < nodes_.size(); ++n)
+    if (!nodes_[n].ground) {
+      rows.push_back(static_cast<int>(n));
+      j_max = std::max(j_max, nodes_[n].J);
+    }
+  if (unknowns.empty() || rows.empty()) return 0.0;
+  const int m = static_cast<int>(rows.size()), k = static_cast<int>(unknowns.size());
+  // Residual: the torque that accelerates each node (its inertia times its acceleration; a
+  // node without inertia of its own counts with a small share).
+  auto residual = [&](const double* state, Eigen::VectorXd& r) {
+    if (!Evaluate(t, state, nullptr)) return false;
+    r.resize(m);
+    for (int i = 0; i < m; ++i) {
+      const int n = rows[i];
+      r[i] = (nodes_[n].J + 1e-6 * j_max) * eval_.acc[n];
+    }
+    return true;
+  };
+  std::vector<double> x(y, y + n_states_);
+  Eigen::VectorXd r, r_probe;
+  if (!residual(x.data(), r)) return NAN;
+  double torque_scale = 0.0;  // the loads: the largest force on a node at the start
+  for (int i = 0; i < m; ++i) torque_scale = std::max(torque_scale, std::abs(eval_.force[rows[i]]));
+  const double start = r.lpNorm<Eigen::Infinity>();
+  const double goal = 1e-10 * (1.0 + torque_scale);
+  if (start <= goal) {
+    found = true;
+    return start;
+  }
+  Eigen::MatrixXd jac(m, k);
+  double best = start;
+  for (int iteration = 0; iteration < 8 && best > goal; ++iteration) {
+    for (int j = 0; j < k; ++j) {
+      double& u = x[unknowns[j]];
+      const double saved = u, delta = 1e-7 * (1e-3 + std::abs(u));
+      u = saved + delta;
+      if (!residual(x.data(), r_probe)) return NAN;
+      jac.col(j) = (r_probe - r) / delta;
+      u = saved;
+    }
+    const Eigen::VectorXd step = jac.colPivHouseholderQr().solve(-r);
+    if (!step.allFinite()) break;
+    std::vector<double> trial = x;
+    for (int j = 0; j < k; ++j) trial[unknowns[j]] += step[j];
+    if (!residual(trial.data(), r_probe)) return NAN;
+    const double norm = r_probe.lpNorm<Eigen::Infinity>();
+    if (!(norm < best)) break;
+    best = norm;
+    x = std::move(trial);
+    r = r_probe;
+  }
+  // Accept only an equilibrium: the loads balanced to a small fraction of themselves.
+  if (best <= 1e-6 * (1.0 + torque_scale)) {
+    found = true;
+    std::copy(x.begin(), x.end(), y);
+    return best;
+  }
+  Evaluate(t, y, nullptr);
+  return best;
+}
+
 void System::EvaluateSignals() {
   for (int i : signal_order_) elements_[i]->Signals(eval_, &eval_.signal[elements_[i]->signal_offset]);
 }
@@ -402,11 +637,25 @@ bool System::Evaluate(double t, const double* y, double* ydot) {
     e.cap[n] = 0.0;
   }
   EvaluateSignals();
-  e.n_constraints = 0;
-  for (auto& el : elements_) el->Forces(e);
-  for (auto& el : elements_) el->Constraints(e);
-  if (!Solve()) return false;
-  for (auto& el : elements_) el->AfterSolve(e);
+  // Elements with assumed branches (HasAssumptions) may ask for the solve to be redone with
+  // the consistent branch; each pass settles at least one of them.
+  constexpr int kMaxPasses = 16;
+  for (int pass = 0;; ++pass) {
+    if (pass > 0)
+      for (std::size_t n = 0; n < nodes_.size(); ++n) {
+        e.force[n] = 0.0;
+        e.acc[n] = 0.0;
+      }
+    e.n_constraints = 0;
+    for (auto& el : elements_) el->Forces(e);
+    for (auto& el : elements_) el->Constraints(e);
+    if (!Solve()) return false;
+    for (auto& el : elements_) el->AfterSolve(e);
+    if (pass + 1 >= kMaxPasses) break;
+    bool again = false;
+    for (Element* el : assuming_) again = el->Reassume(e) || again;
+    if (!again) break;
+  }
   if (ydot != nullptr) {
     for (const Node& node : nodes_) {
       if (node.ground) continue;
@@ -419,15 +668,65 @@ bool System::Evaluate(double t, const double* y, double* ydot) {
   return true;
 }
 
-bool System::Solve() {
+namespace {
+
+/// Solves A x = b in place (A column-major n x n, b overwritten by x) by Gaussian elimination
+/// with partial pivoting; false when a pivot is below 1e-12 of the largest entry (redundant
+/// constraints), leaving A and b undefined. For the small KKT systems of the node groups
+/// (a gear: 3 x 3, a gearbox with its loss: 5 x 5), where a library LU spends its time in
+/// bookkeeping.
+bool SmallLuSolve(double* A, double* b, int n) {
+  auto at = [&](int i, int j) -> double& { return A[i + j * n]; };
+  double scale = 0.0;
+  for (int k = 0; k < n * n; ++k) scale = std::max(scale, std::abs(A[k]));
+  const double tiny = 1e-12 * scale;
+  for (int k = 0; k < n; ++k) {
+    int p = k;
+    for (int i = k + 1; i < n; ++i)
+      if (std::abs(at(i, k)) > std::abs(at(p, k))) p = i;
+    if (!(std::abs(at(p, k)) > tiny)) return false;
+    if (p != k) {
+      for (int j = k; j < n; ++j) std::swap(at(k, j), at(p, j));
+      std::swap(b[k], b[p]);
+    }
+    const double inv = 1.0 / at(k, k);
+    for (int i = k + 1; i < n; ++i) {
+      const double f = at(i, k) * inv;
+      if (f == 0.0) continue;
+      for (int j = k + 1; j < n; ++j) at(i, j) -= f * at(k, j);
+      b[i] -= f * b[k];
+    }
+  }
+  for (int k = n - 1; k >= 0; --k) {
+    double v = b[k];
+    for (int j = k + 1; j < n; ++j) v -= at(k, j) * b[j];
+    b[k] = v / at(k, k);
+  }
+  return true;
+}
+
+}  // namespace
+
+// The pattern of the active constraints: owner and flange nodes of every row and column. It
+// changes only at events (modes), so the grouping below is computed again only then.
+void System::ConstraintSignature(std::vector<int>& signature) const {
+  const Eval& e = eval_;
+  signature.clear();
+  signature.push_back(e.n_constraints);
+  for (int k = 0; k < e.n_constraints; ++k) {
+    const Constraint& c = e.constraints[k];
+    signature.push_back(c.owner);
+    signature.push_back(static_cast<int>(c.row.size()));
+    for (const auto& [n, coef] : c.row) signature.push_back(n);
+    signature.push_back(static_cast<int>(c.column.size()));
+    for (const auto& [n, coef] : c.column) signature.push_back(n);
+  }
+}
+
+void System::BuildGroups() {
   Eval& e = eval_;
   const int n_nodes = static_cast<int>(nodes_.size());
-  if (e.n_constraints == 0) {
-    for (int n = 0; n < n_nodes; ++n)
-      if (!nodes_[n].ground) e.acc[n] = e.force[n] / nodes_[n].J;
-    return true;
-  }
-  // Groups of nodes coupled by the active constraints (union-find on reused buffers).
+  // Groups of nodes coupled by the active constraints (union-find).
   in_constraint_.assign(n_nodes, 0);
   auto find = [&](int i) {
     while (parent_[i] != i) i = parent_[i] = parent_[parent_[i]];
@@ -447,29 +746,25 @@ bool System::Solve() {
     for (auto [n, c] : e.constraints[k].row) touch(n);
     for (auto [n, c] : e.constraints[k].column) touch(n);
   }
-  n_groups_ = 0;
-  group_of_root_.assign(n_nodes, -1);
+  groups_.clear();
+  unconstrained_.clear();
+  std::vector<int> group_of_root(n_nodes, -1);
   auto group = [&](int root) {
-    if (group_of_root_[root] < 0) {
-      group_of_root_[root] = n_groups_;
-      if (static_cast<int>(group_nodes_.size()) <= n_groups_) {
-        group_nodes_.emplace_back();
-        group_rows_.emplace_back();
-      }
-      group_nodes_[n_groups_].clear();
-      group_rows_[n_groups_].clear();
-      ++n_groups_;
+    if (group_of_root[root] < 0) {
+      group_of_root[root] = static_cast<int>(groups_.size());
+      groups_.emplace_back();
     }
-    return group_of_root_[root];
+    return group_of_root[root];
   };
   for (int n = 0; n < n_nodes; ++n) {
     if (nodes_[n].ground) continue;
     if (!in_constraint_[n]) {
-      e.acc[n] = e.force[n] / nodes_[n].J;
+      unconstrained_.push_back(n);
       continue;
     }
-    group_nodes_[group(find(n))].push_back(n);
+    groups_[group(find(n))].nodes.push_back(n);
   }
+  grounded_rows_.clear();
   for (int k = 0; k < e.n_constraints; ++k) {
     int any = -1;
     for (auto [n, c] : e.constraints[k].row)
@@ -477,61 +772,102 @@ bool System::Solve() {
     for (auto [n, c] : e.constraints[k].column)
       if (!nodes_[n].ground) any = n;
     if (any < 0) {
-      // Constraint between ground nodes only: its torque is undetermined; take 0.
-      e.constraints[k].lambda = 0.0;
+      grounded_rows_.push_back(k);  // between ground nodes only: its torque is undetermined
       continue;
     }
-    group_rows_[group(find(any))].push_back(k);
+    groups_[group(find(any))].rows.push_back(k);
   }
-  for (int g = 0; g < n_groups_; ++g) {
-    const auto& gn = group_nodes_[g];
-    const auto& gk = group_rows_[g];
-    const int nn = static_cast<int>(gn.size()), m = static_cast<int>(gk.size());
-    const int size = nn + m;
-    for (int i = 0; i < nn; ++i) local_[gn[i]] = i;
-    A_.setZero(size, size);
-    rhs_.setZero(size);
+  for (Group& g : groups_) {
+    const int size = static_cast<int>(g.nodes.size() + g.rows.size());
+    g.A.resize(size, size);
+    g.b.resize(size);
+    g.x.resize(size);
+    if (size > kSmallGroup) g.lu = Eigen::PartialPivLU<Eigen::MatrixXd>(size);
+    else g.lu_work.resize(size, size);
+  }
+}
+
+bool System::Solve() {
+  Eval& e = eval_;
+  const int n_nodes = static_cast<int>(nodes_.size());
+  if (e.n_constraints == 0) {
+    for (int n = 0; n < n_nodes; ++n)
+      if (!nodes_[n].ground) e.acc[n] = e.force[n] / nodes_[n].J;
+    return true;
+  }
+  ConstraintSignature(signature_scratch_);
+  if (signature_scratch_ != signature_) {
+    signature_.swap(signature_scratch_);
+    BuildGroups();
+  }
+  for (int n : unconstrained_) e.acc[n] = e.force[n] / nodes_[n].J;
+  for (int k : grounded_rows_) e.constraints[k].lambda = 0.0;
+  for (Group& g : groups_) {
+    const int nn = static_cast<int>(g.nodes.size()), m = static_cast<int>(g.rows.size());
+    for (int i = 0; i < nn; ++i) local_[g.nodes[i]] = i;
+    g.A.setZero();
     for (int i = 0; i < nn; ++i) {
-      A_(i, i) = nodes_[gn[i]].J;
-      rhs_[i] = e.force[gn[i]];
+      g.A(i, i) = nodes_[g.nodes[i]].J;
+      g.b[i] = e.force[g.nodes[i]];
     }
     for (int j = 0; j < m; ++j) {
-      const Constraint& c = e.constraints[gk[j]];
+      const Constraint& c = e.constraints[g.rows[j]];
       for (auto [n, coef] : c.column)
-        if (!nodes_[n].ground) A_(local_[n], nn + j) -= coef;
+        if (!nodes_[n].ground) g.A(local_[n], nn + j) -= coef;
       for (auto [n, coef] : c.row)
-        if (!nodes_[n].ground) A_(nn + j, local_[n]) += coef;
-      rhs_[nn + j] = c.rhs;
+        if (!nodes_[n].ground) g.A(nn + j, local_[n]) += coef;
+      g.b[nn + j] = c.rhs;
     }
-    Eigen::FullPivLU<Eigen::MatrixXd> lu(A_);
-    if (lu.isInvertible()) {
-      x_ = lu.solve(rhs_);
+    // Partial pivoting suffices unless the constraints are redundant (a tiny pivot).
+    bool solved = false;
+    if (nn + m <= kSmallGroup) {
+      g.lu_work = g.A;
+      g.x = g.b;
+      solved = SmallLuSolve(g.lu_work.data(), g.x.data(), nn + m);
     } else {
-      // Redundant constraints (several stuck elements on one rigid shaft): the accelerations
-      // are unique, the split of the constraint torques is not; take the minimum-norm split.
-      x_ = A_.completeOrthogonalDecomposition().solve(rhs_);
-      const Eigen::MatrixXd kernel = lu.kernel();
-      double worst = 0.0;
-      for (int c = 0; c < kernel.cols(); ++c)
-        worst = std::max(worst, kernel.col(c).head(nn).norm() / kernel.col(c).norm());
-      const double residual = (A_ * x_ - rhs_).norm();
-      if (worst > 1e-8 || residual > 1e-8 * (1.0 + rhs_.norm())) {
-        std::vector<std::string> names;
-        for (int n : gn) names.push_back(nodes_[n].name);
-        std::vector<std::string> owners;
-        for (int k : gk) owners.push_back(elements_[e.constraints[k].owner]->id);
-        error_element_ = owners.empty() ? "" : owners.front();
-        error_ = "the accelerations of the flanges " + Join(names) +
-                 " are not determined (singular system of the constraints of " + Join(owners) +
-                 " at t = " + std::to_string(e.t) +
-                 "); add inertia to these flanges or remove redundant couplings";
-        for (int n : gn) local_[n] = -1;
-        return false;
+      g.lu.compute(g.A);
+      const auto& lu = g.lu.matrixLU();
+      double pivot_min = std::numeric_limits<double>::infinity(), pivot_max = 0.0;
+      for (int i = 0; i < nn + m; ++i) {
+        pivot_min = std::min(pivot_min, std::abs(lu(i, i)));
+        pivot_max = std::max(pivot_max, std::abs(lu(i, i)));
+      }
+      if (pivot_min > 1e-12 * pivot_max) {
+        g.x = g.lu.solve(g.b);
+        solved = true;
       }
     }
-    for (int i = 0; i < nn; ++i) e.acc[gn[i]] = x_[i];
-    for (int j = 0; j < m; ++j) e.constraints[gk[j]].lambda = x_[nn + j];
-    for (int n : gn) local_[n] = -1;
+    if (!solved) {
+      // Redundant constraints (several stuck elements on one rigid shaft): the accelerations
+      // are unique, the split of the constraint torques is not; take the minimum-norm split.
+      Eigen::FullPivLU<Eigen::MatrixXd> full(g.A);
+      if (full.isInvertible()) {
+        g.x = full.solve(g.b);
+      } else {
+        g.x = g.A.completeOrthogonalDecomposition().solve(g.b);
+        const Eigen::MatrixXd kernel = full.kernel();
+        double worst = 0.0;
+        for (int c = 0; c < kernel.cols(); ++c)
+          worst = std::max(worst, kernel.col(c).head(nn).norm() / kernel.col(c).norm());
+        const double residual = (g.A * g.x - g.b).norm();
+        if (worst > 1e-8 || residual > 1e-8 * (1.0 + g.b.norm())) {
+          std::vector<std::string> names;
+          for (int n : g.nodes) names.push_back(nodes_[n].name);
+          std::vector<std::string> owners;
+          for (int k : g.rows) owners.push_back(elements_[e.constraints[k].owner]->id);
+          error_element_ = owners.empty() ? "" : owners.front();
+          error_ = "the accelerations of the flanges " + Join(names) +
+                   " are not determined (singular system of the constraints of " + Join(owners) +
+                   " at t = " + std::to_string(e.t) +
+                   "); add inertia to these flanges or remove redundant couplings";
+          for (int n : g.nodes) local_[n] = -1;
+          return false;
+        }
+      }
+    }
+    for (int i = 0; i < nn; ++i) e.acc[g.nodes[i]] = g.x[i];
+    for (int j = 0; j < m; ++j) e.constraints[g.rows[j]].lambda = g.x[nn + j];
+    for (int n : g.nodes) local_[n] = -1;
   }
   return true;
 }
@@ -652,6 +988,8 @@ bool System::HandleEvent(double t, double* y, bool initial, std::vector<std::str
     return false;
   }
   if (!Evaluate(t, y, nullptr)) return false;
+  for (auto& el : elements_) el->EventStates(eval_, y);
+  if (!Evaluate(t, y, nullptr)) return false;
   for (std::size_t i = 0; i < elements_.size(); ++i) {
     const std::string after = elements_[i]->ModeText();
     if (after != before[i]) {
@@ -660,6 +998,21 @@ bool System::HandleEvent(double t, double* y, bool initial, std::vector<std::str
     }
   }
   return true;
+}
+
+bool System::NeedsRestart(const int* root_info) const {
+  for (const auto& el : elements_)
+    for (int k = 0; k < el->NumRoots(); ++k)
+      if (root_info[el->root_offset + k] != 0 && el->RootRestarts(k)) return true;
+  return false;
+}
+
+bool System::HandleContinuousRoots(double t, const double* y, const int* root_info) {
+  if (!Evaluate(t, y, nullptr)) return false;
+  for (auto& el : elements_)
+    for (int k = 0; k < el->NumRoots(); ++k)
+      if (root_info[el->root_offset + k] != 0) el->ContinuousRoot(k, eval_);
+  return Evaluate(t, y, nullptr);
 }
 
 void System::AfterEventRow() {

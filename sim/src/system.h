@@ -3,6 +3,7 @@
 // coupled nodes, derivatives, root functions, the event iteration of the modes.
 #pragma once
 
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -23,10 +24,22 @@ class System {
   /// Upper and lower half-bandwidth of the Jacobian (from the element footprints).
   int upper_bandwidth() const { return bandwidth_; }
   int lower_bandwidth() const { return bandwidth_; }
+  /// Sparsity pattern of the Jacobian df/dy in compressed columns (a superset over all modes;
+  /// the diagonal is always included): rows of column j are
+  /// jacobian_rows()[jacobian_colptr()[j] .. jacobian_colptr()[j + 1]).
+  const std::vector<int>& jacobian_colptr() const { return jacobian_colptr_; }
+  const std::vector<int>& jacobian_rows() const { return jacobian_rows_; }
 
   /// Consistent initial node angles and speeds and element states (throws InputError for
   /// contradictory initial values).
   std::vector<double> InitialState(double t0);
+
+  /// The static equilibrium at rest: the spring twists (Element::TwistStates) for which every
+  /// node acceleration vanishes with the speeds of y (Gauss-Newton, difference-quotient
+  /// Jacobian), written into y when the equilibrium is found. Returns the largest torque
+  /// imbalance left at a node (N*m) and sets `found`; y is unchanged when none is found (for
+  /// instance nothing holds the loads).
+  double SolveEquilibrium(double t, double* y, bool& found);
 
   /// Full evaluation at (t, y). ydot may be null. Returns false with `error` set on failure.
   bool Evaluate(double t, const double* y, double* ydot);
@@ -40,6 +53,12 @@ class System {
   bool HandleEvent(double t, double* y, bool initial, std::vector<std::string>* changes,
                    std::vector<std::string>* changed_elements, const int* root_info = nullptr);
   void AfterEventRow();
+
+  /// A root without restart (Element::RootRestarts false) was crossed at (t, y): the elements
+  /// whose roots fired update their discrete variables (Element::ContinuousRoot).
+  bool HandleContinuousRoots(double t, const double* y, const int* root_info);
+  /// True when some fired root needs the full event treatment.
+  bool NeedsRestart(const int* root_info) const;
 
   /// Outputs of the last Evaluate.
   void Outputs(double* out) const;
@@ -63,6 +82,10 @@ class System {
   const std::string& error_element() const { return error_element_; }
 
  private:
+  /// State indices (node angles and speeds, element states, hydraulic pressures) in the
+  /// reverse Cuthill-McKee order of the dependency graph, and the half-bandwidth of the
+  /// Jacobian that order gives.
+  void AssignStates(const std::map<std::string, int>& signal_source, const std::vector<int>& slot_owner);
   bool Solve();
   void EvaluateSignals();
   /// Hydraulic nodes from the hydraulic ports and their connections (see HydraulicNode).
@@ -72,6 +95,7 @@ class System {
   bool ProjectSpeeds(double* y);
 
   std::vector<std::unique_ptr<Element>> elements_;
+  std::vector<Element*> assuming_;  ///< elements with HasAssumptions()
   std::vector<Node> nodes_;
   std::vector<HydraulicNode> hnodes_;
   std::vector<std::string> hydraulic_ports_;  ///< "element.port" of every hydraulic port
@@ -80,6 +104,7 @@ class System {
   int n_states_ = 0;
   int n_roots_ = 0;
   int bandwidth_ = 0;
+  std::vector<int> jacobian_colptr_, jacobian_rows_;
   std::vector<std::string> state_names_;
   std::vector<std::string> output_names_;
   std::vector<int> output_offset_;
@@ -88,15 +113,25 @@ class System {
   Eval eval_;
   std::string error_, error_element_;
 
-  // KKT workspace
+  // KKT workspace: the groups of nodes coupled by the active constraints, each with its
+  // preallocated system, rebuilt only when the constraint pattern changes (at events).
+  struct Group {
+    std::vector<int> nodes, rows;  ///< node indices; constraint indices in Eval::constraints
+    Eigen::MatrixXd A;
+    Eigen::VectorXd b, x;
+    Eigen::PartialPivLU<Eigen::MatrixXd> lu;  ///< groups larger than kSmallGroup
+    Eigen::MatrixXd lu_work;                  ///< the factored copy of A, small groups
+  };
+  static constexpr int kSmallGroup = 16;  ///< up to this size: our own elimination
+  void ConstraintSignature(std::vector<int>& signature) const;
+  void BuildGroups();
+  std::vector<Group> groups_;
+  std::vector<int> unconstrained_;   ///< free nodes in no constraint: acc = force / J
+  std::vector<int> grounded_rows_;   ///< constraints between ground nodes only
+  std::vector<int> signature_, signature_scratch_;
   std::vector<int> parent_;
   std::vector<int> local_;
   std::vector<char> in_constraint_;
-  std::vector<int> group_of_root_;
-  std::vector<std::vector<int>> group_nodes_, group_rows_;
-  int n_groups_ = 0;
-  Eigen::MatrixXd A_;
-  Eigen::VectorXd rhs_, x_;
 };
 
 }  // namespace highlift::sim::detail

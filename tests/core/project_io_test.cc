@@ -84,6 +84,7 @@ TEST(ProjectIo, ReadsAValidProject) {
   EXPECT_EQ(p.settings.shaft_elements, 2);
   EXPECT_DOUBLE_EQ(p.settings.output_interval, 2e-3);
   EXPECT_DOUBLE_EQ(p.settings.relative_tolerance, 1e-6);
+  EXPECT_DOUBLE_EQ(p.settings.structural_damping, 4e-4);  // the default
   EXPECT_DOUBLE_EQ(p.settings.values.at("g"), 9.81);
 
   const Component& shaft = *p.FindComponent("shaft_1");
@@ -216,6 +217,17 @@ TEST(ProjectIo, ValueOutsideTheValidRangeNamesTheRange) {
             "t.json:12:38 at /components/2/parameters/shear_modulus: component 'shaft_1' (torque_shaft): parameter "
             "'shear_modulus': interval [0.5, 51] GPa is not inside its valid range [1, 300] GPa; check the bounds and "
             "their unit");
+}
+
+TEST(ProjectIo, StructuralDampingIsATimeInItsRange) {
+  EXPECT_DOUBLE_EQ(ParseProject(Rig("\"output_interval\": \"2 ms\"", "\"structural_damping\": \"0.2 ms\""), "t.json")
+                       .settings.structural_damping,
+                   2e-4);
+  EXPECT_EQ(ErrorOf(Rig("\"output_interval\": \"2 ms\"", "\"structural_damping\": \"-1 ms\"")),
+            "t.json:6:59 at /settings/structural_damping: settings 'structural_damping' (d = beta*c) must lie in "
+            "[0, 1) s (e.g. \"0.4 ms\"; 0: no damping beyond the components' own)");
+  const std::string e = ErrorOf(Rig("\"output_interval\": \"2 ms\"", "\"structural_damping\": \"2 N*m\""));
+  EXPECT_NE(e.find("settings 'structural_damping': expected a time (s), got a torque (N*m)"), std::string::npos) << e;
 }
 
 TEST(ProjectIo, DuplicateIdsAreRejected) {

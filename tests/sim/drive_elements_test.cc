@@ -70,10 +70,11 @@ Network PduNetwork(double w_ref, Scalars pdu = {}) {
   return net;
 }
 
-// The unloaded output follows the ramped set point through the first-order speed loop:
-// during the ramp w_set = a*t, w = a*(t - T_w*(1 - exp(-t/T_w))), a = w_max/t_ramp.
+// The unloaded output follows the ramped set point through the first-order (proportional,
+// T_i = 0) speed loop: during the ramp w_set = a*t, w = a*(t - T_w*(1 - exp(-t/T_w))),
+// a = w_max/t_ramp.
 TEST(PDU, FollowsTheSpeedRampWithTheLagOfTheSpeedLoop) {
-  const RunResult r = Simulate(PduNetwork(10.0), 0.6, 1e-3);
+  const RunResult r = Simulate(PduNetwork(10.0, {{"T_i", 0.0}}), 0.6, 1e-3);
   ASSERT_TRUE(r.report.ok()) << r.report.FullReport();
   const double a = 25.3 / 0.4, T_w = 0.02;
   const double t_ramp_end = (10.0 - a * T_w) / a;  // the ramp limit ends where (10 - w_set)/T_w = a
@@ -118,10 +119,46 @@ TEST(PDU, StallsAtTauStallAgainstAStiffLoad) {
   EXPECT_TRUE(reported) << r.report.FullReport();
 }
 
+// A constant load torque tau_L (within the limits): the proportional loop (T_i = 0) droops by
+// tau_L/k_w, k_w = J/T_w; the PI loop (the default T_i) removes the droop.
+TEST(PDU, IntegralActionRemovesTheDroopUnderLoad) {
+  for (const double T_i : {0.0, 0.08}) {
+    Network net = PduNetwork(20.0, {{"T_i", T_i}});
+    net.AddElement("ConstantTorque", "airload", P({{"tau_constant", -300}}));
+    net.Connect("airload.flange", "pdu.flange_right");
+    const RunResult r = Simulate(net, 2.0, 1e-3);
+    ASSERT_TRUE(r.report.ok()) << r.report.FullReport();
+    const double droop = T_i > 0 ? 0.0 : 300.0 / (kJ / 0.02);
+    EXPECT_NEAR(r.Col("pdu.w").back(), 20.0 - droop, 1e-4) << "T_i = " << T_i;
+    EXPECT_NEAR(r.Col("pdu.tau_drive").back(), 300.0, 1e-3) << "T_i = " << T_i;
+  }
+}
+
+// The pressure-off brakes build up over t_POB when they are applied in motion; the motors hold
+// the output on the set point until they are fully built up, then the drive torque is removed.
+TEST(PDU, MotorsHoldWhileTheBrakesBuildUp) {
+  Network net;
+  net.AddElement("CombiTimeTable", "command",
+                 P({{"extrapolation", 1}}, {{"table", {{0, 5}, {0.2, 5}, {0.2, 0}, {0.6, 0}}}}));
+  net.AddElement("PDU", "pdu");
+  net.AddElement("ConstantTorque", "airload", P({{"tau_constant", -200}}));
+  net.Connect("command.y", "pdu.w_ref");
+  net.Connect("airload.flange", "pdu.flange_right");
+  const RunResult r = Simulate(net, 0.6, 1e-4);
+  ASSERT_TRUE(r.report.ok()) << r.report.FullReport();
+  const double t_on = r.FirstTrue("pdu.brake");
+  ASSERT_GT(t_on, 0.2);
+  EXPECT_NEAR(r.At("pdu.f_brake", t_on + 0.025), 0.5, 5e-3);  // half built up after t_POB/2 (1e-4 s rows)
+  EXPECT_GT(std::abs(r.At("pdu.tau_drive", t_on + 0.025)), 100.0);  // the motors still hold
+  EXPECT_DOUBLE_EQ(r.At("pdu.tau_drive", t_on + 0.06), 0.0);         // then the brakes alone
+  EXPECT_NEAR(r.Col("pdu.tau_brake").back(), -200.0, 1e-6);
+  EXPECT_LT(std::abs(r.At("pdu.phi", 0.6) - r.At("pdu.phi", t_on)), 0.01);  // no back-driving
+}
+
 // A load torque tau_L above P_max/w_max: the output settles where the power limit allows it,
 // w = P_max/tau_L (a fast loop, k_w = 500 N*m*s/rad, so that droop does not limit first).
 TEST(PDU, PowerLimitsTheSpeedAtHighTorque) {
-  Network net = PduNetwork(25.0, {{"J_g", 0.26}, {"T_w", 0.001}, {"P_max", 9000}});
+  Network net = PduNetwork(25.0, {{"J_g", 0.26}, {"T_w", 0.001}, {"T_i", 0.0}, {"P_max", 9000}});
   net.AddElement("TorqueStep", "airload", P({{"stepTorque", -600}, {"startTime", 0.5}}));
   net.Connect("airload.flange", "pdu.flange_right");
   const RunResult r = Simulate(net, 1.5, 1e-3);
@@ -131,8 +168,9 @@ TEST(PDU, PowerLimitsTheSpeedAtHighTorque) {
   EXPECT_NEAR(r.Col("pdu.tau_drive").back() * r.Col("pdu.w").back(), 9000.0, 1e-2);
 }
 
-// With the command at zero the pressure-off brakes build up tauPOB over t_POB; a back-driving
-// load below tauPOB is held, one above it slips at (load - tauPOB)/J.
+// With the command at zero from the start the drive is parked: the pressure-off brakes hold
+// with their full torque tauPOB (built up before the start); a back-driving load below tauPOB
+// is held, one above it slips at (load - tauPOB)/J.
 TEST(PDU, PressureOffBrakesHoldABackDrivingLoadUpToTauPOB) {
   for (const double factor : {0.95, 1.02}) {
     Network net = PduNetwork(0.0);
@@ -141,7 +179,7 @@ TEST(PDU, PressureOffBrakesHoldABackDrivingLoadUpToTauPOB) {
     const RunResult r = Simulate(net, 0.3, 1e-3);
     ASSERT_TRUE(r.report.ok()) << r.report.FullReport();
     EXPECT_DOUBLE_EQ(r.At("pdu.brake", 0.0), 1.0);
-    EXPECT_NEAR(r.At("pdu.f_brake", 0.025), 0.5, 1e-9);  // half built up after t_POB/2
+    EXPECT_DOUBLE_EQ(r.At("pdu.f_brake", 0.0), 1.0);  // parked: fully applied at the start
     EXPECT_DOUBLE_EQ(r.At("pdu.f_brake", 0.09), 1.0);
     if (factor < 1) {
       EXPECT_EQ(r.Col("pdu.mode").back(), 0) << "stuck";
@@ -230,7 +268,7 @@ TEST(PDU, BrakesReleaseWhenCommandedAgain) {
   net.AddElement("CombiTimeTable", "command",
                  P({{"extrapolation", 1}},
                    {{"table", {{0, 5}, {0.2, 5}, {0.2, 0}, {0.5, 0}, {0.5, -5}}}}));
-  net.AddElement("PDU", "pdu");
+  net.AddElement("PDU", "pdu", P({{"T_i", 0.0}}));
   net.Connect("command.y", "pdu.w_ref");
   const RunResult r = Simulate(net, 0.9, 1e-3);
   ASSERT_TRUE(r.report.ok()) << r.report.FullReport();

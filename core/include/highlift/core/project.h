@@ -100,6 +100,10 @@ struct Settings {
   int shaft_elements = 4;             ///< sub-elements per shaft segment in full-resolution models
   double relative_tolerance = 1e-6;   ///< simulator
   double output_interval = 1e-3;      ///< s, simulator output step
+  /// s, stiffness-proportional structural damping beta of the elastic elements of a
+  /// transmission that give no damping of their own (d = beta*c): the damping ratio of a mode at
+  /// w rad/s is beta*w/2. 4e-4 s: 1.6 % at the 13 Hz first mode of the A380-class example.
+  double structural_damping = 4e-4;
   std::map<std::string, double> values;
 };
 

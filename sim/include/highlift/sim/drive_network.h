@@ -51,6 +51,13 @@ struct DriveNetworkOptions {
   /// The scenario to apply (its load case, failure and stop time); empty: the only scenario of
   /// the project, or none (the drive at rest) when the project has no scenario.
   std::string scenario;
+  /// Regularisation speed of the bearing, gear and actuator friction, rad/s (the element
+  /// parameter w_small): the friction and load-dependent losses are scaled by
+  /// tanh(w/friction_speed), so the many bearings and gears of a transmission do not switch
+  /// between stuck and sliding (each switch an integrator restart). 0: the exact stick/slip
+  /// law of the HighLift classes. Brakes (pressure-off brakes, wing-tip brakes, the brakes of
+  /// the torque limiters) always keep their exact stick/slip law: they must hold.
+  double friction_speed = 0.1;
 
   static constexpr int kMinShaftElements = 4;  ///< default lower bound of the split
 

@@ -36,9 +36,14 @@ struct SimulationOptions {
   double max_step = 0.0;             // s, 0: no limit
   long max_steps_per_output = 100000;  // CVODE mxstep between two output points
   int max_events = 1000000;          // guard against chattering
-  /// "auto": dense for small networks, banded (difference-quotient Jacobian on the detected
-  /// band) for large chains; "dense" or "band" to force one.
+  /// "auto": dense for small networks, sparse (KLU, difference-quotient Jacobian on the
+  /// network's sparsity pattern with column colouring) from 60 states on; "dense", "band"
+  /// (difference quotients on the band of the state ordering) or "sparse" to force one.
   std::string linear_solver = "auto";
+  /// Start from the static equilibrium at rest: the spring twists that balance the loads
+  /// acting at the start time (for instance airloads held by a brake), found after the
+  /// initial modes; off: the springs start untwisted (or at their given start values).
+  bool initial_equilibrium = false;
   /// Adds the energy columns energy.kinetic, energy.potential (J), energy.loss_power,
   /// energy.source_power (W) and energy.impulsive_loss (J) and fills SimulationReport::energy.
   bool energy = false;
@@ -111,6 +116,7 @@ struct SolverStatistics {
   long nonlinear_convergence_failures = 0;
   long root_evaluations = 0;
   long reinitialisations = 0;
+  long continuous_roots = 0;  ///< roots crossed without a restart (kinks)
   int states = 0;
   std::string linear_solver;  ///< "dense" or "band(mu,ml)"
 };
