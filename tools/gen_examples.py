@@ -279,7 +279,8 @@ def load_cases(d, gras):
 def scenarios(stations, duration, rupture_component, rgb, first_left_station):
     out = [{"name": "extension", "kind": "extension",
             "description": "Normal extension cycle against the opposing airload.",
-            "load_case": "extend_opposing", "stop_time": f"{math.ceil(duration + 1)} s"}]
+            "load_case": "extend_opposing", "stop_time": f"{math.ceil(duration + 1)} s",
+            "output_interval": "10 ms"}]
     for st in stations:
         out.append({"name": f"jam_{st}", "kind": "jam",
                     "description": (f"Jam of the actuator at station {st} at 1 s, at full speed "

@@ -143,7 +143,7 @@ class SimulateCommand : public Command {
     if (drive) options = drive_model.Options(project);
     options.stop_time = scenario->stop_time;
     options.relative_tolerance = project.settings.relative_tolerance;
-    options.output_interval = project.settings.output_interval;
+    options.output_interval = scenario->output_interval.value_or(project.settings.output_interval);
     options.energy = energy_;
     options.Validate();
 

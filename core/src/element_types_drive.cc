@@ -53,6 +53,9 @@ void AppendDriveTypes(std::vector<ComponentTypeSpec>& t) {
       "speed-controlled power drive unit: n_m motors on a speed-summing differential, speed loop "
       "(T_w) with ramp, stall torque and power limit, pressure-off brakes, loss of one motor",
       {Signal("w_ref", "commanded output speed [rad/s]"),
+       Signal("stop", "shutdown command, > 0.5 = true (a monitor's brake command): the motors are "
+                      "depressurised and the pressure-off brakes applied at once (optional)",
+              false),
        Flange("flange_left", "output to the left wing (rigidly tied to flange_right)", false),
        Flange("flange_right", "output to the right wing (rigidly tied to flange_left)", false),
        SignalOutput("phi", "output angle (FPPU) [rad]"), SignalOutput("w", "output speed [rad/s]")},

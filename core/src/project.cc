@@ -137,7 +137,8 @@ std::string DescribeDifference(const Project& a, const Project& b) {
   if (auto d = CompareLists("load_cases", a.load_cases, b.load_cases, load_cases); !d.empty()) return d;
   auto scenarios = [](const Scenario& x, const Scenario& y) {
     const bool same = x.name == y.name && x.kind == y.kind && x.description == y.description &&
-                      x.load_case == y.load_case && x.stop_time == y.stop_time && x.jam_component == y.jam_component &&
+                      x.load_case == y.load_case && x.stop_time == y.stop_time &&
+                      x.output_interval == y.output_interval && x.jam_component == y.jam_component &&
                       x.jam_time == y.jam_time && x.rupture_component == y.rupture_component &&
                       x.rupture_time == y.rupture_time && x.wtb_trigger == y.wtb_trigger && x.wtb_time == y.wtb_time &&
                       x.values == y.values;

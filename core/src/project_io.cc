@@ -773,7 +773,9 @@ class Reader {
       Scenario s;
       s.name = String(item["name"], anonymous + ": 'name'");
       const std::string what = "scenario '" + s.name + "'";
-      CheckKeys(item, {"name", "kind", "description", "load_case", "stop_time", "jam", "rupture", "wtb", "values"}, what);
+      CheckKeys(item, {"name", "kind", "description", "load_case", "stop_time", "output_interval", "jam", "rupture", "wtb",
+                       "values"},
+                what);
       Require(item, "kind", what);
       s.kind = String(item["kind"], what + ": 'kind'");
       if (std::find(kinds.begin(), kinds.end(), s.kind) == kinds.end())
@@ -783,6 +785,11 @@ class Reader {
       if (item.has("stop_time")) {
         s.stop_time = Scalar(item["stop_time"], dimensions::Time(), what + ": 'stop_time'");
         if (!(s.stop_time > 0)) Fail(item["stop_time"], what + ": 'stop_time' must be > 0");
+      }
+      if (item.has("output_interval")) {
+        s.output_interval = Scalar(item["output_interval"], dimensions::Time(), what + ": 'output_interval'");
+        if (!(*s.output_interval > 0))
+          Fail(item["output_interval"], what + ": 'output_interval' must be > 0 (e.g. \"10 ms\")");
       }
       if (s.kind == "jam" && !item.has("jam"))
         Fail(item, what + ": kind \"jam\" needs \"jam\": {\"component\": ..., \"time\": ...}");
@@ -992,6 +999,7 @@ nlohmann::json ProjectToJson(const Project& project) {
     json a = json::array();
     for (const auto& s : project.scenarios) {
       json item = {{"name", s.name}, {"kind", s.kind}, {"stop_time", s.stop_time}};
+      if (s.output_interval) item["output_interval"] = *s.output_interval;
       if (!s.description.empty()) item["description"] = s.description;
       if (!s.load_case.empty()) item["load_case"] = s.load_case;
       if (s.jam_component) item["jam"] = {{"component", *s.jam_component}, {"time", s.jam_time.value_or(0.0)}};

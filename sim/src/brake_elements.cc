@@ -189,7 +189,7 @@ void StribeckFriction::Forces(Eval& e) {
   if (regularized) {
     // tanh(w/w_small) * (tau_C + tau_S*exp(-f_exp*|w|)) + d_vis*w: continuous and odd in w.
     const double w = WF(e);
-    tau_stribeck = Smooth(e) * (tau_C + tau_S * std::exp(-f_exp * std::abs(w))) + d_vis * w;
+    tau_stribeck = Smooth(e) * (tau_C + tau_S * Decay(f_exp * std::abs(w))) + d_vis * w;
     if (split) {
       e.AddForce(a, -0.5 * tau_stribeck);
       e.AddForce(b, -0.5 * tau_stribeck);

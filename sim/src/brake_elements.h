@@ -79,7 +79,7 @@ class StribeckFriction : public msl::Friction {
   double Eta(const Eval& e) const;
   /// The Stribeck law (3) for forward sliding at speed w (signed), without the load loss.
   double Stribeck(double w) const {
-    return tau_C + d_vis * w + tau_S * std::exp(-f_exp * std::abs(w));
+    return tau_C + d_vis * w + tau_S * Decay(f_exp * std::abs(w));
   }
   double TauSlide(const Eval& e, double w) const override;
   double Tau0Max(const Eval& e) const override;
@@ -96,7 +96,7 @@ class StribeckFriction : public msl::Friction {
   bool HasAssumptions() const override { return regularized && split; }
   bool Reassume(const Eval& e) override;
   /// Regularised law: tanh(w/w_small), the smooth sign of the sliding speed.
-  double Smooth(const Eval& e) const { return std::tanh(WF(e) / w_small); }
+  double Smooth(const Eval& e) const { return SmoothSign(WF(e) / w_small); }
   void PrepareEvent(const Eval& e) override;
   double Violation(const Eval& e) const override;
   void Fix(const Eval& e) override;
@@ -168,6 +168,7 @@ class NonlinearSpring : public msl::Compliant {
   double Tau(double phi_rel, double w_rel) const override { return TauC(phi_rel) + d * w_rel; }
   double Potential(double phi_rel) const override;
   double SpringTorque(double phi_rel) const override { return TauC(phi_rel); }
+  double TwistStiffness() const override { return std::max({c1, c2, c3}); }
   std::vector<std::string> SignalOutputs() const override { return {"y"}; }
   void Signals(const Eval& e, double* out) const override;
   int NumRoots() const override { return 4; }

@@ -86,14 +86,23 @@ class Pdu : public Friction {
   std::vector<std::string> Flanges() const override {
     return {"flange_left", "flange_right", "support"};
   }
-  std::vector<std::string> SignalInputs() const override { return {"w_ref"}; }
+  std::vector<std::string> SignalInputs() const override { return {"w_ref", "stop"}; }
+  /// The outputs phi and w are the output node's: no feedthrough from w_ref or stop.
+  bool DirectFeedthrough() const override { return false; }
   std::vector<std::string> SignalOutputs() const override { return {"phi", "w"}; }
   void Bind(const std::function<int(const std::string&)>& node_of,
             const std::function<int(const std::string&)>& signal_of) override {
     p = node_of("flange_left");
     m = node_of("support");
     u = signal_of("w_ref");
+    try {
+      stop_signal = signal_of("stop");
+    } catch (const InputError&) {
+      stop_signal = -1;  // optional: no shutdown command
+    }
   }
+  /// The shutdown command (latched): a monitor has commanded the wing-tip brakes.
+  bool StopCommanded(const Eval& e) const { return stop_signal >= 0 && e.signal[stop_signal] > 0.5; }
   void AddInertia(std::vector<Node>& nodes) const override { nodes[p].J += J; }
   // States: the ramped set point w_set and the integral z of the speed error (rad).
   int NumStates() const override { return 2; }
@@ -112,6 +121,7 @@ class Pdu : public Friction {
     return e.t_segment >= t_motor_lost - TimeTolerance(t_motor_lost) ? n_m - 1 : n_m;
   }
   double WTarget(const Eval& e) const {
+    if (stopped) return 0.0;
     const double w_avail = w_max * NActive(e) / n_m;
     return Clamp(e.signal[u], -w_avail, w_avail);
   }
@@ -129,6 +139,7 @@ class Pdu : public Friction {
   /// The motors hold the output until the pressure-off brakes have built up their torque
   /// (t_POB after the application); only then is the drive torque removed.
   bool Driving(const Eval& e) const {
+    if (stopped) return false;  // depressurised: nothing holds but the brakes
     if (!applied) return true;
     const double full = t_on + t_POB;  // a time event: switch with the right limit
     return e.t_segment < full - TimeTolerance(full);
@@ -198,7 +209,8 @@ class Pdu : public Friction {
     const double g_command = w_hold - std::abs(WTarget(e)), g_set = w_hold - std::abs(WSet(e));
     command_at_rest = Fired(3) ? !command_at_rest : g_command >= 0;
     set_point_at_rest = Fired(4) ? !set_point_at_rest : g_set >= 0;
-    const bool now = command_at_rest && set_point_at_rest;
+    if (!stopped && StopCommanded(e)) stopped = true;  // latched until the end of the run
+    const bool now = (command_at_rest && set_point_at_rest) || stopped;
     // Applied at the start: the brakes have held the parked drive, their torque is built up.
     if (now && !applied) t_on = e.initial ? e.t - t_POB : e.t;
     if (applied && !now) hold_torque = mode == kStuck ? -tau : 0.0;  // torque the brakes held
@@ -206,8 +218,24 @@ class Pdu : public Friction {
     n_active = NActive(e);
     Friction::PrepareEvent(e);
   }
+  // The shutdown command may change at the same event (the monitor switches in its own
+  // PrepareEvent): checked in the event iteration too.
+  double Violation(const Eval& e) const override {
+    if (!stopped && StopCommanded(e)) return 1.0;
+    return Friction::Violation(e);
+  }
+  void Fix(const Eval& e) override {
+    if (!stopped && StopCommanded(e)) {
+      stopped = true;
+      if (!applied) t_on = e.t;
+      applied = true;
+      Friction::PrepareEvent(e);  // the brake's friction mode for the new normal force
+      return;
+    }
+    Friction::Fix(e);
+  }
   std::string ModeText() const override {
-    std::string s = ModeName(mode) + (applied ? ", brakes applied" : ", driving");
+    std::string s = ModeName(mode) + (applied ? (stopped ? ", shut down, brakes applied" : ", brakes applied") : ", driving");
     if (n_active < n_m) s += ", " + std::to_string(n_active) + " of " + std::to_string(n_m) + " motors";
     return s;
   }
@@ -241,6 +269,8 @@ class Pdu : public Friction {
   int u = -1;
   // Discrete state.
   bool command_at_rest = false, set_point_at_rest = false, applied = false, was_applied = false;
+  bool stopped = false;  ///< shut down by the stop input (latched)
+  int stop_signal = -1;
   double hold_torque = 0.0;  ///< N*m, the torque on the shaft the brakes held at their release
   double t_on = 0.0;
   int n_active = 0;
@@ -294,6 +324,7 @@ class Monitoring : public Element {
   }
   /// The detections and the command are held between events.
   bool SignalsFollowState() const override { return false; }
+  bool DirectFeedthrough() const override { return false; }
   bool Asymmetry() const { return enable_asymmetry && (held[0] || held[1] || held[2]); }
   bool Overspeed() const { return enable_overspeed && (held[3] || held[4]); }
   bool Uncommanded() const { return enable_uncommanded && held[5]; }

@@ -154,6 +154,7 @@ class Builder {
   std::vector<const Component*> EmissionOrder() const;
   void EmitLoads();
   void EmitMonitoring();
+  void ConnectShutdown(const std::string& command);
   std::vector<std::vector<double>> SpeedCommandRows() const;
 
   const Project& project_;
@@ -727,6 +728,7 @@ void Builder::EmitMonitoring() {
     const std::string command = "wtb_command";
     Add("Step", command, {{"height", 1.0}, {"startTime", scenario_->wtb_time.value_or(0.0)}}, "");
     for (const Component* wtb : wtbs_) Connect(command + ".y", wtb->id + ".apply");
+    ConnectShutdown(command + ".y");
     return;
   }
   if (!pdu_) return;  // no PDU angle to monitor: the WTBs stay released
@@ -785,6 +787,14 @@ void Builder::EmitMonitoring() {
   Connect(speed_command_ + ".y", commanded + ".u");
   Connect(commanded + ".y", monitor + ".phi_cmd");
   for (const Component* wtb : wtbs_) Connect(monitor + ".wtb", wtb->id + ".apply");
+  ConnectShutdown(monitor + ".wtb");
+}
+
+// The command that applies the wing-tip brakes also shuts the PDU down (its pressure-off
+// brakes), as the flight control computer does: the healthy side is not driven into its brake.
+void Builder::ConnectShutdown(const std::string& command) {
+  if (!pdu_ || detail::IsHydraulicPdu(*pdu_)) return;
+  Connect(command, pdu_->id + ".stop");
 }
 
 void Builder::CheckScenario() {
@@ -911,7 +921,9 @@ SimulationOptions DriveModel::Options(const Project& project) const {
   o.stop_time = stop_time;
   o.relative_tolerance = project.settings.relative_tolerance;
   o.output_interval = project.settings.output_interval;
+  if (scenario && scenario->output_interval) o.output_interval = *scenario->output_interval;
   o.initial_equilibrium = true;  // the drive starts held, the loads acting (airloads on a brake)
+  o.torque_tolerance = 1e-3;     // N*m: twists of stiff jams and end stops resolved in torque
   return o;
 }
 

@@ -91,7 +91,7 @@ class GearedRotaryActuator : public LossyGear {
   /// Stribeck law, equation (3), at the input speed w.
   double Stribeck(double w) const {
     const double w_abs = std::abs(w);
-    return tau_C + d_vis * w_abs + tau_S * std::exp(-f_exp * w_abs);
+    return tau_C + d_vis * w_abs + tau_S * Decay(f_exp * w_abs);
   }
   /// Mesh engagement min(e_angle, e_speed) of figure 7: 0 at standstill and right after a
   /// start, 1 once the input has turned phi_eta and runs faster than w_eta.
@@ -216,6 +216,7 @@ class Disconnector : public Compliant {
     return broken ? 0.0 : c * phi_rel + d * w_rel;
   }
   double SpringTorque(double phi_rel) const override { return broken ? 0.0 : c * phi_rel; }
+  double TwistStiffness() const override { return c; }
   /// After the rupture, the strain energy the coupling held at that instant: it leaves the
   /// mechanical network (into the structure), and stays in this term so that the balance
   /// source work = stored + dissipated holds without an impulsive-loss channel for elements.
@@ -296,6 +297,7 @@ class Jam : public Element {
   int NumStates() const override { return 1; }
   std::vector<std::string> StateNames() const override { return {id + ".phi_twist"}; }
   void InitStates(const Eval&, double* y) const override { y[state_offset] = 0.0; }
+  void StateStiffness(double* stiffness) const override { stiffness[0] = c; }
 
   double Phi(const Eval& e) const { return e.phi[n] - e.phi[s]; }
   double W(const Eval& e) const { return e.w[n] - e.w[s]; }

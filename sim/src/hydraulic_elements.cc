@@ -21,6 +21,7 @@
 
 #include "composites.h"
 #include "highlift/core/error.h"
+#include "highlift/core/text_table.h"
 #include "model.h"
 #include "msl_elements.h"
 
@@ -112,7 +113,13 @@ class TurbulentResistance : public Element {
 };
 
 // ------------------------------------------------------------------------------------------
-// ServoValve: first-order spool, four turbulent metering edges with leakage.
+// ServoValve: the spool position x as the command itself (order 0), with a first-order lag
+// (order 1) or a second-order spool (order 2); four turbulent metering edges with leakage.
+//   order 0:  x = limit(u, -1, 1)                                   (no state)
+//   order 1:  T_v*der(x) = limit(u, -1, 1) - x                      (state x)
+//   order 2:  der(x) = v_x,  der(v_x) = w_v^2*(limit(u, -1, 1) - x) - 2*D_v*w_v*v_x  (x, v_x)
+// The edges open with limit(x, -1, 1): a second-order spool that overshoots full stroke
+// uncovers no more than the full port.
 
 class ServoValve : public Element {
  public:
@@ -120,10 +127,18 @@ class ServoValve : public Element {
       : k(OrificeCoefficient(e, Param(e, "A_max"))),
         leakage(Param(e, "leakage")),
         T_v(Param(e, "T_v")),
+        w_v(Param(e, "w_v")),
+        D_v(Param(e, "D_v")),
         dp_small(Param(e, "dp_small")) {
     if (leakage > 1.0)
       throw InputError(Where(e) + ": parameter 'leakage' = " + std::to_string(leakage) +
                        " must be <= 1 (a fraction of A_max); typical values are 1e-4 to 1e-2");
+    const double order_value = Param(e, "order");
+    if (order_value != 0.0 && order_value != 1.0 && order_value != 2.0)
+      throw InputError(Where(e) + ": parameter 'order' = " + FormatNumber(order_value, 10) +
+                       " is not a spool model; use 0 (the command u is the spool position), 1 "
+                       "(first-order spool, T_v) or 2 (second-order spool, w_v and D_v)");
+    order = static_cast<int>(order_value);
   }
   std::vector<std::string> SignalInputs() const override { return {"u"}; }
   std::vector<std::string> HydraulicPorts() const override { return {"port_P", "port_T", "port_A", "port_B"}; }
@@ -138,14 +153,27 @@ class ServoValve : public Element {
     B = node_of("port_B");
   }
   std::vector<int> HydraulicNodes() const override { return {P, T, A, B}; }
-  int NumStates() const override { return 1; }
-  std::vector<std::string> StateNames() const override { return {id + ".x"}; }
-  void InitStates(const Eval&, double* y) const override { y[state_offset] = 0.0; }
+  int NumStates() const override { return order; }
+  std::vector<std::string> StateNames() const override {
+    if (order == 0) return {};
+    if (order == 1) return {id + ".x"};
+    return {id + ".x", id + ".v_x"};
+  }
+  void InitStates(const Eval&, double* y) const override {
+    for (int i = 0; i < order; ++i) y[state_offset + i] = 0.0;
+  }
+  double Command(const Eval& e) const { return Clamp(e.signal[u], -1.0, 1.0); }
+  /// Spool position (normalized) and velocity (1/s; 0 when the command is the position).
+  double X(const Eval& e) const { return order == 0 ? Command(e) : e.y[state_offset]; }
+  double V(const Eval& e) const {
+    if (order == 1) return (Command(e) - e.y[state_offset]) / T_v;
+    return order == 2 ? e.y[state_offset + 1] : 0.0;
+  }
   struct Flows {
     double PA, PB, AT, BT;
   };
   Flows Edges(const Eval& e) const {
-    const double x = e.y[state_offset];
+    const double x = Clamp(X(e), -1.0, 1.0);
     const double open_pos = k * (std::max(x, 0.0) + leakage), open_neg = k * (std::max(-x, 0.0) + leakage);
     return {OrificeFlow(e.p[P] - e.p[A], open_pos, dp_small), OrificeFlow(e.p[P] - e.p[B], open_neg, dp_small),
             OrificeFlow(e.p[A] - e.p[T], open_neg, dp_small), OrificeFlow(e.p[B] - e.p[T], open_pos, dp_small)};
@@ -158,23 +186,33 @@ class ServoValve : public Element {
     e.AddPortFlow(B, f.BT - f.PB);
   }
   void Derivatives(Eval& e) override {
-    e.ydot[state_offset] = (Clamp(e.signal[u], -1.0, 1.0) - e.y[state_offset]) / T_v;
+    if (order == 1) {
+      e.ydot[state_offset] = (Command(e) - e.y[state_offset]) / T_v;
+    } else if (order == 2) {
+      const double x = e.y[state_offset], v_x = e.y[state_offset + 1];
+      e.ydot[state_offset] = v_x;
+      e.ydot[state_offset + 1] = w_v * w_v * (Command(e) - x) - 2.0 * D_v * w_v * v_x;
+    }
   }
-  std::vector<std::string> OutputNames() const override { return {"x", "V_PA", "V_PB", "V_AT", "V_BT"}; }
+  std::vector<std::string> OutputNames() const override {
+    return {"x", "V_PA", "V_PB", "V_AT", "V_BT", "v_x"};
+  }
   void Outputs(const Eval& e, double* out) const override {
     const Flows f = Edges(e);
-    out[0] = e.y[state_offset];
+    out[0] = X(e);
     out[1] = f.PA;
     out[2] = f.PB;
     out[3] = f.AT;
     out[4] = f.BT;
+    out[5] = V(e);
   }
   double LossPower(const Eval& e) const override {
     const Flows f = Edges(e);
     return (e.p[P] - e.p[A]) * f.PA + (e.p[P] - e.p[B]) * f.PB + (e.p[A] - e.p[T]) * f.AT +
            (e.p[B] - e.p[T]) * f.BT;
   }
-  double k, leakage, T_v, dp_small;
+  double k, leakage, T_v, w_v, D_v, dp_small;
+  int order = 1;
   int u = -1, P = -1, T = -1, A = -1, B = -1;
 };
 

@@ -9,9 +9,10 @@
 //   rotor<k> -- differential (IdealPlanetary, ratio 1: sun motor 1, ring motor 2, carrier out)
 //            -- gear (IdealGear, i_PDU) -- output (Inertia J_g) -- left and right transmissions
 //
-// One motor lost (`motor_lost_time`): the last motor's displacement is commanded to 0 and its
-// pressure-off brake (Brake, holding brake_torque/ratio at the motor) holds it; the differential
-// then delivers half the speed of the remaining motor at the full torque.
+// One motor lost (the scenario value `motor_lost_time`, passed in by the drive network): the
+// last motor's displacement is commanded to 0 and its pressure-off brake (Brake, holding
+// brake_torque/ratio at the motor) holds it; the differential then delivers half the speed of
+// the remaining motor at the full torque.
 #include "hydraulic_pdu.h"
 
 #include <cmath>
@@ -52,7 +53,7 @@ bool IsHydraulicPdu(const Component& pdu) {
                    "\" is not a drive kind; use \"speed_controlled\" or \"hydraulic\"");
 }
 
-PduPorts AddHydraulicPdu(Network& net, const Component& pdu) {
+PduPorts AddHydraulicPdu(Network& net, const Component& pdu, std::optional<double> motor_lost_time) {
   const std::string& id = pdu.id;
   auto part = [&](const std::string& name) { return id + "." + name; };
   auto port = [&](const std::string& name, const std::string& p) { return id + "." + name + "." + p; };
@@ -110,7 +111,10 @@ PduPorts AddHydraulicPdu(Network& net, const Component& pdu) {
   // The speed command, fanned out to the motors' speed loops.
   add("Gain", part("w_ref"), scalars({{"k", 1.0}}));
 
-  const bool motor_lost = Has(pdu, "motor_lost_time");
+  if (motor_lost_time && !std::isfinite(*motor_lost_time))
+    throw InputError(Where(pdu) + ": scenario value 'motor_lost_time' is not a finite time; give "
+                     "the time in s at which the last motor is lost, or leave it out");
+  const bool motor_lost = motor_lost_time.has_value();
   for (int k = 1; k <= n_m; ++k) {
     const std::string n = std::to_string(k);
     add("ServoValve", part("valve" + n),
@@ -149,7 +153,7 @@ PduPorts AddHydraulicPdu(Network& net, const Component& pdu) {
     net.Connect(port("motor" + n, "flange"), port("rotor" + n, "flange_a"));
 
     if (motor_lost && k == n_m) {
-      const double t_lost = Value(pdu, "motor_lost_time");
+      const double t_lost = *motor_lost_time;
       add("Step", part("motor_lost"), scalars({{"height", -1.0}, {"offset", 1.0}, {"startTime", t_lost}}));
       add("Step", part("pob_command"), scalars({{"height", 1.0}, {"offset", 0.0}, {"startTime", t_lost}}));
       // Brake: tau = cgeo*mu*fn_max*f_normalized with mu = 0.5: the POB torque at the motor.

@@ -7,6 +7,7 @@
 // differential and the PDU gearbox to the two transmission outputs.
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "highlift/core/project.h"
@@ -29,8 +30,11 @@ struct PduPorts {
 bool IsHydraulicPdu(const Component& pdu);
 
 /// Adds the elements of the hydraulic PDU of component `pdu` (ids "<pdu.id>.<part>") to `net`
-/// and returns its ports. Throws InputError naming the component and parameter for invalid
-/// parameters.
-PduPorts AddHydraulicPdu(Network& net, const Component& pdu);
+/// and returns its ports. `motor_lost_time` (s; a scenario's value `motor_lost_time`): from
+/// then on the last motor is lost (displacement commanded to 0, its pressure-off brake
+/// applied); empty: every motor runs throughout. Throws InputError naming the component and
+/// parameter for invalid parameters.
+PduPorts AddHydraulicPdu(Network& net, const Component& pdu,
+                         std::optional<double> motor_lost_time = std::nullopt);
 
 }  // namespace highlift::sim::detail

@@ -17,6 +17,12 @@ namespace highlift::sim::detail {
 
 using Table = std::vector<std::vector<double>>;
 
+/// tanh(x), the smooth sign of the regularised friction laws; beyond |x| = 20 it is +-1 in double
+/// precision anyway, so the library call is skipped there (every element, every evaluation).
+inline double SmoothSign(double x) { return x > 20.0 ? 1.0 : (x < -20.0 ? -1.0 : std::tanh(x)); }
+/// exp(-x) for x >= 0 (the Stribeck decay), 0 beyond x = 40 where it is below 5e-18.
+inline double Decay(double x) { return x > 40.0 ? 0.0 : std::exp(-x); }
+
 /// Modelica.Math.Vectors.interpolate on column `column` of `table` against column 0:
 /// piecewise linear with linear extrapolation; a one-row table is constant.
 double Interpolate(const Table& table, int column, double x);
@@ -120,6 +126,11 @@ class Element {
   /// measured angle). False for outputs that change only at events or with time (a monitor's
   /// latched command, a brake actuation): they do not couple the Jacobian.
   virtual bool SignalsFollowState() const { return true; }
+  /// Whether the signal outputs are computed from the signal inputs at the same instant (direct
+  /// feedthrough). False for outputs taken from the element's own nodes or states (a PDU's
+  /// angle) or held between events (a monitor): they do not form an algebraic loop with the
+  /// elements they feed.
+  virtual bool DirectFeedthrough() const { return true; }
   /// First slot of this element's outputs in Eval::signal (-1 if it has none).
   int signal_offset = -1;
   /// Called once ports are resolved: node index per flange, signal source element per input.
@@ -150,6 +161,10 @@ class Element {
   /// Own states (offsets from state_offset) that are twists of a spring: the unknowns of the
   /// static equilibrium at rest (SimulationOptions::initial_equilibrium).
   virtual std::vector<int> TwistStates() const { return {}; }
+  /// The torque per unit of each own state that is a spring twist (its stiffness, N*m/rad),
+  /// 0 for other states: the absolute tolerance of a twist follows from a torque tolerance
+  /// (SimulationOptions::torque_tolerance). `stiffness` has NumStates() entries, all 0 on entry.
+  virtual void StateStiffness(double* stiffness) const { (void)stiffness; }
 
   // --- initial conditions ---
   /// Equations sum(coef*phi[node]) = value that fix initial angles (and the speed version).
@@ -177,10 +192,26 @@ class Element {
   }
   /// Values of the outputs of SignalOutputs(), in order; by default the one output Signal().
   virtual void Signals(const Eval& e, double* out) const { out[0] = Signal(e); }
-  virtual void Forces(Eval& e) { (void)e; }
-  virtual void Constraints(Eval& e) { (void)e; }
-  virtual void AfterSolve(Eval& e) { (void)e; }
-  virtual void Derivatives(Eval& e) { (void)e; }
+  // The defaults do nothing and say so (unused_phases): after the first evaluation the system
+  // calls each phase only on the elements that implement it.
+  virtual void Forces(Eval& e) {
+    (void)e;
+    unused_phases |= kForcesPhase;
+  }
+  virtual void Constraints(Eval& e) {
+    (void)e;
+    unused_phases |= kConstraintsPhase;
+  }
+  virtual void AfterSolve(Eval& e) {
+    (void)e;
+    unused_phases |= kAfterSolvePhase;
+  }
+  virtual void Derivatives(Eval& e) {
+    (void)e;
+    unused_phases |= kDerivativesPhase;
+  }
+  static constexpr unsigned kForcesPhase = 1, kConstraintsPhase = 2, kAfterSolvePhase = 4, kDerivativesPhase = 8;
+  unsigned unused_phases = 0;  ///< phases whose default (no-op) ran
 
   // --- events ---
   virtual int NumRoots() const { return 0; }

@@ -140,6 +140,9 @@ class Compliant : public TwoFlange {
   std::vector<int> TwistStates() const override {
     return std::isnan(phi_rel_start) ? std::vector<int>{0} : std::vector<int>{};
   }
+  /// The stiffness that turns a twist error into a torque error (0: no spring).
+  virtual double TwistStiffness() const { return 0.0; }
+  void StateStiffness(double* stiffness) const override { stiffness[0] = TwistStiffness(); }
   void InitialEquations(std::vector<InitialEquation>& position,
                         std::vector<InitialEquation>& speed) const override {
     if (!std::isnan(phi_rel_start)) position.push_back({{{b, 1.0}, {a, -1.0}}, phi_rel_start});
@@ -171,6 +174,7 @@ class Spring : public Compliant {
   explicit Spring(const NetworkElement& e)
       : Compliant(e), c(Param(e, "c")), phi_rel0(Param(e, "phi_rel0")) {}
   double Tau(double phi_rel, double) const override { return c * (phi_rel - phi_rel0); }
+  double TwistStiffness() const override { return c; }
   double Potential(double phi_rel) const override {
     return 0.5 * c * (phi_rel - phi_rel0) * (phi_rel - phi_rel0);
   }
@@ -192,6 +196,7 @@ class SpringDamper : public Compliant {
   double Tau(double phi_rel, double w_rel) const override {
     return c * (phi_rel - phi_rel0) + d * w_rel;
   }
+  double TwistStiffness() const override { return c; }
   double Potential(double phi_rel) const override {
     return 0.5 * c * (phi_rel - phi_rel0) * (phi_rel - phi_rel0);
   }
@@ -234,6 +239,7 @@ class ElastoBacklash : public Compliant {
     return 0.5 * c * x * x;
   }
   double SpringTorque(double phi_rel) const override { return c * Penetration(phi_rel); }
+  double TwistStiffness() const override { return c; }
   int NumRoots() const override { return b_total <= 1e-10 ? 0 : 2; }
   void Roots(const Eval& e, double* g) const override {
     const double delta = PhiRel(e) - phi_rel0;
@@ -267,6 +273,8 @@ class GearBase : public Element {
   std::vector<std::pair<int, double>> Row() const {
     return {{a, 1.0}, {b, -ratio}, {s, ratio - 1.0}};
   }
+  /// The row into an existing constraint (reuses its storage: no allocation per evaluation).
+  void SetRow(std::vector<std::pair<int, double>>& row) const { row.assign({{a, 1.0}, {b, -ratio}, {s, ratio - 1.0}}); }
   void HolonomicRows(std::vector<InitialEquation>& rows) const override {
     rows.push_back({Row(), 0.0});
   }
@@ -279,7 +287,7 @@ class IdealGear : public GearBase {
   explicit IdealGear(const NetworkElement& e) : GearBase(e, "IdealGear") {}
   void Constraints(Eval& e) override {
     Constraint& c = e.NewConstraint(index);
-    c.row = Row();
+    SetRow(c.row);
     c.column = {{a, -1.0}, {b, ratio}, {s, 1.0 - ratio}};  // multiplier = flange_a.tau
     constraint = e.n_constraints - 1;
   }
@@ -311,13 +319,16 @@ class IdealPlanetary : public Element {
   std::vector<std::pair<int, double>> Row() const {
     return {{sun, -1.0}, {ring, -ratio}, {carrier, 1.0 + ratio}};
   }
+  void SetRow(std::vector<std::pair<int, double>>& row) const {
+    row.assign({{sun, -1.0}, {ring, -ratio}, {carrier, 1.0 + ratio}});
+  }
   void HolonomicRows(std::vector<InitialEquation>& rows) const override {
     rows.push_back({Row(), 0.0});
   }
   void Constraints(Eval& e) override {
     Constraint& c = e.NewConstraint(index);
-    c.row = Row();
-    c.column = Row();  // multiplier = sun.tau; ring.tau = ratio*sun.tau
+    SetRow(c.row);
+    SetRow(c.column);  // multiplier = sun.tau; ring.tau = ratio*sun.tau
     constraint = e.n_constraints - 1;
   }
   void AfterSolve(Eval& e) override { tau_sun = e.constraints[constraint].lambda; }
@@ -663,7 +674,7 @@ class LossyGear : public GearBase {
   /// input speed, with the loss of that direction scaled by |tanh(w_a/w_small)|; continuous
   /// in the state, no stuck mode and no stick/slip events.
   bool Regularized() const { return w_small > 0; }
-  double Smooth(const Eval& e) const { return std::tanh(WA(e) / w_small); }
+  double Smooth(const Eval& e) const { return SmoothSign(WA(e) / w_small); }
   /// Direction of rolling: the mode, or the sign of the speed when regularised.
   int Direction(const Eval& e) const {
     if (!Regularized()) return mode;
@@ -696,7 +707,7 @@ class LossyGear : public GearBase {
   }
   void Constraints(Eval& e) override {
     Constraint& c = e.NewConstraint(index);
-    c.row = Row();
+    SetRow(c.row);
     kinematic = e.n_constraints - 1;
     if (Rolling()) {
       double k, c0;

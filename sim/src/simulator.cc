@@ -28,6 +28,7 @@ void SimulationOptions::Validate() const {
   if (!(relative_tolerance > 0 && relative_tolerance < 1))
     fail("relative_tolerance = " + std::to_string(relative_tolerance) + " must lie in (0, 1)");
   if (!(absolute_tolerance > 0)) fail("absolute_tolerance must be > 0");
+  if (!(torque_tolerance >= 0)) fail("torque_tolerance must be >= 0 N*m (0: off)");
   if (max_step < 0) fail("max_step must be >= 0 (0: no limit)");
   if (linear_solver != "auto" && linear_solver != "dense" && linear_solver != "band" && linear_solver != "sparse")
     fail("linear_solver = '" + linear_solver + "' must be one of auto, dense, band, sparse");
@@ -119,6 +120,7 @@ struct ColoredJacobian {
   std::vector<int> colptr, rows;         ///< the pattern (compressed columns)
   std::vector<std::vector<int>> colors;  ///< the columns of each colour
   std::vector<double> increment;         ///< per column, of the current evaluation
+  double relative_tolerance = 1e-6;      ///< the run's (scales the increments of states at rest)
   N_Vector work_y = nullptr, work_f = nullptr, weights = nullptr;
   long rhs_evaluations = 0;
 
@@ -186,9 +188,11 @@ int Rhs(sunrealtype t, N_Vector y, N_Vector ydot, void* user) {
   }
 }
 
-// The sparse Jacobian: the increments of CVODE's own difference quotients
-// (cvLsDenseDQJac: sqrt(unit roundoff) * |y_j|, at least a minimum increment from the error
-// weights, the step and the norm of f), one right-hand side per colour.
+// The sparse Jacobian by difference quotients, one right-hand side per colour. Increment:
+// sqrt(unit roundoff) times the larger of |y_j| and the size below which state j needs no
+// relative accuracy, (rtol*|y_j| + atol_j)/rtol = 1/(rtol*ewt_j): a state at rest (a stuck
+// brake's shaft, y_j = 0) is then perturbed well above the roundoff of the large torques that
+// balance at its node. CVODE's own minimum increment (from the step and the norm of f) is kept.
 int SparseJacobian(sunrealtype t, N_Vector y, N_Vector fy, SUNMatrix J, void* user, N_Vector, N_Vector,
                    N_Vector) {
   auto* data = static_cast<CallbackData*>(user);
@@ -215,7 +219,8 @@ int SparseJacobian(sunrealtype t, N_Vector y, N_Vector fy, SUNMatrix J, void* us
     std::copy(yv, yv + n, yp);
     for (const auto& group : jac.colors) {
       for (int j : group) {
-        const double inc = std::max(srur * std::abs(yv[j]), min_inc / wv[j]);
+        const double inc =
+            std::max({srur * std::abs(yv[j]), srur / (jac.relative_tolerance * wv[j]), min_inc / wv[j]});
         // The increment that is actually represented in floating point.
         yp[j] = yv[j] + inc;
         jac.increment[j] = yp[j] - yv[j];
@@ -468,10 +473,18 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
   if (!check(CVodeSetUserData(cv.mem, &data), "CVodeSetUserData", t)) return finish();
   if (!check(CVodeSetErrHandlerFn(cv.mem, ErrorHandler, &data), "CVodeSetErrHandlerFn", t))
     return finish();
-  if (!check(CVodeSStolerances(cv.mem, options.relative_tolerance, options.absolute_tolerance),
-             "CVodeSStolerances", t))
-    return finish();
+  {
+    const std::vector<double> atol = sys.AbsoluteTolerances(options.absolute_tolerance, options.torque_tolerance);
+    N_Vector tolerances = N_VClone(cv.y);
+    if (!check_ptr(tolerances, "N_VClone")) return finish();
+    std::copy(atol.begin(), atol.end(), N_VGetArrayPointer(tolerances));
+    const int flag = CVodeSVtolerances(cv.mem, options.relative_tolerance, tolerances);
+    N_VDestroy(tolerances);  // CVODE keeps its own copy
+    if (!check(flag, "CVodeSVtolerances", t)) return finish();
+  }
   if (!check(CVodeSetMaxNumSteps(cv.mem, options.max_steps_per_output), "CVodeSetMaxNumSteps", t))
+    return finish();
+  if (options.stability_limit_detection && !check(CVodeSetStabLimDet(cv.mem, SUNTRUE), "CVodeSetStabLimDet", t))
     return finish();
   if (options.max_step > 0 && !check(CVodeSetMaxStep(cv.mem, options.max_step), "CVodeSetMaxStep", t))
     return finish();
@@ -482,6 +495,7 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
   data.cvode = cv.mem;
   if (sparse) {
     colored.Build(sys.jacobian_colptr(), sys.jacobian_rows());
+    colored.relative_tolerance = options.relative_tolerance;
     colored.work_y = N_VClone(cv.y);
     colored.work_f = N_VClone(cv.y);
     colored.weights = N_VClone(cv.y);
@@ -745,7 +759,7 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
       ++k;
       steps_since_output = 0;
     }
-    if (n_roots > 0) {  // the root functions where the next step starts
+    if (n_roots > 0) {  // the root functions where the next step starts (cached evaluation)
       if (!sys.Evaluate(t, N_VGetArrayPointer(cv.y), nullptr)) {
         fail(SimulationStatus::kModelError, sys.error(), t);
         break;

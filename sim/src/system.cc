@@ -204,10 +204,11 @@ System::System(const Network& original) {
         throw InputError("signal blocks form an algebraic loop through '" + elements_[i]->id +
                          "'; break the loop");
       state[i] = 1;
-      for (const auto& in : elements_[i]->SignalInputs()) {
-        auto it = signal_source.find(elements_[i]->id + "." + in);
-        if (it != signal_source.end()) visit(slot_owner[it->second]);
-      }
+      if (elements_[i]->DirectFeedthrough())
+        for (const auto& in : elements_[i]->SignalInputs()) {
+          auto it = signal_source.find(elements_[i]->id + "." + in);
+          if (it != signal_source.end()) visit(slot_owner[it->second]);
+        }
       state[i] = 2;
       if (elements_[i]->signal_offset >= 0) signal_order_.push_back(i);
     };
@@ -236,6 +237,12 @@ System::System(const Network& original) {
   }
   for (auto& el : elements_)
     if (el->HasAssumptions()) assuming_.push_back(el.get());
+  for (auto& el : elements_) {
+    forces_.push_back(el.get());
+    constraints_.push_back(el.get());
+    after_solve_.push_back(el.get());
+    derivatives_.push_back(el.get());
+  }
   // Workspace.
   eval_.phi.assign(nodes_.size(), 0.0);
   eval_.w.assign(nodes_.size(), 0.0);
@@ -474,6 +481,7 @@ void System::AssignStates(const std::map<std::string, int>& signal_source, const
 }
 
 std::vector<double> System::InitialState(double t0) {
+  cache_valid_ = false;  // discrete state or start values change
   t_segment_ = t0;
   eval_.t = t0;
   eval_.t_segment = t0;
@@ -542,6 +550,7 @@ std::vector<double> System::InitialState(double t0) {
 }
 
 double System::SolveEquilibrium(double t, double* y, bool& found) {
+  cache_valid_ = false;  // discrete state or start values change
   found = false;
   std::vector<int> unknowns;
   for (const auto& el : elements_)
@@ -609,11 +618,49 @@ double System::SolveEquilibrium(double t, double* y, bool& found) {
   return best;
 }
 
+std::vector<double> System::AbsoluteTolerances(double absolute, double torque_tolerance) const {
+  std::vector<double> tolerance(n_states_, absolute);
+  if (!(torque_tolerance > 0)) return tolerance;
+  std::vector<double> stiffness;
+  for (const auto& el : elements_) {
+    const int n = el->NumStates();
+    if (n == 0) continue;
+    stiffness.assign(n, 0.0);
+    el->StateStiffness(stiffness.data());
+    for (int k = 0; k < n; ++k)
+      if (stiffness[k] > 0) tolerance[el->state_offset + k] = torque_tolerance / stiffness[k];
+  }
+  return tolerance;
+}
+
+// Every element is called in every phase until one evaluation with derivatives has shown
+// which phases each element leaves to the (no-op) default.
+void System::PrunePhases() {
+  auto keep = [&](std::vector<Element*>& list, unsigned phase) {
+    list.clear();
+    for (auto& el : elements_)
+      if (!(el->unused_phases & phase)) list.push_back(el.get());
+  };
+  keep(forces_, Element::kForcesPhase);
+  keep(constraints_, Element::kConstraintsPhase);
+  keep(after_solve_, Element::kAfterSolvePhase);
+  keep(derivatives_, Element::kDerivativesPhase);
+  phases_pruned_ = true;
+}
+
 void System::EvaluateSignals() {
   for (int i : signal_order_) elements_[i]->Signals(eval_, &eval_.signal[elements_[i]->signal_offset]);
 }
 
 bool System::Evaluate(double t, const double* y, double* ydot) {
+  // Evaluated at this very point already (CVODE's root function at the end of a step, then the
+  // sampling of that step end): the elements hold its values.
+  if (ydot == nullptr && cache_enabled_ && cache_valid_ && t == cache_t_ && t_segment_ == cache_segment_ &&
+      std::equal(y, y + n_states_, cache_y_.begin())) {
+    eval_.y = y;
+    return true;
+  }
+  cache_valid_ = false;
   Eval& e = eval_;
   e.t = t;
   e.t_segment = t_segment_;
@@ -647,10 +694,10 @@ bool System::Evaluate(double t, const double* y, double* ydot) {
         e.acc[n] = 0.0;
       }
     e.n_constraints = 0;
-    for (auto& el : elements_) el->Forces(e);
-    for (auto& el : elements_) el->Constraints(e);
+    for (Element* el : forces_) el->Forces(e);
+    for (Element* el : constraints_) el->Constraints(e);
     if (!Solve()) return false;
-    for (auto& el : elements_) el->AfterSolve(e);
+    for (Element* el : after_solve_) el->AfterSolve(e);
     if (pass + 1 >= kMaxPasses) break;
     bool again = false;
     for (Element* el : assuming_) again = el->Reassume(e) || again;
@@ -662,9 +709,14 @@ bool System::Evaluate(double t, const double* y, double* ydot) {
       ydot[node.s_phi] = y[node.s_w];
       ydot[node.s_w] = e.acc[&node - nodes_.data()];
     }
-    for (auto& el : elements_) el->Derivatives(e);
+    for (Element* el : derivatives_) el->Derivatives(e);
     if (!hnodes_.empty() && !HydraulicDerivatives(ydot)) return false;
+    if (!phases_pruned_) PrunePhases();
   }
+  cache_t_ = t;
+  cache_segment_ = t_segment_;
+  cache_y_.assign(y, y + n_states_);
+  cache_valid_ = true;
   return true;
 }
 
@@ -721,6 +773,24 @@ void System::ConstraintSignature(std::vector<int>& signature) const {
     signature.push_back(static_cast<int>(c.column.size()));
     for (const auto& [n, coef] : c.column) signature.push_back(n);
   }
+}
+
+bool System::SignatureMatches() const {
+  const Eval& e = eval_;
+  const std::vector<int>& sig = signature_;
+  if (sig.empty() || sig[0] != e.n_constraints) return false;
+  std::size_t at = 1;
+  for (int k = 0; k < e.n_constraints; ++k) {
+    const Constraint& c = e.constraints[k];
+    if (at + 3 + c.row.size() + c.column.size() > sig.size()) return false;
+    if (sig[at++] != c.owner || sig[at++] != static_cast<int>(c.row.size())) return false;
+    for (const auto& [n, coef] : c.row)
+      if (sig[at++] != n) return false;
+    if (sig[at++] != static_cast<int>(c.column.size())) return false;
+    for (const auto& [n, coef] : c.column)
+      if (sig[at++] != n) return false;
+  }
+  return at == sig.size();
 }
 
 void System::BuildGroups() {
@@ -784,7 +854,52 @@ void System::BuildGroups() {
     g.x.resize(size);
     if (size > kSmallGroup) g.lu = Eigen::PartialPivLU<Eigen::MatrixXd>(size);
     else g.lu_work.resize(size, size);
+    // The Schur complement path needs the inertia of every node of the group.
+    g.schur = size <= kSmallGroup;
+    for (int n : g.nodes) g.schur = g.schur && nodes_[n].J > 0;
   }
+}
+
+// M acc - C lambda = F, R acc = rhs with M = diag(J) > 0: acc = M^-1 (F + C lambda) and the
+// constraint torques from the small system (R M^-1 C) lambda = rhs - R M^-1 F (m x m, the
+// number of constraints of the group: 1 for a gear, 2 for a gearbox with its load loss).
+// False when that system is singular (redundant constraints): the caller solves the full KKT.
+bool System::SolveSchur(Group& g) {
+  Eval& e = eval_;
+  const int nn = static_cast<int>(g.nodes.size()), m = static_cast<int>(g.rows.size());
+  double* acc0 = g.x.data();        // M^-1 F, then the accelerations
+  double* column = g.b.data();      // M^-1 C_k, scattered over the group's nodes
+  double* S = g.lu_work.data();     // m x m, column-major
+  double* r = g.x.data() + nn;      // right-hand side, then lambda
+  for (int i = 0; i < nn; ++i) acc0[i] = e.force[g.nodes[i]] / nodes_[g.nodes[i]].J;
+  for (int k = 0; k < m; ++k) {
+    const Constraint& ck = e.constraints[g.rows[k]];
+    for (int i = 0; i < nn; ++i) column[i] = 0.0;
+    for (auto [n, coef] : ck.column)
+      if (!nodes_[n].ground) column[local_[n]] += coef / nodes_[n].J;
+    for (int j = 0; j < m; ++j) {
+      double sum = 0.0;
+      for (auto [n, coef] : e.constraints[g.rows[j]].row)
+        if (!nodes_[n].ground) sum += coef * column[local_[n]];
+      S[j + k * m] = sum;
+    }
+  }
+  for (int j = 0; j < m; ++j) {
+    const Constraint& cj = e.constraints[g.rows[j]];
+    double v = cj.rhs;
+    for (auto [n, coef] : cj.row)
+      if (!nodes_[n].ground) v -= coef * acc0[local_[n]];
+    r[j] = v;
+  }
+  if (!SmallLuSolve(S, r, m)) return false;
+  for (int k = 0; k < m; ++k) {
+    const double lambda = r[k];
+    e.constraints[g.rows[k]].lambda = lambda;
+    for (auto [n, coef] : e.constraints[g.rows[k]].column)
+      if (!nodes_[n].ground) acc0[local_[n]] += coef * lambda / nodes_[n].J;
+  }
+  for (int i = 0; i < nn; ++i) e.acc[g.nodes[i]] = acc0[i];
+  return true;
 }
 
 bool System::Solve() {
@@ -795,9 +910,8 @@ bool System::Solve() {
       if (!nodes_[n].ground) e.acc[n] = e.force[n] / nodes_[n].J;
     return true;
   }
-  ConstraintSignature(signature_scratch_);
-  if (signature_scratch_ != signature_) {
-    signature_.swap(signature_scratch_);
+  if (!SignatureMatches()) {
+    ConstraintSignature(signature_);
     BuildGroups();
   }
   for (int n : unconstrained_) e.acc[n] = e.force[n] / nodes_[n].J;
@@ -805,6 +919,10 @@ bool System::Solve() {
   for (Group& g : groups_) {
     const int nn = static_cast<int>(g.nodes.size()), m = static_cast<int>(g.rows.size());
     for (int i = 0; i < nn; ++i) local_[g.nodes[i]] = i;
+    if (g.schur && SolveSchur(g)) {
+      for (int n : g.nodes) local_[n] = -1;
+      continue;
+    }
     g.A.setZero();
     for (int i = 0; i < nn; ++i) {
       g.A(i, i) = nodes_[g.nodes[i]].J;
@@ -949,6 +1067,13 @@ double System::NextTimeEvent(double t) const {
 
 bool System::HandleEvent(double t, double* y, bool initial, std::vector<std::string>* changes,
                          std::vector<std::string>* changed_elements, const int* root_info) {
+  // The modes change between the evaluations of the event iteration: no cache in here.
+  cache_valid_ = false;
+  cache_enabled_ = false;
+  struct Restore {
+    bool& flag;
+    ~Restore() { flag = true; }
+  } restore{cache_enabled_};
   t_segment_ = t;
   if (root_info != nullptr)
     for (auto& el : elements_)
@@ -1008,14 +1133,17 @@ bool System::NeedsRestart(const int* root_info) const {
 }
 
 bool System::HandleContinuousRoots(double t, const double* y, const int* root_info) {
+  cache_valid_ = false;  // discrete state or start values change
   if (!Evaluate(t, y, nullptr)) return false;
   for (auto& el : elements_)
     for (int k = 0; k < el->NumRoots(); ++k)
       if (root_info[el->root_offset + k] != 0) el->ContinuousRoot(k, eval_);
+  cache_valid_ = false;
   return Evaluate(t, y, nullptr);
 }
 
 void System::AfterEventRow() {
+  cache_valid_ = false;  // discrete state or start values change
   for (auto& el : elements_) {
     el->AfterEventRow();
     el->ClearFired();

@@ -21,6 +21,9 @@ class System {
   const std::vector<std::string>& OutputNames() const { return output_names_; }
   const std::vector<std::string>& StateNames() const { return state_names_; }
   const std::vector<std::unique_ptr<Element>>& elements() const { return elements_; }
+  /// Absolute tolerances per state: `absolute` for angles, speeds and other states; for a
+  /// spring twist torque_tolerance / stiffness when torque_tolerance > 0.
+  std::vector<double> AbsoluteTolerances(double absolute, double torque_tolerance) const;
   /// Upper and lower half-bandwidth of the Jacobian (from the element footprints).
   int upper_bandwidth() const { return bandwidth_; }
   int lower_bandwidth() const { return bandwidth_; }
@@ -76,7 +79,10 @@ class System {
   /// Kinetic energy removed by the speed projections of all events so far (J, >= 0).
   double impulsive_loss() const { return impulsive_loss_; }
 
-  void set_segment_start(double t) { t_segment_ = t; }
+  void set_segment_start(double t) {
+    t_segment_ = t;
+    cache_valid_ = false;
+  }
   double segment_start() const { return t_segment_; }
   const std::string& error() const { return error_; }
   const std::string& error_element() const { return error_element_; }
@@ -96,6 +102,10 @@ class System {
 
   std::vector<std::unique_ptr<Element>> elements_;
   std::vector<Element*> assuming_;  ///< elements with HasAssumptions()
+  /// The elements each phase of Evaluate calls (all until PrunePhases has run).
+  std::vector<Element*> forces_, constraints_, after_solve_, derivatives_;
+  bool phases_pruned_ = false;
+  void PrunePhases();
   std::vector<Node> nodes_;
   std::vector<HydraulicNode> hnodes_;
   std::vector<std::string> hydraulic_ports_;  ///< "element.port" of every hydraulic port
@@ -111,6 +121,11 @@ class System {
   double t_segment_ = 0.0;
   double impulsive_loss_ = 0.0;
   Eval eval_;
+  // The point of the last complete evaluation (an evaluation without derivatives there again
+  // returns at once); invalidated whenever the discrete state may change.
+  bool cache_valid_ = false, cache_enabled_ = true;
+  double cache_t_ = 0.0, cache_segment_ = 0.0;
+  std::vector<double> cache_y_;
   std::string error_, error_element_;
 
   // KKT workspace: the groups of nodes coupled by the active constraints, each with its
@@ -121,14 +136,17 @@ class System {
     Eigen::VectorXd b, x;
     Eigen::PartialPivLU<Eigen::MatrixXd> lu;  ///< groups larger than kSmallGroup
     Eigen::MatrixXd lu_work;                  ///< the factored copy of A, small groups
+    bool schur = false;                       ///< every node has inertia: SolveSchur
   };
+  bool SolveSchur(Group& g);
   static constexpr int kSmallGroup = 16;  ///< up to this size: our own elimination
   void ConstraintSignature(std::vector<int>& signature) const;
+  bool SignatureMatches() const;  ///< the active constraints have the pattern of signature_
   void BuildGroups();
   std::vector<Group> groups_;
   std::vector<int> unconstrained_;   ///< free nodes in no constraint: acc = force / J
   std::vector<int> grounded_rows_;   ///< constraints between ground nodes only
-  std::vector<int> signature_, signature_scratch_;
+  std::vector<int> signature_;
   std::vector<int> parent_;
   std::vector<int> local_;
   std::vector<char> in_constraint_;

@@ -85,6 +85,7 @@ struct Scenario {
   std::string description;
   std::string load_case;              ///< name of the load case driving it
   double stop_time = 10.0;            ///< s
+  std::optional<double> output_interval;        ///< s, overrides Settings::output_interval
   std::optional<std::string> jam_component;     ///< kind == "jam": the jammed component id
   std::optional<double> jam_time;               ///< s
   std::optional<std::string> rupture_component; ///< kind == "rupture": the disconnector or shaft id

@@ -33,7 +33,15 @@ struct SimulationOptions {
   double output_interval = 1e-3;     // s, equidistant output grid (plus event rows)
   double relative_tolerance = 1e-6;  // CVODE relative tolerance
   double absolute_tolerance = 1e-8;  // CVODE absolute tolerance (rad, rad/s)
+  /// N*m; > 0: the absolute tolerance of a spring's twist is torque_tolerance / its stiffness
+  /// (a stiff jam or end stop is resolved in torque, not to a fixed angle); 0: every state
+  /// uses absolute_tolerance.
+  double torque_tolerance = 0.0;
   double max_step = 0.0;             // s, 0: no limit
+  /// CVODE's BDF stability limit detection: lowers the order when lightly damped oscillatory
+  /// modes make the order-3 to order-5 formulas unstable (a transmission's torsional modes);
+  /// without it such runs take many small steps.
+  bool stability_limit_detection = true;
   long max_steps_per_output = 100000;  // CVODE mxstep between two output points
   int max_events = 1000000;          // guard against chattering
   /// "auto": dense for small networks, sparse (KLU, difference-quotient Jacobian on the
