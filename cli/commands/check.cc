@@ -1,10 +1,13 @@
-// `highlift check PROJECT.json [--json]`: interval constraint propagation over the project.
-// Prints every parameter (initial domain, final domain, narrowing, provenance), then either "all
-// requirements can be met" (exit 0) or the requirements that cannot be met together with the
-// chain of constraints through which the conflict arises (exit 1). When the domains can meet the
-// requirements but the nominal design cannot, that is said too (with its explanation; exit 0:
-// the design space holds solutions).
+// `highlift check PROJECT.json [--json] [--ratio R] [--max-revisions N]`: interval constraint
+// propagation over the project. Prints every parameter (initial domain, final domain, narrowing,
+// provenance), then either "all requirements can be met" (exit 0) or the requirements that cannot
+// be met together with the chain of constraints through which the conflict arises (exit 1). When
+// the domains can meet the requirements but the nominal design cannot, that is said too (with its
+// explanation; exit 0: the design space holds solutions). When propagation stops at a limit
+// before a fixed point, that is said instead: nothing was proved either way (exit 0, JSON
+// "all_requirements_met": null).
 #include <cmath>
+#include <cstdint>
 #include <iostream>
 
 #include <nlohmann/json.hpp>
@@ -42,6 +45,9 @@ class CheckCommand : public Command {
                  "Use the project's own domains only: no database, fit or physics estimates");
     app.add_option("--ratio", ratio_, "stop re-revising when no domain shrinks by more than this fraction (0: exact fixed point)")
         ->check(CLI::Range(0.0, 0.999));
+    app.add_option("--max-revisions", max_revisions_,
+                   "stop propagating after this many constraint revisions (the result then proves nothing)")
+        ->check(CLI::PositiveNumber);
   }
 
   int Run() override {
@@ -50,7 +56,10 @@ class CheckCommand : public Command {
     const icsp::DriveSystemNetwork net = icsp::BuildDriveSystemNetwork(project);
     icsp::PropagationOptions po;
     po.ratio = ratio_;
+    if (max_revisions_ > 0) po.max_revisions = max_revisions_;
     const icsp::CheckResult r = icsp::CheckDriveSystem(net, po);
+    // Stopped at a limit: no conflict was proved, and none was ruled out either.
+    const bool stopped = r.report.status == icsp::Status::kStoppedAtLimit;
     auto labels = [&](const icsp::Explanation& e) {
       std::vector<std::string> out;
       for (int c : e.conflict) out.push_back(net.network.constraint(icsp::ConstraintId{c}).info.label);
@@ -67,7 +76,7 @@ class CheckCommand : public Command {
       }
       nlohmann::json doc = {{"project", project.name},
                             {"status", icsp::ToString(r.report.status)},
-                            {"all_requirements_met", r.feasible},
+                            {"all_requirements_met", stopped ? nlohmann::json(nullptr) : nlohmann::json(r.feasible)},
                             {"revisions", r.report.revisions},
                             {"seconds", r.report.seconds},
                             {"physics_constraints", net.physics_constraints},
@@ -97,7 +106,11 @@ class CheckCommand : public Command {
       if (!loaded.estimation_brief.empty()) std::cout << "domains: " << loaded.estimation_brief << "\n";
       std::cout << net.physics_constraints << " physics constraints, " << net.requirement_constraints
                 << " requirements: " << r.report.BriefReport() << "\n\n";
-      if (r.feasible) {
+      if (stopped) {
+        std::cout << "propagation stopped at a limit (" << r.report.message
+                  << ") before a fixed point: no requirement was proved violated, but the domains may narrow further and "
+                     "a conflict may remain; raise the limit or use --ratio\n";
+      } else if (r.feasible) {
         std::cout << "all requirements can be met\n";
         if (r.nominal_checked && !r.nominal_feasible) {
           std::cout << "\nbut not by the nominal design (every parameter at its nominal value): requirements violated "
@@ -124,6 +137,7 @@ class CheckCommand : public Command {
   CommonOptions options_;
   bool no_estimate_ = false;  // skip the estimator (domains as given and catalogue defaults)
   double ratio_ = 0.0;
+  std::int64_t max_revisions_ = 0;  // 0: the propagator's default limit
 };
 
 }  // namespace

@@ -1,8 +1,9 @@
 // `highlift tradeoff PROJECT.json --vary NAME=LO:HI:N --show NAME[,NAME...] [--json]`: splits the
 // domain of one quantity into N slices, propagates each and prints how the shown domains respond
 // (the paper's trade-off study). A slice with no solution is marked infeasible, a slice that does
-// not meet the project's domain of NAME "outside the domain". Values are in the display unit of
-// each quantity. Exit 0, or 2 on invalid input.
+// not meet the project's domain of NAME "outside the domain", a slice whose propagation stopped at
+// a limit says so (its domains are sound but may narrow further). Values are in the display unit
+// of each quantity. Exit 0, or 2 on invalid input.
 #include <cmath>
 #include <iostream>
 #include <sstream>
@@ -72,7 +73,9 @@ class TradeoffCommand : public Command {
     std::vector<icsp::VariableId> shown;
     for (const auto& s : show_) shown.push_back(Lookup(net, s, "--show"));
     const std::string unit = net.variable(varied).unit;
-    const double scale = icsp::ToDisplay(1.0, unit) == 0 ? 1.0 : 1.0 / icsp::ToDisplay(1.0, unit);
+    // Display unit -> SI (with the unit's offset, e.g. degC).
+    UnitConversion to_si;
+    if (!unit.empty() && unit != "1") to_si = ParseUnit(unit);
     icsp::Propagator prop(net, {});
     std::vector<std::string> header{name + (unit.empty() ? "" : " [" + unit + "]")};
     for (const auto& v : shown) {
@@ -84,12 +87,17 @@ class TradeoffCommand : public Command {
     for (int k = 0; k < n; ++k) {
       const double a = lo + (hi - lo) * k / n, b = lo + (hi - lo) * (k + 1) / n;
       icsp::Box box = net.InitialBox();
-      box[varied.value] = icsp::Meet(box[varied.value], Interval(a * scale, b * scale));
+      double lo_si = to_si.scale * a + to_si.offset, hi_si = to_si.scale * b + to_si.offset;
+      if (lo_si > hi_si) std::swap(lo_si, hi_si);
+      box[varied.value] = icsp::Meet(box[varied.value], Interval(lo_si, hi_si));
       // A slice outside the project's domain of NAME is not a design that fails: say so.
       const bool outside = icsp::IsEmpty(box[varied.value]);
-      const bool ok = !outside && prop.Propagate(box).status != icsp::Status::kInfeasible;
-      std::vector<std::string> cells{"[" + FormatNumber(a, 5) + ", " + FormatNumber(b, 5) + "]"};
-      nlohmann::json row = {{"slice", {a, b}}, {"feasible", ok}, {"outside_domain", outside}};
+      const icsp::Status status = outside ? icsp::Status::kInfeasible : prop.Propagate(box).status;
+      const bool ok = !outside && status != icsp::Status::kInfeasible;
+      std::vector<std::string> cells{"[" + FormatNumber(a, 5) + ", " + FormatNumber(b, 5) + "]" +
+                                     (status == icsp::Status::kStoppedAtLimit ? " (stopped at a limit)" : "")};
+      nlohmann::json row = {{"slice", {a, b}}, {"feasible", ok}, {"outside_domain", outside},
+                            {"status", outside ? "outside_domain" : icsp::ToString(status)}};
       for (const auto& v : shown) {
         const auto& u = net.variable(v).unit;
         if (!ok) {

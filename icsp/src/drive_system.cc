@@ -275,10 +275,11 @@ class Builder {
     }
     for (const Component& c : project_.components) {
       if (c.type == "torque_shaft") Shaft(c);
-      else if (c.type == "geared_rotary_actuator") Actuator(c);
+      else if (c.type == "geared_rotary_actuator" || c.type == "ballscrew_actuator") Actuator(c);
     }
     Reflected();
-    DriveTorques();
+    SeriesStiffness();
+    TorqueFlows();
     TravelTimes();
     Peaks();
     Requirements();
@@ -460,6 +461,8 @@ class Builder {
       any = true;
     }
     if (!any || !HasParam(g, "ratio")) return;
+    // The airload at the actuator output (a ballscrew's load is its screw torque, as
+    // reduced_models reads it).
     Derived(p + "max_load", "N*m", Interval(load, load));
     if (HasParam(g, "eta_opposing")) {
       Derived(p + "input_torque_opposing", "N*m");
@@ -474,9 +477,12 @@ class Builder {
     const Component* branch = BranchOf(g.id);
     if (branch && HasParam(*branch, "ratio") && Has(p + "input_torque_opposing")) {
       const std::string b = branch->id + ".";
-      const std::string eta = HasParam(*branch, "eta_mesh") ? " * " + b + "eta_mesh" : "";
+      const int meshes = static_cast<int>(Count(*branch, "meshes", 1.0));
+      const std::string eta = HasParam(*branch, "eta_mesh")
+                                  ? " * " + b + "eta_mesh" + (meshes != 1 ? "^" + std::to_string(meshes) : "")
+                                  : "";
       Derived(b + "station_torque", "N*m");
-      Law(b + "station_torque", "station input torque on the drive shaft, T_act / (i_branch eta)",
+      Law(b + "station_torque", "station input torque on the drive shaft, T_act / (i_branch eta^meshes)",
           b + "station_torque == " + p + "input_torque_opposing / (" + b + "ratio" + eta + ")");
       stations_.push_back({&g, branch});
     }
@@ -491,9 +497,17 @@ class Builder {
   /// which reproduces the profile's own duration at its own travel and peak speed.
   void TravelTimes() {
     if (stations_.empty() || root_.empty() || !Has(root_ + ".max_output_speed")) return;
+    // Travel at the actuator input: a GRA's output angle x its ratio; a ballscrew's stroke / lead
+    // (lead in m/rad) x its gear ratio.
     const Component& g = *stations_.front().first;
-    if (!HasParam(g, "travel_angle")) return;
-    std::string travel = g.id + ".travel_angle * " + g.id + ".ratio" + GearProduct(g.id);
+    std::string input_travel;
+    if (g.type == "geared_rotary_actuator" && HasParam(g, "travel_angle")) {
+      input_travel = g.id + ".travel_angle * " + g.id + ".ratio";
+    } else if (g.type == "ballscrew_actuator" && HasParam(g, "stroke") && HasParam(g, "lead")) {
+      input_travel = g.id + ".stroke / " + g.id + ".lead * " + g.id + ".ratio";
+    }
+    if (input_travel.empty()) return;
+    std::string travel = input_travel + GearProduct(g.id);
     std::vector<std::string> extend;
     for (const LoadCase& lc : project_.load_cases) {
       const std::string name = "travel_time." + lc.name;
@@ -607,27 +621,64 @@ class Builder {
     }
   }
 
-  /// Torque of the stations outboard of `id` summed, as text ("0" when none).
-  std::string StationSum(const std::string& id) const {
-    std::string sum;
-    for (const Component* c : Subtree(id)) {
-      if (c->type == "branch_gearbox" && Has(c->id + ".station_torque")) {
-        sum += (sum.empty() ? "" : " + ") + c->id + ".station_torque";
+  /// The steady-state torque flow of every load case, as reduced_models' sizing (`highlift
+  /// size`) computes it: each component's input-flange torque at its own speed (positive resists
+  /// the motion), from the actuator airloads (the largest magnitude of each load table) through
+  /// the gear stages (opposing and aiding efficiencies by the sign of the torque), plus the
+  /// friction at the load case's speed (Stribeck, paper eq. 3; shafts their drag per length):
+  ///   torque.<case>.<component>
+  /// From it: shaft drive torque and shear stress, the torque through each limiter and its margin,
+  /// the PDU output torque and power. The brake holds the wing's back-driving torque.
+  void TorqueFlows() {
+    if (!peaks_) return;
+    const Component* pdu = root_.empty() ? nullptr : Find(root_);
+    std::vector<std::vector<std::string>> flows;  // per load case: torque variable per node
+    std::vector<std::string> directions;
+    std::vector<std::map<std::string, double>> aidings;  // per load case: aiding output torques
+    for (const LoadCase& lc : project_.load_cases) {
+      if (lc.actuator_loads.empty()) continue;
+      std::map<std::string, double> loads, aiding;
+      for (const auto& [actuator, table] : lc.actuator_loads) {
+        double best = 0.0;
+        for (double y : table.y)
+          if (std::fabs(y) > std::fabs(best)) best = y;
+        loads[actuator] = best;
+        aiding[actuator] = -std::fabs(best);
       }
+      double w = 0.0;
+      if (lc.pdu_speed && !lc.pdu_speed->y.empty()) {
+        for (double y : lc.pdu_speed->y) w = std::max(w, std::fabs(y));
+      } else if (pdu && reduced_models::HasReducedModelValue(*pdu, "max_output_speed")) {
+        w = reduced_models::ReducedModelValue(*pdu, "max_output_speed");
+      }
+      flows.push_back(Flow(lc, loads, w));
+      directions.push_back(lc.direction);
+      aidings.push_back(aiding);
     }
-    return sum;
-  }
-
-  void DriveTorques() {
-    for (const Component& c : project_.components) {
+    if (flows.empty()) return;
+    // The largest magnitude over the load cases (of one direction when `direction` is given and
+    // some case has it), as text.
+    auto operating = [&](int k, const std::string& direction) {
+      std::vector<std::string> terms;
+      bool any = false;
+      for (std::size_t f = 0; f < flows.size(); ++f) any = any || directions[f] == direction;
+      for (std::size_t f = 0; f < flows.size(); ++f) {
+        if (!direction.empty() && any && directions[f] != direction) continue;
+        terms.push_back("abs(" + flows[f][k] + ")");
+      }
+      std::string out = terms.front();
+      for (std::size_t t = 1; t < terms.size(); ++t) out = "max(" + out + ", " + terms[t] + ")";
+      return out;
+    };
+    for (std::size_t k = 0; k < peaks_->nodes.size(); ++k) {
+      const auto& node = peaks_->nodes[k];
+      const Component& c = *Find(node.id);
       const std::string p = c.id + ".";
-      if (!parent_.count(c.id)) continue;
+      const int i = static_cast<int>(k);
       if (c.type == "torque_shaft") {
-        const std::string sum = StationSum(c.id);
-        if (sum.empty()) continue;
         Derived(p + "drive_torque", "N*m");
-        Law(p + "drive_torque", "drive torque in the shaft, the station torques outboard summed",
-            p + "drive_torque == " + sum);
+        Law(p + "drive_torque", "drive torque in the shaft, the largest over the load cases of the torque flow",
+            p + "drive_torque == " + operating(i, ""));
         if (Has(p + "polar_moment")) {
           Derived(p + "shear_stress", "MPa");
           Law(p + "shear_stress", "shear stress from the drive torque, T D / (2 Ip)",
@@ -635,54 +686,141 @@ class Builder {
         }
       } else if ((c.type == "system_torque_limiter" || c.type == "station_torque_limiter") &&
                  HasParam(c, "lockout_torque_extend")) {
-        std::string through;
-        if (c.type == "station_torque_limiter") {
-          for (const Component* d : Subtree(c.id)) {
-            if (d->type == "geared_rotary_actuator" && Has(d->id + ".input_torque_opposing")) {
-              through = d->id + ".input_torque_opposing";
-            }
-          }
-        } else {
-          through = StationSum(c.id);
-        }
-        if (through.empty()) continue;
+        // As reduced_models' setting rules: a system limiter against the largest wing torque of
+        // every case, a station limiter against its largest extending torque.
+        const bool station = c.type == "station_torque_limiter";
         Derived(p + "torque_through", "N*m");
-        Law(p + "torque_through", "operating torque through the limiter", p + "torque_through == " + through);
+        Law(p + "torque_through",
+            station ? "operating torque through the limiter, the largest of the extending load cases"
+                    : "operating torque through the limiter, the largest of the load cases",
+            p + "torque_through == " + operating(i, station ? "extend" : ""));
         Derived(p + "margin", "N*m", Whole());
         Law(p + "margin", "limiter margin, lockout setting minus operating torque",
             p + "margin == " + p + "lockout_torque_extend - " + p + "torque_through");
-      } else if (c.type == "wing_tip_brake" && HasParam(c, "static_capacity")) {
-        // Holding: the aiding airload of the stations on this side back-drives the shaft.
-        std::string side = c.id;
-        while (parent_.count(side) && parent_.at(side) != root_ && !parent_.at(side).empty()) side = parent_.at(side);
-        std::string sum;
-        for (const auto& [g, branch] : stations_) {
-          if (!Has(g->id + ".input_torque_aiding")) continue;
-          const auto members = Subtree(side);
-          if (std::find(members.begin(), members.end(), g) == members.end()) continue;
-          sum += (sum.empty() ? "" : " + ") + g->id + ".input_torque_aiding / " + branch->id + ".ratio";
+        if (HasParam(c, "lockout_torque_retract")) {
+          Derived(p + "torque_through_retract", "N*m");
+          Law(p + "torque_through_retract",
+              station ? "operating torque through the limiter, the largest of the retracting load cases"
+                      : "operating torque through the limiter, the largest of the load cases",
+              p + "torque_through_retract == " + operating(i, station ? "retract" : ""));
+          Derived(p + "margin_retract", "N*m", Whole());
+          Law(p + "margin_retract", "limiter margin in retract, lockout setting minus operating torque",
+              p + "margin_retract == " + p + "lockout_torque_retract - " + p + "torque_through_retract");
         }
-        if (sum.empty()) continue;
+      } else if (c.type == "wing_tip_brake" && HasParam(c, "static_capacity")) {
+        // Holding: the airloads of the wing's actuators back-drive the shaft through their aiding
+        // efficiencies, friction neglected (as reduced_models' rule for the static capacity).
+        int wing = i;
+        while (wing >= 0 && peaks_->nodes[wing].parent > 0) wing = peaks_->nodes[wing].parent;
+        std::vector<std::string> terms;
+        for (const auto& aiding : aidings) {
+          const std::string t = Backdrive(wing, aiding);
+          if (!t.empty() && std::find(terms.begin(), terms.end(), t) == terms.end()) terms.push_back(t);
+        }
+        if (terms.empty()) continue;
+        std::string sum = terms.front();
+        for (std::size_t t = 1; t < terms.size(); ++t) sum = "max(" + sum + ", " + terms[t] + ")";
         Derived(p + "holding_torque", "N*m");
-        Law(p + "holding_torque", "back-driving torque the brake holds, aiding station torques summed",
+        Law(p + "holding_torque", "back-driving torque of the wing's airloads the brake holds, the largest load case",
             p + "holding_torque == " + sum);
         Derived(p + "holding_margin", "N*m", Whole());
         Law(p + "holding_margin", "brake margin, static capacity minus holding torque",
             p + "holding_margin == " + p + "static_capacity - " + p + "holding_torque");
-      }
-    }
-    if (!root_.empty()) {
-      const std::string sum = StationSum(root_);
-      if (!sum.empty()) {
-        Derived(root_ + ".output_torque", "N*m");
-        Law(root_ + ".output_torque", "PDU output torque, all station torques summed", root_ + ".output_torque == " + sum);
-        if (Has(root_ + ".max_output_speed") && Has(root_ + ".efficiency")) {
-          Derived(root_ + ".required_power", "kW");
-          Law(root_ + ".required_power", "PDU power at full speed, T w / eta",
-              root_ + ".required_power == " + root_ + ".output_torque * " + root_ + ".max_output_speed / " + root_ +
-                  ".efficiency");
+      } else if (c.type == "pdu") {
+        Derived(p + "output_torque", "N*m");
+        Law(p + "output_torque", "PDU output torque, both sides, the largest over the load cases",
+            p + "output_torque == " + operating(i, ""));
+        if (Has(p + "max_output_speed") && Has(p + "efficiency")) {
+          Derived(p + "required_power", "kW");
+          Law(p + "required_power", "PDU power at full speed, T w / eta",
+              p + "required_power == " + p + "output_torque * " + p + "max_output_speed / " + p + "efficiency");
         }
       }
+    }
+  }
+
+  /// Input torque of a gear stage carrying `out` (reduced_models' GearInputTorque): opposing
+  /// (out >= 0) out / (ratio eta_opposing), aiding out eta_aiding / ratio.
+  static std::string GearInput(const std::string& out, const std::string& ratio, const std::string& eta_opposing,
+                               const std::string& eta_aiding) {
+    return "max(" + out + ", 0) / (" + ratio + " * " + eta_opposing + ") + min(" + out + ", 0) * " + eta_aiding +
+           " / " + ratio;
+  }
+
+  /// The torque flow of one load case: a variable per node, leaves first.
+  std::vector<std::string> Flow(const LoadCase& lc, const std::map<std::string, double>& loads, double w) {
+    const std::size_t n = peaks_->nodes.size();
+    std::vector<std::string> var(n);
+    for (std::size_t k = 0; k < n; ++k) var[k] = "torque." + lc.name + "." + peaks_->nodes[k].id;
+    for (std::size_t k = n; k-- > 0;) {
+      const auto& node = peaks_->nodes[k];
+      const Component& c = *Find(node.id);
+      std::string through, branch;
+      for (int child : node.children) {
+        std::string& sum = (c.type == "branch_gearbox" && peaks_->nodes[child].gear == c.id) ? branch : through;
+        sum += (sum.empty() ? "" : " + ") + var[child];
+      }
+      auto plus = [](const std::string& a, const std::string& b) { return a.empty() ? b : b.empty() ? a : a + " + " + b; };
+      const std::string stribeck = Stribeck(static_cast<int>(k), w);
+      const std::string meshes = std::to_string(static_cast<int>(Count(c, "meshes", 1.0)));
+      std::string law, what;
+      if (c.type == "torque_shaft") {
+        law = plus(through, HasValue(c, "drag_per_length") && HasValue(c, "length")
+                                ? Value(c, "drag_per_length") + " * " + Value(c, "length") : "");
+        what = "shaft: outboard torque plus its drag";
+      } else if (c.type == "steady_bearing") {
+        law = plus(through, stribeck);
+        what = "bearing: outboard torque plus its friction";
+      } else if (c.type == "universal_joint") {
+        const std::string eta = ValueOr(c, "efficiency", 1.0);
+        if (!through.empty()) law = GearInput("(" + through + ")", "1", eta, eta);
+        what = "joint: outboard torque through its efficiency";
+      } else if (c.type == "angle_gearbox") {
+        const std::string eta = ValueOr(c, "eta_mesh", 1.0) + "^" + meshes;
+        law = plus(through.empty() ? "" : GearInput("(" + through + ")", ValueOr(c, "ratio", 1.0), eta, eta), stribeck);
+        what = "angle gearbox: outboard torque through ratio and mesh efficiency, plus friction";
+      } else if (c.type == "branch_gearbox") {
+        const std::string eta = ValueOr(c, "eta_mesh", 1.0) + "^" + meshes;
+        law = plus(plus(through, branch.empty() ? "" : GearInput("(" + branch + ")", ValueOr(c, "ratio", 1.0), eta, eta)),
+                   stribeck);
+        what = "branch gearbox: through torque plus the station's through ratio and mesh efficiency, plus friction";
+      } else if (c.type == "geared_rotary_actuator" || c.type == "ballscrew_actuator") {
+        const auto it = loads.find(c.id);
+        const double load = it == loads.end() ? 0.0 : it->second;
+        const std::string ratio = ValueOr(c, "ratio", 1.0);
+        std::string input;
+        if (load > 0.0) input = Num(load) + " / (" + ratio + " * " + ValueOr(c, "eta_opposing", 1.0) + ")";
+        else if (load < 0.0) input = Num(load) + " * " + ValueOr(c, "eta_aiding", 1.0) + " / " + ratio;
+        law = plus(input, stribeck);
+        what = "actuator: airload through ratio and efficiency (" + std::string(load >= 0.0 ? "opposing" : "aiding") +
+               "), plus friction";
+      } else {
+        law = through;
+        what = c.type + ": the outboard torque passes through";
+      }
+      Derived(var[k], "N*m", Whole());
+      Law(var[k], "torque at the input of " + c.id + " in '" + lc.name + "', " + what, var[k] + " == " + (law.empty() ? "0" : law));
+    }
+    return var;
+  }
+
+  /// The stiffness of the drive line from the PDU output to the outboard flange of every
+  /// component, at the PDU speed: the reflected stiffnesses on the path in series,
+  /// 1 / c_series = sum 1 / c_i (a rigid component passes the inboard value on).
+  void SeriesStiffness() {
+    if (!peaks_) return;
+    std::vector<std::string> series(peaks_->nodes.size());
+    for (std::size_t k = 0; k < peaks_->nodes.size(); ++k) {
+      const auto& node = peaks_->nodes[k];
+      if (node.parent < 0) continue;
+      const std::string inboard = series[node.parent];
+      const std::string own = NodeVar(static_cast<int>(k), "reflected_stiffness");
+      if (inboard.empty() && own.empty()) continue;
+      const std::string name = node.id + ".series_stiffness";
+      const std::string law = inboard.empty() ? own : own.empty() ? inboard : "1 / (1 / " + inboard + " + 1 / " + own + ")";
+      Derived(name, "N*m/rad");
+      Law(name, "stiffness of the drive line from the PDU to " + node.id + ", in series, at the PDU speed", name + " == " + law);
+      series[k] = name;
     }
   }
 
@@ -815,17 +953,18 @@ class Builder {
 
   /// Back-drive torque (magnitude) at the input of node k from the aiding airloads, no friction:
   /// gear stages pass tau eta_aiding / ratio (reduced_models' torque flow). Empty when none.
-  std::string Backdrive(int k) const {
+  std::string Backdrive(int k) const { return Backdrive(k, peaks_->aiding); }
+  std::string Backdrive(int k, const std::map<std::string, double>& aiding) const {
     const auto& node = peaks_->nodes[k];
     const Component& c = NodeComponent(k);
     if (c.type == "geared_rotary_actuator" || c.type == "ballscrew_actuator") {
-      const auto it = peaks_->aiding.find(c.id);
-      if (it == peaks_->aiding.end() || it->second == 0.0) return "";
+      const auto it = aiding.find(c.id);
+      if (it == aiding.end() || it->second == 0.0) return "";
       return Num(-it->second) + " * " + ValueOr(c, "eta_aiding", 1.0) + " / " + ValueOr(c, "ratio", 1.0);
     }
     std::string through, branch;
     for (int child : node.children) {
-      const std::string t = Backdrive(child);
+      const std::string t = Backdrive(child, aiding);
       if (t.empty()) continue;
       std::string& sum = (c.type == "branch_gearbox" && peaks_->nodes[child].gear == c.id) ? branch : through;
       sum += (sum.empty() ? "" : " + ") + t;
@@ -843,11 +982,13 @@ class Builder {
   }
 
   /// Stribeck friction at node k's speed, the paper's equation (3); empty when it has none.
-  std::string Stribeck(int k) const {
+  std::string Stribeck(int k) const { return Stribeck(k, peaks_->w_operating); }
+  /// The same at PDU speed `w_pdu` [rad/s].
+  std::string Stribeck(int k, double w_pdu) const {
     const Component& c = NodeComponent(k);
     for (const char* name : {"coulomb_torque", "viscous_coefficient", "stribeck_torque", "stribeck_decay"})
       if (!HasValue(c, name)) return "";
-    const std::string w = "(" + Num(peaks_->w_operating) + " * " + SpeedRatio(k) + ")";
+    const std::string w = "(" + Num(w_pdu) + " * " + SpeedRatio(k) + ")";
     return Value(c, "coulomb_torque") + " + " + Value(c, "viscous_coefficient") + " * " + w + " + " +
            Value(c, "stribeck_torque") + " * exp(-(" + Value(c, "stribeck_decay") + " * " + w + "))";
   }

@@ -326,7 +326,8 @@ void Network::PrintExpr(int node, int parent_precedence, std::string& out) const
   switch (n.op) {
     case Op::kVar: out += variables_[n.a].name; break;
     case Op::kConst:
-      if (n.value.lower() == n.value.upper()) {
+      // An enclosed decimal (0.1 is [0.09999999999999999, 0.1]) prints as the number.
+      if (n.value.lower() == n.value.upper() || Number(n.value.lower()) == Number(n.value.upper())) {
         out += Number(n.value.lower());
       } else {
         out += "[" + Number(n.value.lower()) + ", " + Number(n.value.upper()) + "]";

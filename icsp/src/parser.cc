@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cfenv>
 #include <cmath>
 #include <cstdlib>
 #include <optional>
+#include <unordered_map>
 
 #include "highlift/core/units.h"
 
@@ -13,6 +15,38 @@ namespace highlift::icsp {
 double ConstantToSI(double value, std::string_view unit) {
   const UnitConversion u = ParseUnit(unit);
   return u.scale * value + u.offset;
+}
+
+namespace {
+/// A unit's factor or offset as an interval: integers (1, 1000, 1e9, 60) are exact; any other
+/// factor is the unit system's double result for a real number (1e-3, pi/30, 0.0254), taken as
+/// known to two ulps either way.
+Interval EncloseFactor(double f) {
+  if (f == std::floor(f) && std::fabs(f) < 0x1p53) return Interval(f, f, true);
+  double lo = f, hi = f;
+  for (int k = 0; k < 2; ++k) {
+    lo = std::nextafter(lo, -kInf);
+    hi = std::nextafter(hi, kInf);
+  }
+  return Interval(lo, hi, true);
+}
+/// The decimal text as the tightest interval of doubles around it (a point when it is exact).
+/// The C library's strtod rounds in the current rounding mode.
+Interval EncloseDecimal(const std::string& text) {
+  const int mode = std::fegetround();
+  std::fesetround(FE_DOWNWARD);
+  const double lo = std::strtod(text.c_str(), nullptr);
+  std::fesetround(FE_UPWARD);
+  const double hi = std::strtod(text.c_str(), nullptr);
+  std::fesetround(mode);
+  return Interval(lo, hi, true);
+}
+}  // namespace
+
+Interval ConstantToSI(const Interval& value, std::string_view unit) {
+  const UnitConversion u = ParseUnit(unit);
+  if (u.scale == 1.0 && u.offset == 0.0) return value;
+  return value * EncloseFactor(u.scale) + EncloseFactor(u.offset);
 }
 
 std::vector<std::string> ClosestNames(std::string_view name, const std::vector<std::string>& candidates,
@@ -54,7 +88,8 @@ struct Token {
   Tok kind = Tok::kEnd;
   std::size_t pos = 0;   // 0-based offset
   std::size_t len = 0;
-  double number = 0.0;
+  double number = 0.0;   // round to nearest
+  Interval enclosure;    // the decimal number as an interval of doubles
   std::string text;
 };
 
@@ -118,18 +153,29 @@ class Parser {
       const bool unit_allowed = after_number;
       after_number = false;
       if (std::isdigit(static_cast<unsigned char>(c)) || (c == '.' && i + 1 < n && std::isdigit(static_cast<unsigned char>(text_[i + 1])))) {
-        const std::string rest(text_.substr(i));
-        char* end = nullptr;
-        t.number = std::strtod(rest.c_str(), &end);
-        t.len = static_cast<std::size_t>(end - rest.c_str());
-        t.kind = Tok::kNumber;
-        i += t.len;
-        if (i < n && IsNameStart(text_[i])) {
-          // "2mm": a unit glued to the number is accepted too.
-          after_number = true;
-        } else {
-          after_number = true;
+        // digits [. digits] [(e|E) [+|-] digits]: a decimal number (no hex, inf or nan forms)
+        std::size_t j = i;
+        while (j < n && std::isdigit(static_cast<unsigned char>(text_[j]))) ++j;
+        if (j < n && text_[j] == '.') {
+          ++j;
+          while (j < n && std::isdigit(static_cast<unsigned char>(text_[j]))) ++j;
         }
+        if (j < n && (text_[j] == 'e' || text_[j] == 'E')) {
+          std::size_t k = j + 1;
+          if (k < n && (text_[k] == '+' || text_[k] == '-')) ++k;
+          if (k < n && std::isdigit(static_cast<unsigned char>(text_[k]))) {
+            while (k < n && std::isdigit(static_cast<unsigned char>(text_[k]))) ++k;
+            j = k;
+          }
+        }
+        const std::string digits(text_.substr(i, j - i));
+        t.number = std::strtod(digits.c_str(), nullptr);
+        t.enclosure = EncloseDecimal(digits);
+        t.len = j - i;
+        t.kind = Tok::kNumber;
+        if (!std::isfinite(t.number)) Fail(i, t.len, "number '" + digits + "' is out of range", "");
+        i = j;
+        after_number = true;  // a word right after it is its unit ("2 mm", also "2mm")
         tokens_.push_back(t);
         continue;
       }
@@ -255,11 +301,18 @@ class Parser {
     const Token& exp_tok = Peek();
     ExprId exponent = Factor();
     const ExprNode& en = net_.node(exponent);
+    // A constant exponent is the double nearest the number written (x^0.3 is x^fl(0.3)).
     std::optional<double> constant;
-    if (en.op == Op::kConst && en.value.lower() == en.value.upper()) constant = en.value.lower();
+    auto nearest = [&](int node) -> std::optional<double> {
+      const auto it = nearest_.find(node);
+      if (it != nearest_.end()) return it->second;
+      const ExprNode& c = net_.node(ExprId{node});
+      if (c.op == Op::kConst && c.value.lower() == c.value.upper()) return c.value.lower();
+      return std::nullopt;
+    };
+    if (en.op == Op::kConst) constant = nearest(exponent.value);
     if (en.op == Op::kNeg && net_.node(ExprId{en.a}).op == Op::kConst) {
-      const Interval v = net_.node(ExprId{en.a}).value;
-      if (v.lower() == v.upper()) constant = -v.lower();
+      if (const auto v = nearest(en.a)) constant = -*v;
     }
     if (constant) {
       const double p = *constant;
@@ -270,7 +323,8 @@ class Parser {
     return net_.Unary(Op::kExp, net_.Mul(exponent, net_.Unary(Op::kLog, base)));
   }
 
-  double SignedNumber() {
+  /// A number with an optional sign, enclosed.
+  Interval SignedNumber() {
     bool neg = false;
     if (Peek().kind == Tok::kMinus) {
       neg = true;
@@ -279,10 +333,12 @@ class Parser {
     const Token& t = Peek();
     if (t.kind != Tok::kNumber) Fail(t, "expected a number here", "an interval constant is written [lo, hi]");
     ++at_;
-    return neg ? -t.number : t.number;
+    return neg ? -t.enclosure : t.enclosure;
   }
 
-  double ApplyUnit(double value) {
+  /// The constant converted to SI when a unit follows (outward: the result encloses the exact
+  /// conversion of the decimal value).
+  Interval ApplyUnit(const Interval& value) {
     if (Peek().kind != Tok::kUnit) return value;
     const Token& u = Next();
     try {
@@ -299,20 +355,22 @@ class Parser {
     switch (t.kind) {
       case Tok::kNumber: {
         ++at_;
-        return net_.Const(ApplyUnit(t.number));
+        if (Peek().kind == Tok::kUnit) return net_.Const(ApplyUnit(t.enclosure));
+        const ExprId e = net_.Const(t.enclosure);
+        nearest_[e.value] = t.number;
+        return e;
       }
       case Tok::kLBracket: {
         ++at_;
-        const double lo = SignedNumber();
+        const Interval lo = SignedNumber();
         Expect(Tok::kComma, "','");
-        const double hi = SignedNumber();
+        const Interval hi = SignedNumber();
         const Token& close = Peek();
         Expect(Tok::kRBracket, "']'");
-        if (!(lo <= hi)) Fail(t.pos, close.pos + 1 - t.pos, "interval constant has lo > hi", "write [lo, hi] with lo <= hi");
-        double a = ApplyUnit(lo);
-        double b = ApplyUnit2(hi);
-        if (a > b) std::swap(a, b);
-        return net_.Const(Interval(a, b));
+        if (!(lo.lower() <= hi.upper())) {
+          Fail(t.pos, close.pos + 1 - t.pos, "interval constant has lo > hi", "write [lo, hi] with lo <= hi");
+        }
+        return net_.Const(ApplyUnit(Interval(lo.lower(), hi.upper(), true)));
       }
       case Tok::kLParen: {
         ++at_;
@@ -343,13 +401,6 @@ class Parser {
       default:
         Fail(t, "expected a number, a parameter, a function or '(' here", "");
     }
-  }
-
-  // The unit after "[lo, hi]" is consumed by the first ApplyUnit; apply the same to hi.
-  double ApplyUnit2(double value) {
-    const Token& prev = tokens_[at_ - 1];
-    if (prev.kind != Tok::kUnit) return value;
-    return ConstantToSI(value, prev.text);
   }
 
   ExprId Call(const Token& name) {
@@ -393,6 +444,7 @@ class Parser {
   NameResolver resolve_;
   std::vector<Token> tokens_;
   std::size_t at_ = 0;
+  std::unordered_map<int, double> nearest_;  ///< constant node of a number -> its nearest double
 };
 
 }  // namespace
@@ -414,6 +466,7 @@ ConstraintId AddConstraintText(Network& network, std::string_view text, Constrai
   const std::string context = (info.role == ConstraintRole::kRequirement ? "requirement '" : "constraint '") +
                               info.label + "'";
   const ParsedConstraint pc = ParseConstraint(network, text, context, where, std::move(resolve));
+  if (info.source.empty()) info.source = std::string(text);
   return network.AddConstraint(pc.lhs, pc.relation, pc.rhs, std::move(info));
 }
 

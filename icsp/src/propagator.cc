@@ -226,16 +226,25 @@ double Up(const MonotoneFunction& m, double y) {
   return std::nextafter(y + m.relative_error * std::fabs(y), kInf);
 }
 
+}  // namespace
+
+namespace detail {
+
+/// One propagation run over a compiled network (Propagator's tape).
 class Engine {
  public:
   using Step = Propagator::Step;
-  Engine(const Network& net, const PropagationOptions& opt, std::vector<BoundReason>& lo_reason,
-         std::vector<BoundReason>& hi_reason, const std::vector<Step>& tape, const std::vector<int>& tape_begin,
-         const std::vector<Interval>& constants, int max_steps)
-      : net_(net), opt_(opt), lo_reason_(lo_reason), hi_reason_(hi_reason), tape_(tape),
-        tape_begin_(tape_begin), constants_(constants) {
-    val_.resize(static_cast<std::size_t>(max_steps) + 1);
-    monotone_memo_.resize(static_cast<std::size_t>(net.num_monotone()));
+  using SharedBlock = Propagator::SharedBlock;
+  explicit Engine(Propagator& p)
+      : net_(p.network_), opt_(p.options_), lo_reason_(p.lower_reason_), hi_reason_(p.upper_reason_),
+        narrowed_(p.narrowed_),
+        tape_(p.tape_), tape_begin_(p.tape_begin_), constants_(p.constants_), blocks_(p.blocks_),
+        blocks_begin_(p.blocks_begin_), shared_vars_(p.shared_vars_), shared_vars_begin_(p.shared_vars_begin_) {
+    val_.resize(static_cast<std::size_t>(p.max_steps_) + 1);
+    monotone_memo_.resize(static_cast<std::size_t>(net_.num_monotone()));
+    reuse_ = opt_.reuse_shared_subexpressions && p.num_shared_ > 0;
+    shared_value_.resize(static_cast<std::size_t>(p.num_shared_));
+    shared_time_.assign(static_cast<std::size_t>(p.num_shared_), -1);
   }
 
   PropagationReport Run(Box& box, const std::vector<char>& enabled) {
@@ -245,6 +254,10 @@ class Engine {
     if (opt_.record_reasons) {
       lo_reason_.assign(box.size(), BoundReason{});
       hi_reason_.assign(box.size(), BoundReason{});
+      const int scopes = nc > 0 ? net_.constraint(ConstraintId{nc - 1}).vars_end : 0;
+      narrowed_.assign(static_cast<std::size_t>(scopes), 0);
+    } else {
+      narrowed_.clear();
     }
     for (const Interval& d : box) {
       if (IsEmpty(d)) {
@@ -257,6 +270,8 @@ class Engine {
     }
     Agenda agenda(nc, opt_.schedule);
     enabled_ = enabled.empty() ? nullptr : &enabled;
+    report_ = &report;
+    if (reuse_) changed_at_.assign(box.size(), -1);
     for (int c = 0; c < nc; ++c) {
       if (!enabled_ || (*enabled_)[c]) agenda.Push(c);
     }
@@ -284,11 +299,11 @@ class Engine {
         report.status = Status::kInfeasible;
         report.empty_constraint = c;
         report.empty_variable = empty_variable_;
-        const std::string where = empty_variable_ >= 0
-            ? "the domain of '" + net_.variable(VariableId{empty_variable_}).name + "' ran empty"
-            : "no values of its parameters satisfy it";
         const auto& info = net_.constraint(ConstraintId{c}).info;
-        report.message = where + " at constraint '" + (info.label.empty() ? std::to_string(c) : info.label) + "'";
+        const std::string label = "'" + (info.label.empty() ? std::to_string(c) : info.label) + "'";
+        report.message = empty_variable_ >= 0
+            ? "the domain of '" + net_.variable(VariableId{empty_variable_}).name + "' ran empty at constraint " + label
+            : "constraint " + label + " cannot hold for any values in the narrowed domains";
         break;
       }
       for (const auto& [v, significant] : changed_) {
@@ -339,7 +354,15 @@ class Engine {
     if (opt_.record_reasons) {
       if (lo_moved) lo_reason_[v] = {c, time};
       if (hi_moved) hi_reason_[v] = {c, time};
+      const auto scope = net_.ScopeOf(ConstraintId{c});
+      for (std::size_t i = 0; i < scope.size(); ++i) {
+        if (scope[i] == v) {
+          narrowed_[net_.constraint(ConstraintId{c}).vars_begin + i] = 1;
+          break;
+        }
+      }
     }
+    if (reuse_) changed_at_[v] = time;
     d = Interval(lo, hi, true);
     changed_.push_back({v, significant});
     return true;
@@ -353,8 +376,25 @@ class Engine {
     const int count = tape_begin_[c + 1] - tape_begin_[c];
     const Box& box = *box_;
     FI* val = val_.data();
-    // Forward: evaluate every node once (operands first).
+    const SharedBlock* block = blocks_.data() + blocks_begin_[c];
+    const SharedBlock* const blocks_end = blocks_.data() + blocks_begin_[c + 1];
+    // Forward: evaluate every node once (operands first). A subexpression that other constraints
+    // share keeps its value while none of its variables changes: then its steps are copied.
     for (int k = 0; k < count; ++k) {
+      if (block != blocks_end && block->begin == k) {
+        const SharedBlock& b = *block++;
+        if (reuse_ && Valid(b.shared)) {
+          for (int j = b.begin; j <= b.top; ++j) {
+            const Step& n = steps[j];
+            val[j] = n.op == Op::kVar     ? ToFast(box[n.a])
+                     : n.op == Op::kConst ? ToFast(constants_[n.aux])
+                                          : shared_value_[n.shared];
+          }
+          ++report_->reused_subexpressions;
+          k = b.top;
+          continue;
+        }
+      }
       const Step& n = steps[k];
       FI& y = val[k];
       switch (n.op) {
@@ -376,6 +416,10 @@ class Engine {
         case Op::kMax: y = icsp::Max(val[n.a], val[n.b]); break;
         case Op::kSin: y = icsp::Sin(val[n.a]); break;
         case Op::kCos: y = icsp::Cos(val[n.a]); break;
+      }
+      if (n.shared >= 0) {
+        shared_value_[n.shared] = y;
+        shared_time_[n.shared] = time;
       }
       if (IsEmpty(y)) return false;
     }
@@ -548,13 +592,33 @@ class Engine {
     return true;
   }
 
+  /// The kept value of shared entry e was computed from the current domains of its variables.
+  bool Valid(int e) const {
+    const std::int64_t t = shared_time_[e];
+    if (t < 0) return false;
+    for (int k = shared_vars_begin_[e]; k < shared_vars_begin_[e + 1]; ++k) {
+      if (changed_at_[shared_vars_[k]] >= t) return false;
+    }
+    return true;
+  }
+
   const Network& net_;
   const PropagationOptions& opt_;
   std::vector<BoundReason>& lo_reason_;
   std::vector<BoundReason>& hi_reason_;
+  std::vector<char>& narrowed_;
   const std::vector<Step>& tape_;
   const std::vector<int>& tape_begin_;
   const std::vector<Interval>& constants_;
+  const std::vector<SharedBlock>& blocks_;
+  const std::vector<int>& blocks_begin_;
+  const std::vector<int>& shared_vars_;
+  const std::vector<int>& shared_vars_begin_;
+  bool reuse_ = false;
+  std::vector<FI> shared_value_;          ///< per shared entry: its last forward value
+  std::vector<std::int64_t> shared_time_; ///< ... and the revision that computed it (-1: none)
+  std::vector<std::int64_t> changed_at_;  ///< per variable: the revision that last narrowed it
+  PropagationReport* report_ = nullptr;
   std::vector<FI> val_;
   std::vector<std::pair<int, bool>> changed_;
   Box* box_ = nullptr;
@@ -569,7 +633,7 @@ class Engine {
   std::vector<MonotoneMemo> monotone_memo_;
 };
 
-}  // namespace
+}  // namespace detail
 
 Propagator::Propagator(const Network& network, PropagationOptions options)
     : network_(network), options_(options) {
@@ -581,11 +645,38 @@ void Propagator::Compile() {
   // Each expression constraint becomes a contiguous tape of steps over its DAG nodes, so that a
   // revision reads one short array and a small scratch buffer instead of the whole node table.
   const int nc = network_.num_constraints();
+  const std::size_t num_nodes = static_cast<std::size_t>(network_.num_nodes());
   tape_.clear();
+  constants_.clear();
+  blocks_.clear();
+  max_steps_ = 0;
   tape_begin_.assign(static_cast<std::size_t>(nc) + 1, 0);
-  std::vector<int> local(static_cast<std::size_t>(network_.num_nodes()), -1);
+  blocks_begin_.assign(static_cast<std::size_t>(nc) + 1, 0);
+  // Subexpressions that two or more constraints share (hash-consing made them one node).
+  std::vector<int> users(num_nodes, 0);
+  for (int c = 0; c < nc; ++c) {
+    for (int id : network_.TopoOf(ConstraintId{c})) ++users[id];
+  }
+  std::vector<int> shared_of(num_nodes, -1);
+  std::vector<int> shared_node;  // entry -> node
+  for (std::size_t id = 0; id < num_nodes; ++id) {
+    const Op op = network_.node(ExprId{static_cast<int>(id)}).op;
+    if (users[id] >= 2 && op != Op::kVar && op != Op::kConst) {
+      shared_of[id] = static_cast<int>(shared_node.size());
+      shared_node.push_back(static_cast<int>(id));
+    }
+  }
+  num_shared_ = static_cast<int>(shared_node.size());
+  std::vector<char> is_top(shared_node.size(), 0);
+
+  std::vector<int> local(num_nodes, -1);
+  std::vector<int> stamp(num_nodes, -1), start(num_nodes, 0);
+  std::vector<int> begin_of;  // per step of the constraint: first step of its fresh subtree
+  std::vector<std::pair<int, int>> stack;
+  std::vector<SharedBlock> found;
   for (int c = 0; c < nc; ++c) {
     tape_begin_[c] = static_cast<int>(tape_.size());
+    blocks_begin_[c] = static_cast<int>(blocks_.size());
     const Constraint& k = network_.constraint(ConstraintId{c});
     if (k.kind != Constraint::Kind::kExpression) continue;
     const auto topo = network_.TopoOf(ConstraintId{c});
@@ -593,6 +684,7 @@ void Propagator::Compile() {
       const ExprNode& n = network_.node(ExprId{topo[i]});
       Step s;
       s.op = n.op;
+      s.shared = shared_of[topo[i]];
       switch (n.op) {
         case Op::kVar: s.a = n.a; break;
         case Op::kConst:
@@ -617,10 +709,81 @@ void Propagator::Compile() {
       tape_.push_back(s);
     }
     HIGHLIFT_CHECK(!topo.empty() && topo.back() == k.root, "icsp: the root must end the evaluation order");
+    // The network's evaluation order is a post-order depth-first walk (Network::IndexConstraint);
+    // walking it again gives each step the range of steps its subtree was emitted in.
+    begin_of.assign(topo.size(), 0);
+    int emitted = 0;
+    stack.assign(1, {k.root, 0});
+    stamp[k.root] = c;
+    start[k.root] = 0;
+    while (!stack.empty()) {
+      auto& [node, state] = stack.back();
+      const ExprNode& n = network_.node(ExprId{node});
+      const int child = state == 0 ? (n.op == Op::kVar || n.op == Op::kConst ? -1 : n.a) : state == 1 ? n.b : -1;
+      if (state < 2) {
+        ++state;
+        if (child >= 0 && stamp[child] != c) {
+          stamp[child] = c;
+          start[child] = emitted;
+          stack.push_back({child, 0});
+        }
+        continue;
+      }
+      HIGHLIFT_CHECK(emitted < static_cast<int>(topo.size()) && topo[emitted] == node,
+                     "icsp: the evaluation order is not the post-order walk of the expression");
+      begin_of[emitted] = start[node];
+      ++emitted;
+      stack.pop_back();
+    }
+    // The outermost shared subexpressions (blocks nest: a shared node's operands are shared too).
+    found.clear();
+    int covered_from = static_cast<int>(topo.size());
+    for (int i = static_cast<int>(topo.size()) - 1; i >= 0; --i) {
+      const int e = shared_of[topo[i]];
+      if (e < 0 || i >= covered_from) continue;
+      for (int j = begin_of[i]; j <= i; ++j) {
+        const Step& inner = tape_[tape_begin_[c] + j];
+        HIGHLIFT_CHECK(inner.op == Op::kVar || inner.op == Op::kConst || inner.shared >= 0,
+                       "icsp: an operand of a shared subexpression must be shared too");
+      }
+      found.push_back({begin_of[i], i, e});
+      is_top[e] = 1;
+      covered_from = begin_of[i];
+    }
+    blocks_.insert(blocks_.end(), found.rbegin(), found.rend());
     for (int id : topo) local[id] = -1;
     max_steps_ = std::max(max_steps_, static_cast<int>(topo.size()));
   }
   tape_begin_[nc] = static_cast<int>(tape_.size());
+  blocks_begin_[nc] = static_cast<int>(blocks_.size());
+  // The variables below each outermost shared subexpression: its kept value is valid while none
+  // of them has changed.
+  shared_vars_.clear();
+  shared_vars_begin_.assign(shared_node.size() + 1, 0);
+  std::vector<int> seen(num_nodes, -1), todo;
+  for (std::size_t e = 0; e < shared_node.size(); ++e) {
+    shared_vars_begin_[e] = static_cast<int>(shared_vars_.size());
+    if (!is_top[e]) continue;
+    todo.assign(1, shared_node[e]);
+    seen[shared_node[e]] = static_cast<int>(e);
+    while (!todo.empty()) {
+      const int id = todo.back();
+      todo.pop_back();
+      const ExprNode& n = network_.node(ExprId{id});
+      if (n.op == Op::kVar) {
+        shared_vars_.push_back(n.a);
+        continue;
+      }
+      if (n.op == Op::kConst) continue;
+      for (int child : {n.a, n.b}) {
+        if (child >= 0 && seen[child] != static_cast<int>(e)) {
+          seen[child] = static_cast<int>(e);
+          todo.push_back(child);
+        }
+      }
+    }
+  }
+  shared_vars_begin_[shared_node.size()] = static_cast<int>(shared_vars_.size());
 }
 
 void Propagator::set_options(const PropagationOptions& o) {
@@ -633,7 +796,7 @@ PropagationReport Propagator::Propagate(Box& box, const std::vector<char>& enabl
                  "icsp: box size differs from the number of variables");
   HIGHLIFT_CHECK(enabled.empty() || static_cast<int>(enabled.size()) == network_.num_constraints(),
                  "icsp: enabled mask size differs from the number of constraints");
-  Engine engine(network_, options_, lower_reason_, upper_reason_, tape_, tape_begin_, constants_, max_steps_);
+  detail::Engine engine(*this);
   return engine.Run(box, enabled);
 }
 
@@ -647,16 +810,40 @@ std::string Label(const Network& net, int c) {
   const auto& info = net.constraint(ConstraintId{c}).info;
   return info.label.empty() ? "constraint " + std::to_string(c) : info.label;
 }
+/// A formula for a reader: a monotone black box with its first arguments, a long expression
+/// cut after about `limit` characters.
+std::string ShortText(const Network& net, int c, std::size_t limit = 160) {
+  const Constraint& k = net.constraint(ConstraintId{c});
+  if (k.kind == Constraint::Kind::kMonotone) {
+    const auto scope = net.ScopeOf(ConstraintId{c});
+    std::string out = net.variable(VariableId{scope[0]}).name + " == f(";
+    const std::size_t args = scope.size() - 1;
+    if (args > 4) out += std::to_string(args) + " parameters: ";
+    for (std::size_t i = 1; i < scope.size() && i <= 3; ++i) out += (i > 1 ? ", " : "") + net.variable(VariableId{scope[i]}).name;
+    return out + (args > 3 ? ", ...)" : ")");
+  }
+  // The requirement as the engineer wrote it (with its units); physics as the network holds it.
+  std::string text = k.info.role == ConstraintRole::kRequirement && !k.info.source.empty()
+                         ? k.info.source
+                         : net.ConstraintText(ConstraintId{c});
+  if (text.size() > limit) {
+    std::size_t cut = text.rfind(' ', limit - 10);
+    if (cut == std::string::npos || cut < limit / 2) cut = limit - 10;
+    text = text.substr(0, cut) + " ...";
+  }
+  return text;
+}
 std::string Describe(const Network& net, int c) {
   const auto& info = net.constraint(ConstraintId{c}).info;
   std::string s = (info.role == ConstraintRole::kRequirement ? "requirement '" : "'") + Label(net, c) + "'";
   if (!info.description.empty()) s += " (" + info.description + ")";
-  s += ": " + net.ConstraintText(ConstraintId{c});
+  s += ": " + ShortText(net, c);
   return s;
 }
 /// A bound in the variable's display unit, e.g. "263.8 rpm" (SI when the unit is not known).
 std::string Value(const Network& net, int v, double x) {
   const auto& var = net.variable(VariableId{v});
+  x += 0.0;  // -0 prints as 0
   if (var.unit.empty() || var.unit == "1") return FormatNumber(x, 6);
   try {
     const UnitConversion u = ParseUnit(var.unit);
@@ -664,6 +851,23 @@ std::string Value(const Network& net, int v, double x) {
   } catch (const InputError&) {
     return FormatNumber(x, 6) + " (SI)";
   }
+}
+/// "x in [a, b] unit", "x = a unit", "x >= a unit" for a domain.
+std::string DomainText(const Network& net, int v, const Interval& d) {
+  const std::string& name = net.variable(VariableId{v}).name;
+  if (IsEmpty(d)) return name + " empty";
+  const bool lo = std::isfinite(d.lower()), hi = std::isfinite(d.upper());
+  if (lo && hi) {
+    const std::string a = Value(net, v, d.lower()), b = Value(net, v, d.upper());
+    if (a == b) return name + " = " + a;
+    const auto& unit = net.variable(VariableId{v}).unit;
+    const std::string suffix = unit.empty() || unit == "1" || a.find(' ') == std::string::npos ? "" : a.substr(a.find(' '));
+    auto number = [&](const std::string& t) { return suffix.empty() ? t : t.substr(0, t.find(' ')); };
+    return name + " in [" + number(a) + ", " + number(b) + "]" + suffix;
+  }
+  if (lo) return name + " >= " + Value(net, v, d.lower());
+  if (hi) return name + " <= " + Value(net, v, d.upper());
+  return name + " unbounded";
 }
 }  // namespace
 
@@ -684,7 +888,8 @@ Explanation Explain(const Network& net, const Box& initial, PropagationOptions o
   for (int c = 0; c < nc; ++c) {
     if (net.constraint(ConstraintId{c}).info.role == ConstraintRole::kRequirement) requirements.push_back(c);
   }
-  // Deletion filtering: drop each requirement whose removal keeps the conflict.
+  // Deletion filtering: drop each requirement whose removal keeps the conflict. What remains is
+  // minimal: dropping any one of them leaves a network that propagation no longer proves empty.
   for (int r : requirements) {
     enabled[r] = 0;
     if (!infeasible(enabled)) enabled[r] = 1;
@@ -693,40 +898,68 @@ Explanation Explain(const Network& net, const Box& initial, PropagationOptions o
     if (enabled[r]) ex.conflict.push_back(r);
   }
   ex.physics_alone = ex.conflict.empty();
-  // The chain: propagate the minimal conflict again, recording who set each bound, and follow
-  // the reasons back from the constraint where the domain ran empty.
+  // The chain: propagate the minimal conflict again, recording which constraint narrowed which
+  // variable, and trace the way from each conflicting requirement to the constraint where the
+  // domain ran empty.
   options.record_reasons = true;
   prop.set_options(options);
   Box box = initial;
   const PropagationReport rep = prop.Propagate(box, enabled);
   ex.empty_constraint = rep.empty_constraint;
   ex.empty_variable = rep.empty_variable;
-  std::vector<ChainStep> steps;
-  std::vector<char> seen_var(net.num_variables(), 0), seen_ctr(nc, 0);
-  std::vector<int> frontier{rep.empty_constraint};
-  seen_ctr[rep.empty_constraint] = 1;
-  const std::size_t kMaxSteps = 16;
-  while (!frontier.empty() && steps.size() < kMaxSteps) {
-    std::vector<int> next;
-    for (int c : frontier) {
-      for (int v : net.ScopeOf(ConstraintId{c})) {
-        if (seen_var[v]) continue;
-        seen_var[v] = 1;
-        for (int side = 0; side < 2; ++side) {
-          const BoundReason& r = side == 0 ? prop.lower_reasons()[v] : prop.upper_reasons()[v];
-          if (r.constraint < 0) continue;
-          steps.push_back({r.constraint, v, side == 0, side == 0 ? box[v].lower() : box[v].upper(), r.time});
-          if (!seen_ctr[r.constraint]) {
-            seen_ctr[r.constraint] = 1;
-            next.push_back(r.constraint);
-          }
-        }
+  auto narrowed = [&](int c, int v) {
+    const auto scope = net.ScopeOf(ConstraintId{c});
+    for (std::size_t i = 0; i < scope.size(); ++i) {
+      if (scope[i] == v) return prop.Narrowed(ConstraintId{c}, static_cast<int>(i));
+    }
+    return false;
+  };
+  auto step_for = [&](int c, int v) {
+    const BoundReason& lo = prop.lower_reasons()[v];
+    const BoundReason& hi = prop.upper_reasons()[v];
+    const bool lower = lo.constraint == c || (hi.constraint != c && lo.time >= hi.time);
+    return ChainStep{c, v, lower, lower ? box[v].lower() : box[v].upper(), lower ? lo.time : hi.time};
+  };
+  // Breadth first from the failing constraint: next[c] is the constraint (and via[c] the
+  // variable) that the narrowing by c flowed on to, on a shortest way to the failure.
+  const int failed = rep.empty_constraint;
+  std::vector<int> next(nc, -2), via(nc, -1);
+  next[failed] = -1;
+  std::vector<int> queue{failed};
+  for (std::size_t q = 0; q < queue.size(); ++q) {
+    const int c = queue[q];
+    for (int v : net.ScopeOf(ConstraintId{c})) {
+      for (int other : net.ConstraintsOf(VariableId{v})) {
+        if (next[other] != -2 || !enabled[other] || !narrowed(other, v)) continue;
+        next[other] = c;
+        via[other] = v;
+        queue.push_back(other);
       }
     }
-    frontier = std::move(next);
   }
-  if (steps.size() > kMaxSteps) steps.resize(kMaxSteps);
-  std::sort(steps.begin(), steps.end(), [](const ChainStep& a, const ChainStep& b) { return a.time < b.time; });
+  std::vector<ChainStep> steps;
+  std::vector<char> shown(nc, 0);
+  std::vector<std::size_t> path_begin;  // where each requirement's way starts in `steps`
+  if (!ex.physics_alone) {
+    for (int r : ex.conflict) {
+      path_begin.push_back(steps.size());
+      for (int c = r; c >= 0 && c != failed && next[c] != -2 && !shown[c]; c = next[c]) {
+        shown[c] = 1;
+        steps.push_back(step_for(c, via[c]));
+      }
+    }
+  } else {
+    // No requirement: the physics narrowed the domains until one ran empty; the last narrowings
+    // of the failing constraint's variables, in the order they happened.
+    for (int v : net.ScopeOf(ConstraintId{failed})) {
+      for (const BoundReason* b : {&prop.lower_reasons()[v], &prop.upper_reasons()[v]}) {
+        if (b->constraint < 0 || b->constraint == failed) continue;
+        steps.push_back({b->constraint, v, b == &prop.lower_reasons()[v],
+                         b == &prop.lower_reasons()[v] ? box[v].lower() : box[v].upper(), b->time});
+      }
+    }
+    std::sort(steps.begin(), steps.end(), [](const ChainStep& a, const ChainStep& b) { return a.time < b.time; });
+  }
   ex.chain = steps;
 
   std::string t;
@@ -742,18 +975,36 @@ Explanation Explain(const Network& net, const Box& initial, PropagationOptions o
   }
   t += "How the conflict arises:\n";
   int k = 1;
-  for (const ChainStep& s : ex.chain) {
-    const auto& var = net.variable(VariableId{s.variable});
-    t += "  " + std::to_string(k++) + ". " + Describe(net, s.constraint) + "\n       gives " + var.name +
-         (s.lower ? " >= " : " <= ") + Value(net, s.variable, s.bound) + "\n";
+  for (std::size_t i = 0; i < ex.chain.size(); ++i) {
+    const ChainStep& s = ex.chain[i];
+    const bool starts = std::find(path_begin.begin(), path_begin.end(), i) != path_begin.end();
+    if (starts && ex.conflict.size() > 1) {
+      t += "  from requirement '" + Label(net, s.constraint) + "':\n";
+    }
+    t += "  " + std::to_string(k++) + ". " + Describe(net, s.constraint) + "\n       gives " +
+         DomainText(net, s.variable, box[s.variable]) + "\n";
   }
-  t += "  " + std::to_string(k) + ". " + Describe(net, rep.empty_constraint) + "\n       ";
+  t += "  " + std::to_string(k) + ". " + Describe(net, failed) + "\n       ";
   if (rep.empty_variable >= 0) {
+    t += "leaves no value for " + net.variable(VariableId{rep.empty_variable}).name;
     const Interval d = box[rep.empty_variable];
-    t += "leaves no value for " + net.variable(VariableId{rep.empty_variable}).name + " in " +
-         ToString(d, 6) + "\n";
+    if (!IsEmpty(d)) t += " in its narrowed domain, " + DomainText(net, rep.empty_variable, d);
+    t += "\n";
   } else {
-    t += "cannot hold for any values of its parameters in their narrowed domains\n";
+    // Name the narrowed domains it could not be satisfied in (the ones that were narrowed first).
+    std::vector<std::string> domains;
+    const auto scope = net.ScopeOf(ConstraintId{failed});
+    for (int pass = 0; pass < 2; ++pass) {
+      for (int v : scope) {
+        const bool moved = prop.lower_reasons()[v].constraint >= 0 || prop.upper_reasons()[v].constraint >= 0;
+        if (moved != (pass == 0) || domains.size() >= 6) continue;
+        domains.push_back(DomainText(net, v, box[v]));
+      }
+    }
+    t += "cannot hold for any values in the narrowed domains";
+    for (std::size_t g = 0; g < domains.size(); ++g) t += (g ? ", " : ": ") + domains[g];
+    if (scope.size() > domains.size()) t += ", ...";
+    t += "\n";
   }
   ex.text = t;
   return ex;

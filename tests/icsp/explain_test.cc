@@ -49,6 +49,42 @@ TEST(Explain, NamesTheMinimalConflictAndTheChain) {
   EXPECT_FALSE(ex.chain.empty());
 }
 
+/// The conflict is minimal: it is infeasible with only the physics and those requirements, and
+/// dropping any one of them leaves a network propagation no longer proves infeasible.
+void ExpectMinimal(const Network& net, const Explanation& ex) {
+  const int nc = net.num_constraints();
+  std::vector<char> only(nc, 0);
+  for (int c = 0; c < nc; ++c) only[c] = net.constraint(ConstraintId{c}).info.role == ConstraintRole::kPhysics;
+  for (int c : ex.conflict) only[c] = 1;
+  Propagator prop(net);
+  Box box = net.InitialBox();
+  EXPECT_EQ(prop.Propagate(box, only).status, Status::kInfeasible);
+  for (int c : ex.conflict) {
+    std::vector<char> without = only;
+    without[c] = 0;
+    box = net.InitialBox();
+    EXPECT_NE(prop.Propagate(box, without).status, Status::kInfeasible)
+        << net.constraint(ConstraintId{c}).info.label << " is not needed for the conflict";
+  }
+}
+
+TEST(Explain, ConflictIsMinimalAndTheChainStartsAtEachRequirement) {
+  Network net = SmallDrive();
+  AddConstraintText(net, "shaft.mass <= 12", {"R4", "lighter still", ConstraintRole::kRequirement});
+  AddConstraintText(net, "shaft.stiffness >= 800", {"R5", "weaker stiffness wish", ConstraintRole::kRequirement});
+  const Explanation ex = Explain(net, net.InitialBox());
+  ASSERT_TRUE(ex.infeasible);
+  ExpectMinimal(net, ex);
+  // Every requirement of the conflict starts a way through the network in the chain.
+  for (int r : ex.conflict) {
+    bool found = false;
+    for (const ChainStep& s : ex.chain) found = found || s.constraint == r;
+    EXPECT_TRUE(found) << net.constraint(ConstraintId{r}).info.label;
+    EXPECT_NE(ex.text.find("from requirement '" + net.constraint(ConstraintId{r}).info.label + "':"), std::string::npos)
+        << ex.text;
+  }
+}
+
 TEST(Explain, PhysicsAloneIsSaidSo) {
   Network net;
   net.AddVariable("a", Interval(0, 1));

@@ -131,6 +131,71 @@ TEST(IntervalProjection, UnaryFunctionsAreSound) {
   }
 }
 
+TEST(IntervalProjection, RealPowerBackwardEnclosesTheRoundingOfOneOverP) {
+  // a^p = y  =>  a = y^(1/p). The double nearest 1/p is off by up to half an ulp, an error that
+  // y^(1/p) magnifies by log(y); the projection encloses 1/p instead of counting on the one-ulp
+  // widening of log to cover it. Point values y (fixed seed) from 1e-300 to 1e300, and the true
+  // a = y^(1/p) computed in long double (64-bit mantissa).
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> exponent(-300.0, 300.0);
+  int checked = 0;
+  for (double p : {0.3, 0.7, 1.1, 2.3, 3.7, -0.3, -1.7}) {
+    for (int t = 0; t < 500; ++t) {
+      const double y = std::pow(10.0, exponent(rng));
+      const long double a = std::pow(static_cast<long double>(y), 1.0L / static_cast<long double>(p));
+      if (!(a > 1e-300L && a < 1e300L)) continue;
+      const Interval back = PowRealBackward(Interval(y), Interval(0.0, kInf), p);
+      EXPECT_TRUE(!IsEmpty(back) && back.lower() <= a && a <= back.upper())
+          << "p " << p << " y " << y << " back " << ToString(back);
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 2000);
+  // And it still narrows: a^0.5 in [2, 3] gives a in [4, 9] up to rounding; a^-0.5 in [0.5, 1]
+  // gives a in [1, 4]; a^0.5 = 0 gives a = 0.
+  Interval a = PowRealBackward(Interval(2, 3), Interval(0, 100), 0.5);
+  EXPECT_NEAR(a.lower(), 4.0, 1e-12);
+  EXPECT_NEAR(a.upper(), 9.0, 1e-12);
+  a = PowRealBackward(Interval(0.5, 1), Interval(0, 100), -0.5);
+  EXPECT_NEAR(a.lower(), 1.0, 1e-12);
+  EXPECT_NEAR(a.upper(), 4.0, 1e-12);
+  a = PowRealBackward(Interval(0, 0), Interval(0, 100), 0.5);
+  EXPECT_EQ(a.lower(), 0.0);
+  EXPECT_EQ(a.upper(), 0.0);
+}
+
+TEST(IntervalProjection, SineAndCosineProjectOntoTheirBranches) {
+  // sin(a) in [0.5, 1] with a in [0, 3]: a in [pi/6, 5 pi/6].
+  const Interval s = SinBackward(Interval(0.5, 1.0), Interval(0.0, 3.0));
+  EXPECT_NEAR(s.lower(), M_PI / 6, 1e-12);
+  EXPECT_NEAR(s.upper(), 5 * M_PI / 6, 1e-12);
+  EXPECT_LE(s.lower(), M_PI / 6);
+  EXPECT_GE(s.upper(), 5 * M_PI / 6);
+  // cos(a) in [-1, -0.5] with a in [-1, 10]: a in [2 pi/3, 4 pi/3] or [8 pi/3, 10]; the hull.
+  const Interval c = CosBackward(Interval(-1.0, -0.5), Interval(-1.0, 10.0));
+  EXPECT_NEAR(c.lower(), 2 * M_PI / 3, 1e-12);
+  EXPECT_EQ(c.upper(), 10.0);
+  // A period away: cos(a) = 1 with a in [0.5, 6] leaves nothing.
+  EXPECT_TRUE(IsEmpty(CosBackward(Interval(1.0, 1.0), Interval(0.5, 6.0))));
+  EXPECT_TRUE(IsEmpty(SinBackward(Interval(2.0, 3.0), Interval(0.0, 1.0))));
+  // Wide domains move only at their ends: sin(a) = 1 with a in [-1000, 1000].
+  const Interval w = SinBackward(Interval(1.0, 1.0), Interval(-1000.0, 1000.0));
+  EXPECT_GT(w.lower(), -1000.0);
+  EXPECT_NEAR(std::sin(w.lower()), 1.0, 1e-9);
+  EXPECT_NEAR(std::sin(w.upper()), 1.0, 1e-9);
+  // Soundness over many periods (fixed seed): a point whose sine or cosine lies in y survives.
+  std::mt19937_64 rng(17);
+  std::uniform_real_distribution<double> u(-300.0, 300.0), width(0.0, 40.0);
+  for (int t = 0; t < 4000; ++t) {
+    const double lo = u(rng);
+    const Interval a(lo, lo + width(rng) * (t % 3 == 0 ? 0.01 : 1.0));
+    const double x = PointIn(rng, a);
+    const Interval ys = Around(rng, std::sin(x)), yc = Around(rng, std::cos(x));
+    EXPECT_TRUE(Contains(SinBackward(ys, a), x)) << "sin: a " << ToString(a) << " x " << x << " y " << ToString(ys);
+    EXPECT_TRUE(Contains(CosBackward(yc, a), x)) << "cos: a " << ToString(a) << " x " << x << " y " << ToString(yc);
+  }
+}
+
 TEST(IntervalProjection, MultiplicationByZeroIntervalKeepsTheGap) {
   // y = a * b with y in [1, 2] and b in [-1, 1]: a in (-inf, -1] U [1, inf), met with [-0.5, 3].
   const Interval a = MulBackward(Interval(1, 2), Interval(-0.5, 3), Interval(-1, 1));

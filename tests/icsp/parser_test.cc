@@ -56,6 +56,43 @@ TEST(Parser, ConstantsWithUnitsAreSI) {
   EXPECT_NEAR(net.node(ExprId{net.node(speed).a}).value.lower(), 242.0 * M_PI / 30.0, 1e-9);
 }
 
+TEST(Parser, DecimalConstantsAndUnitConversionsAreEnclosed) {
+  // 0.1 is no double: the constant is the interval of the two doubles around it, so a point
+  // that satisfies x == 0.1 exactly is never cut off. 0.5 is exact and stays a point.
+  Network net;
+  const VariableId x = net.AddVariable("x", Whole());
+  const VariableId h = net.AddVariable("h", Whole());
+  const VariableId d = net.AddVariable("d", Whole());
+  const VariableId w = net.AddVariable("w", Whole());
+  const VariableId g = net.AddVariable("g", Whole());
+  const VariableId tau = net.AddVariable("tau", Whole());
+  AddConstraintText(net, "x == 0.1", {});
+  AddConstraintText(net, "h == 0.5", {});
+  AddConstraintText(net, "d == 2 mm", {});
+  AddConstraintText(net, "w == 242 rpm", {});
+  AddConstraintText(net, "g == [43, 51] GPa", {});
+  const ConstraintId c = AddConstraintText(net, "tau <= 1.5 kN*m", {"R", "", ConstraintRole::kRequirement});
+  Box box = net.InitialBox();
+  ASSERT_EQ(Propagate(net, box).status, Status::kFixedPoint);
+  auto encloses = [](const Interval& i, long double v) { return i.lower() <= v && v <= i.upper(); };
+  EXPECT_EQ(box[x.value].lower(), 0x1.9999999999999p-4);
+  EXPECT_EQ(box[x.value].upper(), 0x1.999999999999ap-4);
+  EXPECT_EQ(box[h.value].lower(), 0.5);
+  EXPECT_EQ(box[h.value].upper(), 0.5);
+  EXPECT_TRUE(encloses(box[d.value], 0.002L)) << ToString(box[d.value]);
+  EXPECT_LT(box[d.value].upper() - box[d.value].lower(), 1e-17);
+  EXPECT_TRUE(encloses(box[w.value], 242.0L * 3.14159265358979323846264338327950288L / 30.0L)) << ToString(box[w.value]);
+  EXPECT_EQ(box[g.value].lower(), 43e9);  // integer factors are exact
+  EXPECT_EQ(box[g.value].upper(), 51e9);
+  EXPECT_EQ(box[tau.value].upper(), 1500.0);
+  // Printed as written (the enclosure is an implementation detail), and the requirement keeps its
+  // source text with units for explanations.
+  EXPECT_EQ(net.ConstraintText(ConstraintId{0}), "x == 0.1");
+  EXPECT_EQ(net.constraint(c).info.source, "tau <= 1.5 kN*m");
+  // A constant exponent is the double nearest the number written.
+  EXPECT_EQ(net.node(ParseExpression(net, "x^0.3", "t")).p, 0.3);
+}
+
 TEST(Parser, NamesWithDotsAndFunctions) {
   Network net = TwoParameters();
   const ConstraintId c = AddConstraintText(

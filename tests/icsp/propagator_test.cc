@@ -39,6 +39,83 @@ TEST(Propagator, ConstraintsAreNondirectional) {
   EXPECT_NEAR(box[w.value].upper(), 2.0, 1e-12);
 }
 
+/// sqrt(c * J) in three constraints is one DAG node; its forward value is computed once and
+/// reused by every later revision while c and J keep their domains.
+TEST(Propagator, SharedSubexpressionIsEvaluatedOncePerChangeOfItsVariables) {
+  Network net;
+  net.AddVariable("c", Interval(1, 4));
+  net.AddVariable("J", Interval(1, 4));
+  for (const char* name : {"tau1", "tau2", "tau3"}) net.AddVariable(name, Whole());
+  AddConstraintText(net, "tau1 == sqrt(c * J)", {});
+  AddConstraintText(net, "tau2 == 2 * sqrt(c * J)", {});
+  AddConstraintText(net, "tau3 == sqrt(c * J) + 1", {});
+  Propagator shared(net);
+  EXPECT_EQ(shared.num_shared_subexpressions(), 2);  // c * J and sqrt(c * J)
+  Box box = net.InitialBox();
+  const PropagationReport r = shared.Propagate(box);
+  ASSERT_EQ(r.status, Status::kFixedPoint);
+  // c and J never narrow: only the first revision evaluates sqrt(c * J).
+  EXPECT_EQ(r.reused_subexpressions, r.revisions - 1) << r.FullReport();
+  EXPECT_NEAR(box[3].upper(), 8.0, 1e-12);
+  // Off: the same fixed point, every revision evaluates it.
+  PropagationOptions off;
+  off.reuse_shared_subexpressions = false;
+  Box plain = net.InitialBox();
+  const PropagationReport p = Propagate(net, plain, off);
+  EXPECT_EQ(p.reused_subexpressions, 0);
+  EXPECT_EQ(p.revisions, r.revisions);
+  for (std::size_t i = 0; i < box.size(); ++i) {
+    EXPECT_EQ(box[i].lower(), plain[i].lower());
+    EXPECT_EQ(box[i].upper(), plain[i].upper());
+  }
+  // When a variable below it narrows, the kept value is stale and is evaluated again.
+  AddConstraintText(net, "c <= 2", {});
+  Propagator narrowed(net);
+  box = net.InitialBox();
+  const PropagationReport n = narrowed.Propagate(box);
+  ASSERT_EQ(n.status, Status::kFixedPoint);
+  EXPECT_NEAR(box[2].upper(), std::sqrt(8.0), 1e-12);
+  EXPECT_NEAR(box[3].upper(), 2 * std::sqrt(8.0), 1e-12);
+  EXPECT_NEAR(box[4].upper(), std::sqrt(8.0) + 1, 1e-12);
+}
+
+/// Reusing shared values changes nothing but the work: on the random reference networks (whose
+/// constraints share sqrt(x_a) and x_a * x_b), the same revisions and the same fixed point.
+TEST(Propagator, ReusingSharedSubexpressionsKeepsTheFixedPoint) {
+  const Network net = BuildNetwork(MakeRandomNetwork(1000));
+  Propagator with(net);
+  EXPECT_GT(with.num_shared_subexpressions(), 50);
+  PropagationOptions off;
+  off.reuse_shared_subexpressions = false;
+  Propagator without(net, off);
+  Box a = net.InitialBox(), b = net.InitialBox();
+  const PropagationReport ra = with.Propagate(a), rb = without.Propagate(b);
+  ASSERT_EQ(ra.status, Status::kFixedPoint);
+  EXPECT_EQ(ra.revisions, rb.revisions);
+  EXPECT_GT(ra.reused_subexpressions, 0);
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    EXPECT_EQ(a[i].lower(), b[i].lower()) << i;
+    EXPECT_EQ(a[i].upper(), b[i].upper()) << i;
+  }
+}
+
+/// The periodic functions project back too: sin(phi) >= 0.5 with phi in [0, 3] rad narrows phi
+/// to [pi/6, 5 pi/6]; cos(phi) == 1 with phi in [0.5, 6] rad is proved impossible.
+TEST(Propagator, PeriodicFunctionsAreNondirectional) {
+  Network net;
+  const VariableId phi = net.AddVariable("phi", Interval(0, 3));
+  AddConstraintText(net, "sin(phi) >= 0.5", {});
+  Box box = net.InitialBox();
+  ASSERT_EQ(Propagate(net, box).status, Status::kFixedPoint);
+  EXPECT_NEAR(box[phi.value].lower(), M_PI / 6, 1e-12);
+  EXPECT_NEAR(box[phi.value].upper(), 5 * M_PI / 6, 1e-12);
+  Network none;
+  none.AddVariable("phi", Interval(0.5, 6));
+  AddConstraintText(none, "cos(phi) == 1", {});
+  box = none.InitialBox();
+  EXPECT_EQ(Propagate(none, box).status, Status::kInfeasible);
+}
+
 TEST(Propagator, ProvedInfeasibleIsNotStoppedAtLimit) {
   Network net;
   net.AddVariable("x", Interval(0, 10));

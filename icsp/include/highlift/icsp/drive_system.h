@@ -5,11 +5,14 @@
 //
 // Names: "<component>.<parameter>" for parameters; derived quantities:
 //   <shaft>.polar_moment, .c (stiffness), .J (inertia), .mass, .torque_capacity, .drive_torque,
-//   .shear_stress; <component>.reflected_inertia / .reflected_stiffness (at the PDU speed);
-//   <gra>.max_load, .input_torque_opposing, .input_torque_aiding; <branch gearbox>.station_torque;
-//   <limiter>.torque_through, .margin; <wtb>.holding_torque, .holding_margin; pdu.output_torque,
-//   pdu.required_power, pdu.operating_speed; travel_time.<load case> and travel_time.extension
-//   (with the ramps of the speed profile); and for the sizing cases of reduced_models (`highlift
+//   .shear_stress; <component>.reflected_inertia / .reflected_stiffness (at the PDU speed) and
+//   .series_stiffness (the drive line from the PDU to it, in series); <actuator>.max_load,
+//   .input_torque_opposing, .input_torque_aiding; <branch gearbox>.station_torque;
+//   torque.<load case>.<component> (the steady-state torque flow of reduced_models' sizing, with
+//   friction and the opposing/aiding efficiencies); <limiter>.torque_through, .margin,
+//   .torque_through_retract, .margin_retract; <wtb>.holding_torque, .holding_margin;
+//   pdu.output_torque, pdu.required_power, pdu.operating_speed; travel_time.<load case> and
+//   travel_time.extension (with the ramps of the speed profile); and for the sizing cases of reduced_models (`highlift
 //   peak`) that a scenario names or a requirement mentions: peak.<case>.speed / .omega (first
 //   eigenfrequency, a monotone black box over reduced_models' lumped model) / .inertia (J*) /
 //   .stiffness (c* = J* w1^2) / .torque (the paper's equation (1), w sqrt(c* J*)) /

@@ -1,8 +1,9 @@
 // Sound interval arithmetic for the propagator: one wrapper around boost::numeric::interval<double>.
 //
 // - Rounding: the four operations and sqrt are rounded outward exactly (IEEE directed rounding);
-//   exp, log, sin, cos come from the C library, which does not guarantee its rounding, so their
-//   results are widened outward by one ulp more (std::nextafter).
+//   exp, log, sin, cos (and asin, acos in the backward projections of sin and cos) come from the
+//   C library, which does not guarantee its rounding, so their results are widened outward by
+//   one ulp more (std::nextafter). n-th roots (Newton iterations on pow) are widened likewise.
 // - Emptiness: an empty interval is an ordinary value (both bounds NaN); every operation on an
 //   empty operand gives empty; nothing throws.
 // - Backward projections: for every operation y = f(x1, x2) a function that narrows an argument
@@ -275,7 +276,8 @@ inline I PowIntBackward(const I& y, const I& a, int n) {
   if (!IsEmpty(neg)) r = Join(r, -neg);
   return Meet(a, r);
 }
-// y = a^p (real p, a >= 0)  =>  a in y^(1/p) over a >= 0
+// y = a^p (real p, a >= 0)  =>  a in y^(1/p) = exp((1/p) log(y)) over a >= 0, with 1/p enclosed
+// (the double nearest 1/p is off by up to half an ulp, which y^(1/p) magnifies by log(y))
 template <class I>
 inline I PowRealBackward(const I& y, const I& a, double p) {
   if (p == std::floor(p) && std::fabs(p) < 64) {
@@ -284,7 +286,9 @@ inline I PowRealBackward(const I& y, const I& a, double p) {
   const I ap = Meet(a, I(0.0, kInf, true));
   const I yp = Meet(y, I(0.0, kInf, true));
   if (IsEmpty(ap) || IsEmpty(yp)) return I::empty();
-  return Meet(ap, PowReal(yp, 1.0 / p) * I(std::nextafter(1.0, 0.0), std::nextafter(1.0, 2.0), true));
+  if (yp.upper() == 0.0) return p > 0.0 ? Meet(ap, I(0.0, 0.0, true)) : I::empty();  // 0^p = 0 (p > 0)
+  const I inverse = I(1.0, 1.0, true) / I(p, p, true);
+  return Meet(ap, Exp(inverse * Log(yp)));  // y = 0 maps to a = 0 (p > 0) or a = inf (p < 0)
 }
 // y = exp(a)  =>  a in log(y)
 template <class I>
@@ -320,18 +324,61 @@ inline I MaxBackward(const I& y, const I& a, const I& b) {
   if (b.upper() < y.lower()) return Meet(a, y);
   return Meet(a, I(-kInf, y.upper(), true));
 }
-// y = sin(a)  =>  a in asin(y) + 2k*pi on the branch holding a; conservative: a unchanged
-// unless y misses [-1, 1] (periodic inverse kept simple, still sound)
+/// a ∩ (the union over all integers k of branch_i + 2 k pi), as a hull. `branches` enclose the
+/// branches of an inverse within one period (each an interval, empty ones skipped). The shifted
+/// branches are enclosed with an outward enclosure of 2 pi, so the result is sound. A domain
+/// beyond 1e9 rad (where a period is lost in the rounding of k 2 pi) is returned unchanged.
+template <class I>
+inline I PeriodicMeet(const I& a, const I (&branches)[2]) {
+  if (IsEmpty(a)) return a;
+  if (!(std::fabs(a.lower()) <= 1e9 && std::fabs(a.upper()) <= 1e9)) return a;
+  const I two_pi(bi::constants::pi_twice_lower<double>(), bi::constants::pi_twice_upper<double>(), true);
+  // Every branch lies within [-pi, 2 pi], so the shifts that can meet a are k in [k_first, k_last].
+  const double period = bi::constants::pi_twice_lower<double>();
+  const double k_first = std::floor(a.lower() / period) - 2.0, k_last = std::ceil(a.upper() / period) + 2.0;
+  double lo = kInf, hi = -kInf;
+  auto visit = [&](double k) {
+    const I shift = I(k, k, true) * two_pi;
+    for (const I& b : branches) {
+      if (IsEmpty(b)) continue;
+      const I m = Meet(a, b + shift);
+      if (IsEmpty(m)) continue;
+      lo = std::min(lo, m.lower());
+      hi = std::max(hi, m.upper());
+    }
+  };
+  if (k_last - k_first <= 16.0) {
+    for (double k = k_first; k <= k_last; k += 1.0) visit(k);
+  } else {
+    // A wide domain (many periods): only its two ends can move, each within a period or two.
+    for (double k = k_first; k <= k_first + 6.0; k += 1.0) visit(k);
+    for (double k = k_last - 6.0; k <= k_last; k += 1.0) visit(k);
+    if (!(lo <= hi)) return I::empty();
+    return I(lo, hi, true);
+  }
+  if (!(lo <= hi)) return I::empty();
+  return I(lo, hi, true);
+}
+// y = sin(a)  =>  a in (asin(y) + 2k pi) ∪ (pi - asin(y) + 2k pi), met with a
 template <class I>
 inline I SinBackward(const I& y, const I& a) {
-  if (IsEmpty(Meet(y, I(-1.0, 1.0, true)))) return I::empty();
-  return a;
+  const I yy = Meet(y, I(-1.0, 1.0, true));
+  if (IsEmpty(yy) || IsEmpty(a)) return I::empty();
+  const I pi(bi::constants::pi_lower<double>(), bi::constants::pi_upper<double>(), true);
+  const I half_pi(bi::constants::pi_half_lower<double>(), bi::constants::pi_half_upper<double>(), true);
+  // asin from the C library (rounding not guaranteed): widened by one ulp, kept in [-pi/2, pi/2].
+  const I asin_y = Meet(WidenUlp(boost::numeric::asin(yy)), I(-half_pi.upper(), half_pi.upper(), true));
+  const I branches[2] = {asin_y, pi - asin_y};
+  return PeriodicMeet(a, branches);
 }
-// y = cos(a)  =>  a in acos(y) + 2k*pi; conservative as for sin
+// y = cos(a)  =>  a in (acos(y) + 2k pi) ∪ (-acos(y) + 2k pi), met with a
 template <class I>
 inline I CosBackward(const I& y, const I& a) {
-  if (IsEmpty(Meet(y, I(-1.0, 1.0, true)))) return I::empty();
-  return a;
+  const I yy = Meet(y, I(-1.0, 1.0, true));
+  if (IsEmpty(yy) || IsEmpty(a)) return I::empty();
+  const I acos_y = Meet(WidenUlp(boost::numeric::acos(yy)), I(0.0, bi::constants::pi_upper<double>(), true));
+  const I branches[2] = {acos_y, -acos_y};
+  return PeriodicMeet(a, branches);
 }
 
 }  // namespace highlift::icsp

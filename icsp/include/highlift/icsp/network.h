@@ -60,6 +60,8 @@ struct ConstraintInfo {
   std::string label;        ///< short identifier, e.g. "R3" or "shaft_l1.stiffness"
   std::string description;  ///< one line in words, e.g. "tube stiffness c = G*Ip/L"
   ConstraintRole role = ConstraintRole::kPhysics;
+  std::string source = {};  ///< the constraint as written, with its units (AddConstraintText
+                            ///< fills it); explanations quote it
 };
 
 struct VariableInfo {

@@ -10,7 +10,9 @@
 //
 // Names are parameters such as `wtb_left.static_limit_torque` (letters, digits, '_' and '.').
 // A constant may carry a unit written right after it: `2 mm`, `550 N*m`, `[43, 51] GPa`,
-// `242 rpm`; it is converted to SI. A unit is one word of letters, digits and `* / ^`, so write
+// `242 rpm`; it is converted to SI. Constants are enclosed: a decimal that no double represents
+// (0.1) becomes the interval of the two doubles around it, and a unit conversion rounds outward,
+// so a point that satisfies the constraint as written is never cut off. A unit is one word of letters, digits and `* / ^`, so write
 // spaces around an operator that follows a unit (`2 mm * x`). Exponents that are constants give
 // x^n (integer) or x^p (real, x >= 0); other exponents give exp(y * log(x)).
 // Errors throw InputError with the column and a caret line under the offending text.
@@ -49,6 +51,10 @@ ConstraintId AddConstraintText(Network& network, std::string_view text, Constrai
 /// `value` given in `unit` converted to SI (the one place where the parser meets units).
 /// Throws InputError naming the unit when it is not understood.
 double ConstantToSI(double value, std::string_view unit);
+/// The same for an enclosure, outward: the result encloses the conversion of every value in
+/// `value`. Integer factors (1000, 1e9, 60) are exact; other factors (1e-3, pi/30) are the unit
+/// system's doubles and are taken as known to two ulps.
+Interval ConstantToSI(const Interval& value, std::string_view unit);
 
 /// Closest names to `name` (edit distance), at most `max_results`, for "did you mean".
 std::vector<std::string> ClosestNames(std::string_view name, const std::vector<std::string>& candidates,

@@ -34,6 +34,10 @@ struct PropagationOptions {
                                             ///< idempotent); false mimics IBEX's CtcPropag
   bool record_reasons = true;               ///< remember which constraint set each bound (for
                                             ///< explanations); costs two ints per variable
+  bool reuse_shared_subexpressions = true;  ///< a subexpression that several constraints share
+                                            ///< (one DAG node) is evaluated once per change of
+                                            ///< its variables and its value reused by the others;
+                                            ///< the fixed point is the same either way
   /// Throws InputError naming the bad option.
   void Validate() const;
 };
@@ -52,6 +56,8 @@ struct PropagationReport {
   std::int64_t revisions = 0;        ///< constraint revisions
   std::int64_t narrowings = 0;       ///< variable domains that shrank
   std::int64_t requeued = 0;         ///< constraints put back on the agenda
+  std::int64_t reused_subexpressions = 0;  ///< forward evaluations of shared subexpressions
+                                           ///< saved: their kept value was still valid
   int empty_variable = -1;           ///< kInfeasible: the variable whose domain ran empty (-1: an
                                      ///< intermediate expression or the relation itself)
   int empty_constraint = -1;         ///< kInfeasible: the constraint being revised then
@@ -69,6 +75,10 @@ struct BoundReason {
   std::int64_t time = -1;
 };
 
+namespace detail {
+class Engine;
+}
+
 /// Runs propagation on boxes of one network; reuses its scratch memory between runs.
 class Propagator {
  public:
@@ -81,16 +91,32 @@ class Propagator {
   /// After Propagate with record_reasons: reasons of the lower and upper bound of each variable.
   const std::vector<BoundReason>& lower_reasons() const { return lower_reason_; }
   const std::vector<BoundReason>& upper_reasons() const { return upper_reason_; }
+  /// After Propagate with record_reasons: whether constraint c ever narrowed the i-th variable of
+  /// its scope (Network::ScopeOf(c)[i]) during the run.
+  bool Narrowed(ConstraintId c, int i) const {
+    return !narrowed_.empty() && narrowed_[network_.constraint(c).vars_begin + i] != 0;
+  }
 
- /// One step of a constraint's compiled evaluation order (operands refer to earlier steps).
+  /// One step of a constraint's compiled evaluation order (operands refer to earlier steps).
   struct Step {
     Op op = Op::kConst;
-    int a = -1;    ///< operand step, or the variable index for kVar
-    int b = -1;    ///< second operand step
-    int aux = 0;   ///< kConst/kPowReal: index into constants; kPowInt: the exponent
+    int a = -1;      ///< operand step, or the variable index for kVar
+    int b = -1;      ///< second operand step
+    int aux = 0;     ///< kConst/kPowReal: index into constants; kPowInt: the exponent
+    int shared = -1; ///< the node's entry in the shared-subexpression table (-1: one constraint only)
   };
+  /// A shared subexpression within one constraint's steps: steps [begin, top] compute the node
+  /// of step `top` and nothing else (post-order), so a valid kept value skips all of them.
+  struct SharedBlock {
+    int begin = 0;
+    int top = 0;
+    int shared = -1;
+  };
+  /// Number of distinct subexpressions (non-leaf DAG nodes) that two or more constraints share.
+  int num_shared_subexpressions() const { return num_shared_; }
 
  private:
+  friend class detail::Engine;
   void Compile();
 
   const Network& network_;
@@ -99,7 +125,14 @@ class Propagator {
   std::vector<int> tape_begin_;        ///< constraint c uses tape_[tape_begin_[c] .. tape_begin_[c+1])
   std::vector<Interval> constants_;
   int max_steps_ = 0;
+  std::vector<SharedBlock> blocks_;    ///< outermost shared subexpressions of each constraint, in
+                                       ///< step order; constraint c: blocks_begin_[c] .. [c+1]
+  std::vector<int> blocks_begin_;
+  int num_shared_ = 0;
+  std::vector<int> shared_vars_;       ///< per shared entry: the variables below it, entry e at
+  std::vector<int> shared_vars_begin_; ///< shared_vars_[shared_vars_begin_[e] .. [e+1])
   std::vector<BoundReason> lower_reason_, upper_reason_;
+  std::vector<char> narrowed_;         ///< per scope entry of every constraint (record_reasons)
 };
 
 /// Convenience: Propagator(network, options).Propagate(box).
