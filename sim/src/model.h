@@ -272,6 +272,10 @@ class Element {
     return 0.0;
   }
   virtual void Fix(const Eval& e) { (void)e; }
+  /// Called when Fix() has alternated this element's mode too often in one event (a friction
+  /// torque at its capacity within roundoff: stuck and sliding each look inconsistent by a
+  /// rounding error): settle in the mode that is consistent within the tolerances (stuck).
+  virtual void Settle(const Eval& e) { (void)e; }
   /// At the end of an event, after the modes are consistent: the element may re-initialise
   /// its own states in y (a controller's integral when a brake opens). The integrator restarts
   /// from the new state.

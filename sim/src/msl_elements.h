@@ -407,7 +407,11 @@ class Friction : public Element {
   void Roots(const Eval& e, double* g) const override {
     g[0] = Sliding() ? WF(e) : 1.0;
     if (mode == kStuck) {
-      g[1] = one_way ? Tau0Max(e) - tau : Tau0Max(e) - std::abs(tau);
+      // The event iteration accepts a stuck element whose torque exceeds its capacity by up to
+      // 1e-12 of it; the root keeps a margin of 1e-10 so that it starts positive even then and
+      // a torque that rises beyond the capacity is located (CVODE sees only sign changes).
+      const double cap = Tau0Max(e) + kCapacityMargin * std::abs(Tau0Max(e));
+      g[1] = one_way ? cap - tau : cap - std::abs(tau);
     } else {
       g[1] = 1.0;
     }
@@ -472,11 +476,20 @@ class Friction : public Element {
     } else {
       mode = kStuck;
       start_forward = start_backward = false;
+      // Released on the located capacity root but driven the other way once sliding: the
+      // torque sits at the capacity within the root tolerance. The element stays stuck for this
+      // event (the relaxed threshold of the fired root no longer applies), else the iteration
+      // would alternate between the two modes.
+      if (!fired.empty()) fired[1] = 0;
     }
   }
   void AfterEventRow() override {
     start_forward = start_backward = false;
     ClearFired();
+  }
+  void Settle(const Eval&) override {
+    if (mode == kForward || mode == kBackward) mode = kStuck;
+    start_forward = start_backward = false;
   }
   bool IsSwitching() const override { return true; }
   std::string ModeText() const override { return ModeName(mode); }
@@ -486,6 +499,7 @@ class Friction : public Element {
   /// The friction torque acts -tau on p and +tau on m: it takes tau * w_f from the nodes.
   double LossPower(const Eval& e) const override { return tau * WF(e); }
 
+  static constexpr double kCapacityMargin = 1e-10;  ///< relative, of the stuck roots
   double peak = 1.0;
   bool can_be_free = false;
   bool one_way = false;
@@ -765,8 +779,10 @@ class LossyGear : public GearBase {
   int NumRoots() const override { return ideal ? 0 : 4; }
   void Roots(const Eval& e, double* g) const override {
     g[0] = Rolling() ? WA(e) : 1.0;
-    g[1] = mode == kStuck ? LossMaxForward() - tau_loss : 1.0;
-    g[2] = mode == kStuck ? tau_loss - LossMinBackward() : 1.0;
+    // A margin of 1e-10 (as Friction's stuck root): the roots start positive at the event.
+    const double margin = 1e-10 * (1.0 + std::abs(tau_a) + std::abs(tau_loss));
+    g[1] = mode == kStuck ? LossMaxForward() - tau_loss + margin : 1.0;
+    g[2] = mode == kStuck ? tau_loss - LossMinBackward() + margin : 1.0;
     g[3] = Rolling() ? TauEta(e) : 1.0;
   }
   void RootDirections(int* d) const override {

@@ -1086,6 +1086,11 @@ bool System::HandleEvent(double t, double* y, bool initial, std::vector<std::str
   for (auto& el : elements_)
     if (el->IsSwitching()) el->PrepareEvent(eval_);
   bool converged = false;
+  // An element that alternates between two modes is settled after kMaxFixes switches (its
+  // friction torque sits at its capacity within roundoff).
+  constexpr int kMaxFixes = 8;
+  std::vector<int> fixes(elements_.size(), 0);
+  std::vector<char> settled(elements_.size(), 0);
   for (int iteration = 0; iteration < 200; ++iteration) {
     if (!Evaluate(t, y, nullptr)) return false;
     if (!ProjectSpeeds(y)) return false;
@@ -1093,7 +1098,7 @@ bool System::HandleEvent(double t, double* y, bool initial, std::vector<std::str
     Element* worst = nullptr;
     double worst_violation = 0.0;
     for (auto& el : elements_) {
-      if (!el->IsSwitching()) continue;
+      if (!el->IsSwitching() || settled[el->index]) continue;
       const double v = el->Violation(eval_);
       if (v > worst_violation) {
         worst_violation = v;
@@ -1103,6 +1108,11 @@ bool System::HandleEvent(double t, double* y, bool initial, std::vector<std::str
     if (worst == nullptr) {
       converged = true;
       break;
+    }
+    if (++fixes[worst->index] > kMaxFixes) {
+      worst->Settle(eval_);
+      settled[worst->index] = 1;
+      continue;
     }
     worst->Fix(eval_);
   }

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 #include "highlift/core/error.h"
 #include "highlift/core/project_io.h"
@@ -265,6 +266,28 @@ TEST(DriveScenarios, JamLocksOutTheStationLimiterAndReportsPeaks) {
   EXPECT_GT(find("stl_l3"), 180.0);  // beyond its lock-out torque
   EXPECT_GT(find("shaft_l3a"), 1.5 * std::abs(run->At("shaft_l3a.tau", 0.99)));
   ExpectEnergyBalance(run->report);
+}
+
+// The transmission is mirrored about the PDU: a rupture at the same place on the left and on the
+// right wing gives the same peaks, whatever the stop time (which changes the integrator's step
+// sequence). Regression: a brake that stuck with its torque at its capacity (a station limiter
+// at the end stop) could miss the breakaway root and hold 840 N*m instead of slipping at 633.
+TEST(DriveScenarios, MirroredRupturesGiveMirroredPeaksIndependentOfTheStepSequence) {
+  auto peaks = [&](const std::string& shaft, double stop) {
+    Scenario s = SizingScenario(Example(), "rupture", shaft);
+    s.stop_time = stop;
+    const auto run = Simulate(Example(), s, DriveResolution::kFull, stop);
+    std::map<std::string, double> by_component;
+    for (const auto& p : ComponentPeakTorques(run->model, Example(), run->report)) by_component[p.element] = std::abs(p.tau);
+    return by_component;
+  };
+  const auto left = peaks("shaft_l5b", 2.0), right = peaks("shaft_r5b", 1.2);
+  for (const auto& [l, r] : std::vector<std::pair<std::string, std::string>>{
+           {"stl_l6", "stl_r6"}, {"wtb_left", "wtb_right"}, {"shaft_l7", "shaft_r7"}, {"shaft_l6", "shaft_r6"}}) {
+    ASSERT_TRUE(left.count(l) && right.count(r)) << l;
+    EXPECT_NEAR(left.at(l), right.at(r), 1e-3 * left.at(l)) << l << " / " << r;
+  }
+  EXPECT_LT(left.at("stl_l6"), 700.0);
 }
 
 // The reduced model (inertias lumped at gearboxes and stations) gives the same qualitative
