@@ -669,7 +669,8 @@ void Builder::EmitLoads() {
       }
       for (std::size_t i = 0; i < table.x.size(); ++i)
         rows.push_back({direction_ > 0 ? table.x[i] * travel : (table.x[i] - 1) * travel, sign * table.y[i]});
-      if (direction_ < 0) std::reverse(rows.begin(), rows.end());
+      // Retracting from full travel: the output angle runs from 0 down to -travel, so the
+      // keys (x - 1)*travel of the positions x in increasing order are already increasing.
       const std::string sensor = a->id + ".output_angle";
       Add("AngleSensor", sensor, {}, a->id);
       Connect(a->id + ".flange_b", sensor + ".flange");
@@ -953,22 +954,40 @@ DriveModel BuildDriveNetwork(const Project& project, const Scenario* scenario, c
 }
 
 Scenario SizingScenario(const Project& project, const std::string& kind, const std::string& component) {
+  if (kind != "jam" && kind != "rupture")
+    throw InputError("sizing case kind '" + kind + "' is unknown; choose 'jam' or 'rupture'");
+  // A jam at full speed while extending (the kinetic energy of the drive goes into the jammed
+  // load path); a rupture while retracting, when the airload aids the motion: the outboard part
+  // then speeds up from its operating speed until the brake engages, the worst case that the
+  // single-DOF estimate of highlift peak assumes (extending against an opposing load it first
+  // stops and reverses).
+  const std::string preferred = kind == "rupture" ? "retract" : "extend";
+  auto direction_of = [&](const std::string& load_case) {
+    const LoadCase* lc = project.FindLoadCase(load_case);
+    return lc ? lc->direction : std::string();
+  };
+  bool has_preferred = false;
+  for (const LoadCase& lc : project.load_cases) has_preferred = has_preferred || lc.direction == preferred;
   for (const Scenario& s : project.scenarios) {
     if (s.kind != kind) continue;
     const auto& target = kind == "jam" ? s.jam_component : s.rupture_component;
-    if (target && *target == component) return s;
+    if (target && *target == component && (!has_preferred || direction_of(s.load_case) == preferred)) return s;
   }
-  if (kind != "jam" && kind != "rupture")
-    throw InputError("sizing case kind '" + kind + "' is unknown; choose 'jam' or 'rupture'");
   Scenario s;
   s.name = kind + "_" + component;
   s.kind = kind;
   s.description = "sizing case of highlift peak";
   for (const LoadCase& lc : project.load_cases)
-    if (lc.direction == "extend") {
+    if (lc.direction == preferred) {
       s.load_case = lc.name;
       break;
     }
+  if (s.load_case.empty())
+    for (const LoadCase& lc : project.load_cases)
+      if (lc.direction == "extend") {
+        s.load_case = lc.name;
+        break;
+      }
   if (s.load_case.empty() && !project.load_cases.empty()) s.load_case = project.load_cases.front().name;
   if (kind == "jam") {
     s.jam_component = component;

@@ -188,7 +188,9 @@ TEST(DriveNetwork, ErrorsNameTheThingAndTheRemedy) {
 TEST(DriveNetwork, SizingScenarioMadeUpForARupture) {
   const Scenario s = SizingScenario(Example(), "rupture", "shaft_l3a");
   EXPECT_EQ(s.name, "rupture_shaft_l3a");
-  EXPECT_EQ(s.load_case, "extend_opposing");
+  EXPECT_EQ(s.load_case, "retract_aiding");  // the airload aids the motion: the worst case
+  // The project's rupture_wtb extends against the opposing load: not the sizing condition.
+  EXPECT_EQ(SizingScenario(Example(), "rupture", "shaft_l1").name, "rupture_shaft_l1");
   ASSERT_TRUE(s.rupture_time.has_value());
   EXPECT_DOUBLE_EQ(*s.rupture_time, 1.0);
   EXPECT_EQ(s.wtb_trigger, "monitor");

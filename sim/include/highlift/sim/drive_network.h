@@ -106,10 +106,12 @@ DriveModel BuildDriveNetwork(const Project& project, const DriveNetworkOptions& 
 DriveModel BuildDriveNetwork(const Project& project, const Scenario* scenario,
                              const DriveNetworkOptions& options);
 
-/// The scenario of a sizing case of `highlift peak` (kind "jam" or "rupture" of `component`):
-/// the project's scenario of that kind and component if there is one, else a new one named
-/// "<kind>_<component>" on the first extending load case, with the failure at 1 s and a stop
-/// time of 2 s (jam) or 3 s (rupture, wing-tip brakes by the monitor).
+/// The scenario of a sizing case of `highlift peak` (kind "jam" or "rupture" of `component`),
+/// under the conditions the single-DOF estimate assumes: a jam while extending, a rupture while
+/// retracting with the airload aiding the motion (when the project has such load cases). The
+/// project's scenario of that kind and component if its load case is of that direction, else a
+/// new one named "<kind>_<component>" on the first such load case, with the failure at 1 s and a
+/// stop time of 2 s (jam) or 3 s (rupture, wing-tip brakes by the monitor).
 Scenario SizingScenario(const Project& project, const std::string& kind, const std::string& component);
 
 /// Forwards rows to `next` with the derived columns appended. A derived column whose source is
