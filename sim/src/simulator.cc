@@ -13,6 +13,7 @@
 
 #include "highlift/core/error.h"
 #include "sundials_compat.h"
+#include "fast_kernels.h"
 #include "system.h"
 
 namespace highlift::sim {
@@ -465,6 +466,7 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
 
   cv.y = N_VNew_Serial(n, cv.ctx);
   if (!check_ptr(cv.y, "N_VNew_Serial")) return finish();
+  detail::InstallFastVectorOps(cv.y);  // CVODE's vectors are clones of it (fast_kernels.h)
   std::copy(y0.begin(), y0.end(), N_VGetArrayPointer(cv.y));
   cv.mem = CVodeCreate(CV_BDF, cv.ctx);
   if (!check_ptr(cv.mem, "CVodeCreate")) return finish();
@@ -505,6 +507,7 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
     data.jacobian = &colored;
     cv.A = SUNSparseMatrix(n, n, static_cast<sunindextype>(colored.rows.size()), CSC_MAT, cv.ctx);
     if (!check_ptr(cv.A, "SUNSparseMatrix")) return finish();
+    detail::InstallFastSparseOps(cv.A);
     cv.ls = SUNLinSol_KLU(cv.y, cv.A, cv.ctx);
     if (!check_ptr(cv.ls, "SUNLinSol_KLU")) return finish();
     report.statistics.linear_solver = "sparse(KLU, " + std::to_string(colored.rows.size()) + " entries, " +

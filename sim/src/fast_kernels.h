@@ -1,0 +1,26 @@
+// Internal: our own implementations of the serial N_Vector operations and of the sparse
+// SUNMatrix operations CVODE calls at every step, installed into the operation tables of the
+// vectors and matrices the simulator creates.
+//
+// Why: Debian's SUNDIALS 6.4 packages are built without optimisation (the vector kernels keep
+// every loop variable on the stack, nothing is vectorised). On the drive-system models a third
+// of the run time went into N_VLinearSum, N_VWSqrSumLocal and the sparse matrix copy, zero and
+// scale-add. These kernels have the same semantics as nvector_serial.c and sunmatrix_sparse.c
+// of SUNDIALS 6.4 (operation by operation, including the special values of N_VMinQuotient and
+// N_VInvTest); they are compiled with the project's optimisation. Clones inherit the tables, so
+// every vector CVODE clones from the state vector uses them.
+#pragma once
+
+#include "sundials_compat.h"
+
+namespace highlift::sim::detail {
+
+/// Replaces the operations of a serial vector (N_VNew_Serial) by ours.
+void InstallFastVectorOps(N_Vector v);
+
+/// Replaces zero, copy and scale-add-identity of a compressed-sparse-column matrix whose
+/// pattern holds every diagonal entry (the simulator's Jacobian pattern does); the other
+/// operations stay SUNDIALS'.
+void InstallFastSparseOps(SUNMatrix A);
+
+}  // namespace highlift::sim::detail
