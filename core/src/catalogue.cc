@@ -573,8 +573,8 @@ ComponentTypeSpec GearedRotaryActuator() {
   ps.push_back(Efficiency("eta_aiding", "eta_ai", 0.70, 0.60, 0.80, "efficiency with an aiding (back-driving) load",
                           "domain.md s3/s6 (E): 0.70 [0.60, 0.80]"));
   ps.push_back(Param("input_inertia", "J_in", dimensions::Inertia(), "kg*m^2", "inertia of the actuator referred to its input")
-                   .Nominal(5e-4)
-                   .Default(2.5e-4, 1e-3)
+                   .Nominal(1e-3)
+                   .Default(5e-4, 2e-3)
                    .Valid(0, 100)
                    .Source("domain.md s6 (E): input J about 1e-3 kg m2"));
   ps.push_back(Param("load_inertia", "J_load", dimensions::Inertia(), "kg*m^2", "flap inertia reflected to the actuator input")

@@ -55,17 +55,26 @@ void AppendHydraulicTypes(std::vector<ComponentTypeSpec>& types) {
                        oil({Scalar("A", Area(), "m^2", 1e-5, non_negative, "opening area")})));
   types.push_back(Type(
       "ServoValve",
-      "4/3-way closed-centre servo valve: spool T_v*der(x) = limit(u, -1, 1) - x; edges P-A and "
-      "B-T open with x > 0, P-B and A-T with x < 0, each a regularised turbulent orifice "
-      "(HighLift.Hydraulics.ServoValve)",
-      {Signal("u", "spool command, -1 (P to B, A to T) ... 1 (P to A, B to T)"),
+      "4/3-way closed-centre servo valve; spool x by `order`: 0 x = limit(u, -1, 1) (the "
+      "command is the spool position), 1 T_v*der(x) = limit(u, -1, 1) - x, 2 der(x) = v_x, "
+      "der(v_x) = w_v^2*(limit(u, -1, 1) - x) - 2*D_v*w_v*v_x; edges P-A and B-T open with "
+      "x > 0, P-B and A-T with x < 0 (opening limited to full stroke, |x| <= 1), each a "
+      "regularised turbulent orifice (HighLift.Hydraulics.ServoValve)",
+      {Signal("u", "spool command (order 0: the spool position), -1 (P to B, A to T) ... 1 (P to A, B to T)"),
        Hydraulic("port_P", "supply"), Hydraulic("port_T", "return"),
        Hydraulic("port_A", "consumer port A"), Hydraulic("port_B", "consumer port B")},
       oil({Scalar("A_max", Area(), "m^2", 2e-6, non_negative,
                   "opening area of a metering edge at full spool stroke"),
            Scalar("leakage", Dimensionless(), "1", 1e-4, non_negative,
                   "leakage opening of a closed edge, as a fraction of A_max"),
-           Scalar("T_v", Time(), "s", 0.005, positive, "time constant of the spool")})));
+           Integer("order", 1, {0, 2},
+                   "spool dynamics: 0 = the command u is the spool position, 1 = first order "
+                   "(T_v), 2 = second order (w_v, D_v)"),
+           Scalar("T_v", Time(), "s", 0.005, positive, "time constant of the spool (order 1)"),
+           Scalar("w_v", AngularVelocity(), "rad/s", 280.0, positive,
+                  "natural frequency of the spool (order 2); the default gives the low-frequency "
+                  "lag 2*D_v/w_v = 5 ms of the first-order default T_v"),
+           Scalar("D_v", Dimensionless(), "1", 0.7, non_negative, "damping ratio of the spool (order 2)")})));
   types.push_back(Type(
       "DifferentialCylinder",
       "single-rod cylinder, grounded housing, compressible chambers: der(p_A) = E/(V0_A + A_A*s)*"

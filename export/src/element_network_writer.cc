@@ -33,6 +33,9 @@ const std::map<std::string, std::string>& ClassOfElementType() {
       m[c] = std::string("Modelica.Blocks.Sources.") + c;
     for (const char* c : {"Product", "Feedback", "Gain", "Add"})
       m[c] = std::string("Modelica.Blocks.Math.") + c;
+    // k and y_start are parameters of the MSL class; its default initType InitialState gives
+    // y = y_start at the start, as the simulator's Integrator.
+    m["Integrator"] = "Modelica.Blocks.Continuous.Integrator";
     for (const char* c : {"ShaftBrake", "NonlinearSpring", "TorqueLimiter", "LossyInertia",
                           "StribeckFriction", "GeneralRotationalElement", "GearedRotaryActuator",
                           "BranchGearbox", "WingTipBrake", "Disconnector", "Jam"})
@@ -49,6 +52,14 @@ const std::map<std::string, std::string>& ClassOfElementType() {
     return m;
   }();
   return classes;
+}
+
+/// True when the MSL class declares `name` itself (Integrator.y_start is a parameter, not the
+/// start value of a variable y_start).
+bool HasModifier(const std::string& cls, const std::string& name) {
+  if (cls.rfind("Modelica.", 0) != 0) return false;
+  const auto known = MslModifiers(cls);
+  return std::find(known.begin(), known.end(), name) != known.end();
 }
 
 std::string FormatInteger(double value) { return std::to_string(static_cast<long long>(value)); }
@@ -116,7 +127,8 @@ ModelOutput WriteElementNetwork(const Project& project, const std::string& model
           inst.modifiers.push_back({p.name, v != 0.0 ? "true" : "false", {}});
         } else if (p.kind == ParameterKind::kInteger) {
           inst.modifiers.push_back({p.name, FormatInteger(v), {}});
-        } else if (p.name.size() > 6 && p.name.substr(p.name.size() - 6) == "_start") {
+        } else if (p.name.size() > 6 && p.name.substr(p.name.size() - 6) == "_start" &&
+                   !HasModifier(cls->second, p.name)) {
           // Initial values: MSL start values with fixed=true; a speed the class has no
           // variable for (Spring: w_rel) becomes an initial equation on the derivative.
           const std::string variable = p.name.substr(0, p.name.size() - 6);

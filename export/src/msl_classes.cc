@@ -163,7 +163,9 @@ const Entry kEntries[] = {
     {"Modelica.Blocks.Math.Add", "block", "k1 k2 u1 u2 y", "u1:ri u2:ri y:ro"},
     {"Modelica.Blocks.Math.BooleanToReal", "block", "realTrue realFalse u y", "u:bi y:ro"},
     {"Modelica.Blocks.Nonlinear.Limiter", "block", "uMax uMin strict homotopyType u y", "u:ri y:ro"},
-    {"Modelica.Blocks.Continuous.Integrator", "block", "k initType y_start u y", "u:ri y:ro"},
+    // use_reset/use_set and their conditional connectors reset, set: MSL 4.0.0 (since 3.2.3).
+    {"Modelica.Blocks.Continuous.Integrator", "block", "k use_reset use_set initType y_start u y",
+     "u:ri y:ro reset:bi set:ri"},
     {"Modelica.Blocks.Continuous.FirstOrder", "block", "k T initType y_start u y", "u:ri y:ro"},
     {"Modelica.Blocks.Types.Smoothness", "enum", "", ""},
     {"Modelica.Blocks.Types.Smoothness.LinearSegments", "constant", "", ""},
@@ -198,9 +200,9 @@ const Entry kEntries[] = {
 
 // Modelica.Units.SI types we use (all take the type attributes as modifiers).
 const char* const kSiTypes[] = {
-    "AbsolutePressure", "Angle", "AngularAcceleration", "AngularVelocity", "Area", "BulkModulus",
-    "Density", "Diameter", "Distance", "Efficiency", "Energy", "Force", "Frequency", "Inertia",
-    "Length", "Mass", "ModulusOfElasticity", "Position", "Power", "Pressure",
+    "AbsolutePressure", "Angle", "AngularAcceleration", "AngularFrequency", "AngularVelocity",
+    "Area", "BulkModulus", "Density", "Diameter", "Distance", "Efficiency", "Energy", "Force",
+    "Frequency", "Inertia", "Length", "Mass", "ModulusOfElasticity", "Position", "Power", "Pressure",
     "RotationalDampingConstant", "RotationalSpringConstant", "ShearModulus", "Temperature", "Time",
     "Torque", "TranslationalDampingConstant", "Velocity", "Volume", "VolumeFlowRate",
 };

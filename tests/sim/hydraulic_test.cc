@@ -4,10 +4,14 @@
 // messages for bad parameters and ill-posed hydraulic nodes.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 #include "highlift/core/error.h"
+#include "highlift/core/project_io.h"
+#include "highlift/sim/drive_network.h"
 #include "highlift/sim/simulator.h"
 #include "hydraulic_pdu.h"
 
@@ -133,6 +137,36 @@ TEST(DifferentialCylinder, StiffnessFromBulkModulus) {
   EXPECT_NEAR(r.Last("cyl.f"), -2000.0, 1e-3);  // the cylinder holds the load
 }
 
+// A mass on the closed chambers of an undamped cylinder oscillates at w_n = sqrt(k/m) with the
+// hydraulic stiffness k = E*(A_A^2/V_A + A_B^2/V_B): 1690 rad/s (269 Hz) for 10 kg on the
+// default cylinder at mid-stroke. The 1-bar start pushes with p0*(A_A - A_B) = 50 N, a 1.8 um
+// oscillation about the equilibrium, where the chamber laws are linear within 1e-6.
+TEST(DifferentialCylinder, MassOscillatesAtTheHydraulicNaturalFrequency) {
+  Network net;
+  net.AddElement("DifferentialCylinder", "cyl", P({{"s_start", 0.05}, {"d", 0.0}}));
+  net.AddElement("Mass", "rod", P({{"m", 10.0}}));
+  net.Connect("cyl.flange", "rod.flange_a");
+  const RunResult r = Simulate(net, 0.04, 2e-6, false, 1e-9);
+  ASSERT_TRUE(r.report.ok()) << r.report.FullReport();
+  const double E = 1.2e9, A_A = 1e-3, A_B = 5e-4, V0 = 1e-5;
+  const double V_A = V0 + A_A * 0.05, V_B = V0 + A_B * 0.05;
+  const double k = E * (A_A * A_A / V_A + A_B * A_B / V_B);
+  const double w_n = std::sqrt(k / 10.0);
+  // Downward zero crossings of the velocity, interpolated between output rows.
+  const auto v = r.Col("cyl.v");
+  const auto& t = r.sink.times();
+  std::vector<double> crossings;
+  for (std::size_t i = 1; i < t.size(); ++i)
+    if (v[i - 1] > 0 && v[i] <= 0) crossings.push_back(t[i - 1] + (t[i] - t[i - 1]) * v[i - 1] / (v[i - 1] - v[i]));
+  ASSERT_GE(crossings.size(), 8u);
+  const double period = (crossings.back() - crossings.front()) / (crossings.size() - 1);
+  EXPECT_NEAR(2 * std::numbers::pi / period, w_n, 1e-4 * w_n);
+  // Amplitude of the velocity: w_n * (50 N / k), undamped.
+  double v_max = 0;
+  for (double x : v) v_max = std::max(v_max, std::abs(x));
+  EXPECT_NEAR(v_max, w_n * 1e5 * (A_A - A_B) / k, 1e-3 * v_max);
+}
+
 // A motor at displacement eps fed through an orifice, driving a damped inertia: in the steady
 // state w = (V_flow - G_leak*dp)/(eps*D_max) and eta_m*eps*D_max*dp = d*w.
 TEST(VariableDisplacementMotor, SpeedFromDisplacementAndFlow) {
@@ -158,9 +192,165 @@ TEST(VariableDisplacementMotor, SpeedFromDisplacementAndFlow) {
   ASSERT_TRUE(r.report.ok()) << r.report.FullReport();
   const double q = r.Last("line.V_flow"), dp = r.Last("motor.dp"), w = r.Last("rotor.w");
   EXPECT_GT(w, 100.0);
+  // The steady state solved on its own: with the inlet pressure p, dp = p - p_r, the motor
+  // speed w = eta_m*eps*D_max*dp/d (torque balance), and the line delivers what the motor takes:
+  // Cd*A*sqrt(2*(p_s - p)/rho) = eps*D_max*w + G_leak*dp (regularisation: relative 1e-8 here).
+  const double p_s = 200e5, p_r = 5e5, k_line = 0.7 * 2e-6 * std::sqrt(2 / 850.0);
+  auto speed = [&](double p) { return 0.95 * 0.5 * 1e-6 * (p - p_r) / 0.01; };
+  auto excess = [&](double p) { return k_line * std::sqrt(p_s - p) - 0.5 * 1e-6 * speed(p) - 1e-12 * (p - p_r); };
+  double lo = p_r, hi = p_s;
+  for (int i = 0; i < 200; ++i) (excess(0.5 * (lo + hi)) > 0 ? lo : hi) = 0.5 * (lo + hi);
+  const double w_analytic = speed(0.5 * (lo + hi));
+  EXPECT_NEAR(w, w_analytic, 1e-5 * w_analytic);
   EXPECT_NEAR(w, (q - 1e-12 * dp) / (0.5 * 1e-6), 1e-5 * w);
   EXPECT_NEAR(0.95 * 0.5 * 1e-6 * dp, 0.01 * w, 1e-5 * 0.01 * w);
   EXPECT_NEAR(r.Last("motor.tau"), 0.01 * w, 1e-5 * 0.01 * w);
+}
+
+// A servo valve with every port on a fixed pressure (P 200 bar, T 5 bar, A 100 bar, B 50 bar):
+// each edge carries the turbulent flow of its opening, V = Cd*A_max*(max(+-x, 0) + leakage)*
+// sqrt(2*dp/rho) (the regularisation changes it by a relative (dp_small/dp)^2/4 < 2e-6).
+Network ValveOnFixedPressures(const Scalars& valve, const std::string& command, const Scalars& command_parameters) {
+  Network net;
+  net.AddElement("PressureSource", "supply", P({{"p_supply", 200e5}}));
+  net.AddElement("Tank", "tank", P({{"p_return", 5e5}}));
+  net.AddElement("PressureSource", "load_a", P({{"p_supply", 100e5}}));
+  net.AddElement("PressureSource", "load_b", P({{"p_supply", 50e5}}));
+  net.AddElement("ServoValve", "valve", P(valve));
+  net.AddElement(command, "command", P(command_parameters));
+  net.Connect("supply.port", "valve.port_P");
+  net.Connect("valve.port_T", "tank.port");
+  net.Connect("valve.port_A", "load_a.port");
+  net.Connect("valve.port_B", "load_b.port");
+  net.Connect("command.y", "valve.u");
+  // A state for the integrator when the valve has none (order 0).
+  net.AddElement("Integrator", "clock", P({}));
+  net.AddElement("Constant", "one", P({{"k", 1.0}}));
+  net.Connect("one.y", "clock.u");
+  return net;
+}
+
+struct EdgeFlows {
+  double PA, PB, AT, BT;
+};
+
+/// The four edge flows of ValveOnFixedPressures at spool position x (A_max 2e-6 m^2).
+EdgeFlows ExpectedEdgeFlows(double x, double leakage) {
+  const double k = 0.7 * 2e-6 * std::sqrt(2 / 850.0);
+  const double open_pos = std::max(std::min(x, 1.0), 0.0) + leakage;
+  const double open_neg = std::max(std::min(-x, 1.0), 0.0) + leakage;
+  return {k * open_pos * std::sqrt(100e5), k * open_neg * std::sqrt(150e5), k * open_neg * std::sqrt(95e5),
+          k * open_pos * std::sqrt(45e5)};
+}
+
+void ExpectEdgeFlows(const RunResult& r, std::size_t row, double x, double leakage) {
+  const EdgeFlows f = ExpectedEdgeFlows(x, leakage);
+  const double scale = 1e-5 * ExpectedEdgeFlows(1.0, 0.0).PA;
+  const double t = r.sink.times()[row];
+  EXPECT_NEAR(r.Col("valve.V_PA")[row], f.PA, scale) << "t = " << t;
+  EXPECT_NEAR(r.Col("valve.V_PB")[row], f.PB, scale) << "t = " << t;
+  EXPECT_NEAR(r.Col("valve.V_AT")[row], f.AT, scale) << "t = " << t;
+  EXPECT_NEAR(r.Col("valve.V_BT")[row], f.BT, scale) << "t = " << t;
+}
+
+// order 0: the command is the spool position, limited to +-1 (full stroke). A ramp of the
+// command from -1.5 to 1.5 passes through both end stops, both flow directions and the centre.
+TEST(ServoValve, SpoolPositionAsInputGivesTheTurbulentEdgeFlows) {
+  const RunResult r = Simulate(
+      ValveOnFixedPressures({{"order", 0}, {"leakage", 1e-3}}, "Ramp",
+                            {{"height", 3.0}, {"duration", 1.0}, {"offset", -1.5}, {"startTime", 0.0}}),
+      1.0, 0.05);
+  ASSERT_TRUE(r.report.ok()) << r.report.FullReport();
+  const auto& t = r.sink.times();
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    const double x = std::max(-1.0, std::min(1.0, -1.5 + 3.0 * t[i]));
+    EXPECT_NEAR(r.Col("valve.x")[i], x, 1e-12) << "t = " << t[i];
+    EXPECT_EQ(r.Col("valve.v_x")[i], 0.0);
+    ExpectEdgeFlows(r, i, x, 1e-3);
+  }
+}
+
+// order 1: after a command step 0 -> 0.8 at t0 the spool follows x = 0.8*(1 - exp(-(t - t0)/T_v)).
+TEST(ServoValve, FirstOrderSpoolFollowsTheExponential) {
+  const double T_v = 0.004, t0 = 0.01;
+  const RunResult r = Simulate(ValveOnFixedPressures({{"order", 1}, {"T_v", T_v}, {"leakage", 0.0}}, "Step",
+                                                     {{"height", 0.8}, {"startTime", t0}}),
+                               0.04, 1e-4, false, 1e-9);
+  ASSERT_TRUE(r.report.ok()) << r.report.FullReport();
+  const auto& t = r.sink.times();
+  int checked = 0;
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    const double x = t[i] <= t0 ? 0.0 : 0.8 * (1 - std::exp(-(t[i] - t0) / T_v));
+    EXPECT_NEAR(r.Col("valve.x")[i], x, 1e-6) << "t = " << t[i];
+    if (t[i] > t0) {
+      EXPECT_NEAR(r.Col("valve.v_x")[i], (0.8 - x) / T_v, 1e-6 / T_v) << "t = " << t[i];
+    }
+    ExpectEdgeFlows(r, i, r.Col("valve.x")[i], 0.0);
+    checked += t[i] > t0;
+  }
+  EXPECT_GT(checked, 100);
+  EXPECT_NEAR(r.At("valve.x", t0 + T_v), 0.8 * (1 - std::exp(-1.0)), 1e-6);  // 63 % after T_v
+}
+
+// order 2: after a command step 0 -> 0.9 at t0 the spool is the damped oscillator
+//   x = 0.9*(1 - exp(-D_v*w_v*s)*(cos(w_d*s) + D_v/sqrt(1 - D_v^2)*sin(w_d*s))),  s = t - t0,
+// w_d = w_v*sqrt(1 - D_v^2). With D_v = 0.3 it overshoots full stroke (peak 0.9*(1 + 0.372) at
+// s = pi/w_d); the edges then open no further than A_max.
+TEST(ServoValve, SecondOrderSpoolIsTheDampedOscillatorAndOpensAtMostFully) {
+  const double w_v = 280.0, D_v = 0.3, t0 = 0.01;
+  const RunResult r =
+      Simulate(ValveOnFixedPressures({{"order", 2}, {"w_v", w_v}, {"D_v", D_v}, {"leakage", 0.0}}, "Step",
+                                     {{"height", 0.9}, {"startTime", t0}}),
+               0.06, 5e-5, false, 1e-9);
+  ASSERT_TRUE(r.report.ok()) << r.report.FullReport();
+  const double root = std::sqrt(1 - D_v * D_v), w_d = w_v * root;
+  auto x_of = [&](double t) {
+    if (t <= t0) return 0.0;
+    const double s = t - t0;
+    return 0.9 * (1 - std::exp(-D_v * w_v * s) * (std::cos(w_d * s) + D_v / root * std::sin(w_d * s)));
+  };
+  auto v_of = [&](double t) {
+    if (t <= t0) return 0.0;
+    const double s = t - t0;
+    return 0.9 * w_v / root * std::exp(-D_v * w_v * s) * std::sin(w_d * s);
+  };
+  const auto& t = r.sink.times();
+  double x_max = 0;
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    EXPECT_NEAR(r.Col("valve.x")[i], x_of(t[i]), 1e-6) << "t = " << t[i];
+    EXPECT_NEAR(r.Col("valve.v_x")[i], v_of(t[i]), 1e-6 * w_v) << "t = " << t[i];
+    ExpectEdgeFlows(r, i, r.Col("valve.x")[i], 0.0);
+    x_max = std::max(x_max, r.Col("valve.x")[i]);
+  }
+  const double peak = 0.9 * (1 + std::exp(-std::numbers::pi * D_v / root));
+  EXPECT_NEAR(x_max, peak, 1e-3);  // the output row nearest the peak time
+  EXPECT_GT(x_max, 1.2);
+  const std::size_t at_peak = std::min_element(t.begin(), t.end(), [&](double a, double b) {
+                                return std::abs(a - t0 - std::numbers::pi / w_d) < std::abs(b - t0 - std::numbers::pi / w_d);
+                              }) - t.begin();
+  EXPECT_NEAR(r.Col("valve.V_PA")[at_peak], ExpectedEdgeFlows(1.0, 0.0).PA, 1e-5 * ExpectedEdgeFlows(1.0, 0.0).PA);
+}
+
+TEST(ServoValve, BadSpoolSettingsAreRejectedWithMessages) {
+  auto message_of = [](const Scalars& valve) {
+    return ErrorOf([&] {
+      Network net = ValveOnFixedPressures(valve, "Constant", {{"k", 0.0}});
+      Simulator sim(net);
+    });
+  };
+  const std::string half = message_of({{"order", 1.5}});
+  EXPECT_NE(half.find("element 'valve' (ServoValve): parameter 'order' = 1.5 is not a spool model"), std::string::npos)
+      << half;
+  EXPECT_NE(half.find("use 0 (the command u is the spool position), 1 (first-order spool, T_v) or 2"),
+            std::string::npos)
+      << half;
+  const std::string three = message_of({{"order", 3}});
+  EXPECT_NE(three.find("element 'valve' (ServoValve): parameter 'order' = 3"), std::string::npos) << three;
+  EXPECT_NE(three.find("outside its valid range"), std::string::npos) << three;
+  const std::string frequency = message_of({{"order", 2}, {"w_v", 0.0}});
+  EXPECT_NE(frequency.find("parameter 'w_v' = 0"), std::string::npos) << frequency;
+  const std::string damping = message_of({{"order", 2}, {"D_v", -0.1}});
+  EXPECT_NE(damping.find("parameter 'D_v' = -0.1"), std::string::npos) << damping;
 }
 
 // Energy balance of a valve-controlled motor drive (servo valve opening, motor accelerating a
@@ -314,9 +504,10 @@ Component HydraulicPduComponent() {
   return pdu;
 }
 
-Network PduRig(const Component& pdu, double w_step, double t_step) {
+Network PduRig(const Component& pdu, double w_step, double t_step,
+               std::optional<double> motor_lost_time = std::nullopt) {
   Network net;
-  const detail::PduPorts ports = detail::AddHydraulicPdu(net, pdu);
+  const detail::PduPorts ports = detail::AddHydraulicPdu(net, pdu, motor_lost_time);
   net.AddElement("Step", "command", P({{"height", w_step}, {"startTime", t_step}}));
   net.Connect("command.y", ports.w_ref);
   net.AddElement("Fixed", "ground");
@@ -363,9 +554,8 @@ TEST(HydraulicPdu, FollowsSpeedStepWithinStatedTime) {
 // One motor lost: its displacement goes to 0 and its pressure-off brake holds it; the remaining
 // motor keeps its speed, so the differential delivers half the output speed at the same torque.
 TEST(HydraulicPdu, OneMotorLostGivesHalfSpeed) {
-  Component pdu = HydraulicPduComponent();
-  pdu.parameters["motor_lost_time"].nominal = 0.8;
-  const RunResult r = Simulate(PduRig(pdu, 25.3, 0.05), 1.6, 1e-3, false, 1e-6);
+  const Component pdu = HydraulicPduComponent();
+  const RunResult r = Simulate(PduRig(pdu, 25.3, 0.05, 0.8), 1.6, 1e-3, false, 1e-6);
   ASSERT_TRUE(r.report.ok()) << r.report.FullReport();
   EXPECT_NEAR(r.At("pdu.w", 0.75), 25.3, 0.01 * 25.3);
   EXPECT_NEAR(r.Last("pdu.w"), 25.3 / 2, 0.02 * 25.3 / 2);
@@ -383,10 +573,10 @@ TEST(HydraulicPdu, FullTorqueWithOneMotor) {
   // displacement holds the same output torque as two motors (the differential halves speed,
   // not torque).
   auto stall_torque = [](bool lost) {
-    Component pdu = HydraulicPduComponent();
-    if (lost) pdu.parameters["motor_lost_time"].nominal = 0.0;
+    const Component pdu = HydraulicPduComponent();
     Network net;
-    const detail::PduPorts ports = detail::AddHydraulicPdu(net, pdu);
+    const detail::PduPorts ports =
+        detail::AddHydraulicPdu(net, pdu, lost ? std::optional<double>(0.0) : std::nullopt);
     net.AddElement("Constant", "command", P({{"k", 25.3}}));
     net.Connect("command.y", ports.w_ref);
     net.AddElement("Fixed", "ground");
@@ -400,6 +590,37 @@ TEST(HydraulicPdu, FullTorqueWithOneMotor) {
   const double both = stall_torque(false), one = stall_torque(true);
   EXPECT_NEAR(both, 1000.0, 50.0);  // sized from stall_torque = 1000 N*m
   EXPECT_NEAR(one, both, 0.02 * both);
+}
+
+// The drive network of a drive-system project hands a scenario's `motor_lost_time` to the
+// hydraulic PDU (as to the speed-controlled one): the last motor's `active` steps to 0 and its
+// pressure-off brake is applied at that time; without the value every motor runs throughout.
+TEST(HydraulicPdu, DriveNetworkTakesMotorLostTimeFromTheScenario) {
+  const Project project = LoadProject(std::string(HIGHLIFT_SOURCE_DIR) + "/examples/hydraulic_pdu_flaps.json");
+  const Scenario* extension = project.FindScenario("extension");
+  ASSERT_NE(extension, nullptr);
+  Scenario lost = *extension;
+  lost.name = "one_motor_lost";
+  lost.values["motor_lost_time"] = 2.5;
+  DriveNetworkOptions options;
+  options.resolution = DriveResolution::kReduced;
+  const DriveModel with = BuildDriveNetwork(project, &lost, options);
+  const NetworkElement* step = with.network.Find("pdu.motor_lost");
+  ASSERT_NE(step, nullptr);
+  EXPECT_EQ(step->type, "Step");
+  EXPECT_EQ(step->parameters.scalars.at("startTime"), 2.5);
+  EXPECT_EQ(step->parameters.scalars.at("height"), -1.0);
+  const NetworkElement* brake_command = with.network.Find("pdu.pob_command");
+  ASSERT_NE(brake_command, nullptr);
+  EXPECT_EQ(brake_command->parameters.scalars.at("startTime"), 2.5);
+  ASSERT_NE(with.network.Find("pdu.pob2"), nullptr);
+  EXPECT_EQ(with.network.Find("pdu.pob1"), nullptr);  // the last motor only
+  EXPECT_EQ(with.component_of.at("pdu.motor_lost"), "pdu");
+
+  const DriveModel without = BuildDriveNetwork(project, extension, options);
+  EXPECT_EQ(without.network.Find("pdu.motor_lost"), nullptr);
+  EXPECT_EQ(without.network.Find("pdu.pob2"), nullptr);
+  ASSERT_NE(without.network.Find("pdu.valve2"), nullptr);
 }
 
 TEST(HydraulicPdu, BadSettingsAreRejected) {
@@ -418,6 +639,10 @@ TEST(HydraulicPdu, BadSettingsAreRejected) {
   pdu.parameters["motor_count"].nominal = 3;
   Network net3;
   EXPECT_NE(ErrorOf([&] { detail::AddHydraulicPdu(net3, pdu); }).find("'motor_count' = 3"),
+            std::string::npos);
+  Network net4;
+  EXPECT_NE(ErrorOf([&] { detail::AddHydraulicPdu(net4, HydraulicPduComponent(), NAN); })
+                .find("component 'pdu' (pdu): scenario value 'motor_lost_time' is not a finite time"),
             std::string::npos);
 }
 
