@@ -245,7 +245,10 @@ void Builder::EmitPdu(const Component& c) {
     std::optional<double> motor_lost_time;  // the scenario value, as t_motor_lost below
     if (scenario_)
       if (auto it = scenario_->values.find("motor_lost_time"); it != scenario_->values.end()) motor_lost_time = it->second;
-    pdu_ports_ = detail::AddHydraulicPdu(model_.network, c, motor_lost_time);
+    // A shutdown input when the wing-tip brakes will be commanded (EmitMonitoring).
+    bool wing_tip_brakes = false;
+    for (const auto& component : project_.components) wing_tip_brakes = wing_tip_brakes || component.type == "wing_tip_brake";
+    pdu_ports_ = detail::AddHydraulicPdu(model_.network, c, motor_lost_time, wing_tip_brakes);
     for (const auto& e : model_.network.elements())
       if (!model_.component_of.count(e.id)) model_.component_of[e.id] = c.id;
   } else {
@@ -263,7 +266,8 @@ void Builder::EmitPdu(const Component& c) {
         s["t_motor_lost"] = it->second;
     }
     Add("PDU", c.id, s, c.id);
-    pdu_ports_ = {c.id + ".flange_left", c.id + ".flange_right", c.id + ".w_ref", c.id + ".phi", c.id + ".w"};
+    pdu_ports_ = {c.id + ".flange_left", c.id + ".flange_right", c.id + ".w_ref", c.id + ".phi", c.id + ".w",
+                  c.id + ".stop"};
   }
   Map(c, "left", pdu_ports_.flange_left);
   Map(c, "right", pdu_ports_.flange_right);
@@ -794,8 +798,9 @@ void Builder::EmitMonitoring() {
 // The command that applies the wing-tip brakes also shuts the PDU down (its pressure-off
 // brakes), as the flight control computer does: the healthy side is not driven into its brake.
 void Builder::ConnectShutdown(const std::string& command) {
-  if (!pdu_ || detail::IsHydraulicPdu(*pdu_)) return;
-  Connect(command, pdu_->id + ".stop");
+  if (!pdu_) return;
+  if (!detail::IsHydraulicPdu(*pdu_)) Connect(command, pdu_->id + ".stop");
+  else if (!pdu_ports_.stop.empty()) Connect(command, pdu_ports_.stop);
 }
 
 void Builder::CheckScenario() {

@@ -53,7 +53,8 @@ bool IsHydraulicPdu(const Component& pdu) {
                    "\" is not a drive kind; use \"speed_controlled\" or \"hydraulic\"");
 }
 
-PduPorts AddHydraulicPdu(Network& net, const Component& pdu, std::optional<double> motor_lost_time) {
+PduPorts AddHydraulicPdu(Network& net, const Component& pdu, std::optional<double> motor_lost_time,
+                         bool with_stop) {
   const std::string& id = pdu.id;
   auto part = [&](const std::string& name) { return id + "." + name; };
   auto port = [&](const std::string& name, const std::string& p) { return id + "." + name + "." + p; };
@@ -115,6 +116,18 @@ PduPorts AddHydraulicPdu(Network& net, const Component& pdu, std::optional<doubl
     throw InputError(Where(pdu) + ": scenario value 'motor_lost_time' is not a finite time; give "
                      "the time in s at which the last motor is lost, or leave it out");
   const bool motor_lost = motor_lost_time.has_value();
+  // Operation of each motor: "active" 1 while it runs; its pressure-off brake is commanded
+  // 1 - active. The shutdown input (stop, > 0.5 from the monitor's wing-tip brake command)
+  // takes every motor out of operation; the lost motor also stops at motor_lost_time.
+  std::string running;  // 1 - stop, when the PDU has a shutdown input
+  if (with_stop || motor_lost) add("Constant", part("one"), scalars({{"k", 1.0}}));
+  if (with_stop) {
+    add("Gain", part("stop"), scalars({{"k", 1.0}}));
+    add("Add", part("running"), scalars({{"k1", 1.0}, {"k2", -1.0}}));
+    net.Connect(port("one", "y"), port("running", "u1"));
+    net.Connect(port("stop", "y"), port("running", "u2"));
+    running = port("running", "y");
+  }
   for (int k = 1; k <= n_m; ++k) {
     const std::string n = std::to_string(k);
     add("ServoValve", part("valve" + n),
@@ -152,16 +165,30 @@ PduPorts AddHydraulicPdu(Network& net, const Component& pdu, std::optional<doubl
     net.Connect(port("motor" + n, "port_B"), port("tank", "port"));
     net.Connect(port("motor" + n, "flange"), port("rotor" + n, "flange_a"));
 
-    if (motor_lost && k == n_m) {
-      const double t_lost = *motor_lost_time;
-      add("Step", part("motor_lost"), scalars({{"height", -1.0}, {"offset", 1.0}, {"startTime", t_lost}}));
-      add("Step", part("pob_command"), scalars({{"height", 1.0}, {"offset", 0.0}, {"startTime", t_lost}}));
+    const bool lost = motor_lost && k == n_m;
+    std::string active;  // the signal "motor k in operation", or none (always)
+    if (lost) {
+      add("Step", part("motor_lost"), scalars({{"height", -1.0}, {"offset", 1.0}, {"startTime", *motor_lost_time}}));
+      active = port("motor_lost", "y");
+      if (!running.empty()) {
+        add("Product", part("active" + n), {});
+        net.Connect(running, port("active" + n, "u1"));
+        net.Connect(active, port("active" + n, "u2"));
+        active = port("active" + n, "y");
+      }
+    } else {
+      active = running;
+    }
+    if (!active.empty()) {
+      net.Connect(active, port("control" + n, "active"));
+      add("Add", part("pob_command" + n), scalars({{"k1", 1.0}, {"k2", -1.0}}));
+      net.Connect(port("one", "y"), port("pob_command" + n, "u1"));
+      net.Connect(active, port("pob_command" + n, "u2"));
       // Brake: tau = cgeo*mu*fn_max*f_normalized with mu = 0.5: the POB torque at the motor.
       add("Brake", part("pob" + n),
                      {{{"fn_max", 2.0 * Value(pdu, "brake_torque") / ratio}, {"cgeo", 1.0}},
                       {{"mu_pos", {{0.0, 0.5}}}}});
-      net.Connect(port("motor_lost", "y"), port("control" + n, "active"));
-      net.Connect(port("pob_command", "y"), port("pob" + n, "f_normalized"));
+      net.Connect(port("pob_command" + n, "y"), port("pob" + n, "f_normalized"));
       net.Connect(port("rotor" + n, "flange_b"), port("pob" + n, "flange_a"));
     }
   }
@@ -189,6 +216,7 @@ PduPorts AddHydraulicPdu(Network& net, const Component& pdu, std::optional<doubl
   ports.w_ref = port("w_ref", "u");
   ports.phi = port("angle", "phi");
   ports.w = id + ".w";
+  if (with_stop) ports.stop = port("stop", "u");
   return ports;
 }
 

@@ -22,6 +22,7 @@ struct PduPorts {
   std::string w_ref;         ///< signal input: commanded PDU output speed, rad/s
   std::string phi;           ///< signal output: PDU output angle, rad
   std::string w;             ///< signal output: PDU output speed, rad/s
+  std::string stop;          ///< signal input: shutdown command (> 0.5), when requested
 };
 
 /// True when the pdu component asks for the hydraulic drive (text parameter `drive` =
@@ -32,9 +33,11 @@ bool IsHydraulicPdu(const Component& pdu);
 /// Adds the elements of the hydraulic PDU of component `pdu` (ids "<pdu.id>.<part>") to `net`
 /// and returns its ports. `motor_lost_time` (s; a scenario's value `motor_lost_time`): from
 /// then on the last motor is lost (displacement commanded to 0, its pressure-off brake
-/// applied); empty: every motor runs throughout. Throws InputError naming the component and
-/// parameter for invalid parameters.
+/// applied); empty: every motor runs throughout. `with_stop`: the PDU gets the shutdown input
+/// PduPorts::stop (> 0.5, latched by its source, the monitor's wing-tip brake command): every
+/// motor's displacement is commanded to 0 and its pressure-off brake applied. Throws InputError
+/// naming the component and parameter for invalid parameters.
 PduPorts AddHydraulicPdu(Network& net, const Component& pdu,
-                         std::optional<double> motor_lost_time = std::nullopt);
+                         std::optional<double> motor_lost_time = std::nullopt, bool with_stop = false);
 
 }  // namespace highlift::sim::detail

@@ -610,17 +610,57 @@ TEST(HydraulicPdu, DriveNetworkTakesMotorLostTimeFromTheScenario) {
   EXPECT_EQ(step->type, "Step");
   EXPECT_EQ(step->parameters.scalars.at("startTime"), 2.5);
   EXPECT_EQ(step->parameters.scalars.at("height"), -1.0);
-  const NetworkElement* brake_command = with.network.Find("pdu.pob_command");
+  // The lost motor's operation is 1 before the loss (and before a shutdown): a product of the
+  // step and the shutdown's "running"; its pressure-off brake is commanded 1 - active.
+  const NetworkElement* active = with.network.Find("pdu.active2");
+  ASSERT_NE(active, nullptr);
+  EXPECT_EQ(active->type, "Product");
+  const NetworkElement* brake_command = with.network.Find("pdu.pob_command2");
   ASSERT_NE(brake_command, nullptr);
-  EXPECT_EQ(brake_command->parameters.scalars.at("startTime"), 2.5);
+  EXPECT_EQ(brake_command->type, "Add");
   ASSERT_NE(with.network.Find("pdu.pob2"), nullptr);
-  EXPECT_EQ(with.network.Find("pdu.pob1"), nullptr);  // the last motor only
   EXPECT_EQ(with.component_of.at("pdu.motor_lost"), "pdu");
 
   const DriveModel without = BuildDriveNetwork(project, extension, options);
   EXPECT_EQ(without.network.Find("pdu.motor_lost"), nullptr);
-  EXPECT_EQ(without.network.Find("pdu.pob2"), nullptr);
+  EXPECT_EQ(without.network.Find("pdu.active2"), nullptr);
   ASSERT_NE(without.network.Find("pdu.valve2"), nullptr);
+  // The example has wing-tip brakes: the monitor's command shuts the PDU down (both motors'
+  // pressure-off brakes, displacement to 0).
+  ASSERT_NE(without.network.Find("pdu.pob1"), nullptr);
+  ASSERT_NE(without.network.Find("pdu.pob2"), nullptr);
+  bool connected = false;
+  for (const auto& c : without.network.connections())
+    connected = connected || (c.a.ToString() == "monitor.wtb" && c.b.ToString() == "pdu.stop.u") ||
+                (c.b.ToString() == "monitor.wtb" && c.a.ToString() == "pdu.stop.u");
+  EXPECT_TRUE(connected);
+}
+
+// After a rupture the monitor applies the wing-tip brakes and shuts the hydraulic PDU down: its
+// pressure-off brakes stop the healthy side without driving it into its wing-tip brake, and the
+// largest torque on the ruptured side is at its WTB.
+TEST(HydraulicPdu, ShutsDownWithTheWingTipBrakesAfterARupture) {
+  const Project project = LoadProject(std::string(HIGHLIFT_SOURCE_DIR) + "/examples/hydraulic_pdu_flaps.json");
+  const Scenario& scenario = *project.FindScenario("rupture_wtb");
+  DriveNetworkOptions options;
+  const DriveModel model = BuildDriveNetwork(project, &scenario, options);
+  Simulator simulator(model.network);
+  MemorySink sink;
+  DerivedColumnSink derived(model.derived, sink);
+  const SimulationReport report = simulator.Run(model.Options(project), derived);
+  ASSERT_TRUE(report.ok()) << report.FullReport();
+  double wtb = 0, stl_right = 0, shaft_l6 = 0;
+  for (const auto& p : ComponentPeakTorques(model, project, report)) {
+    if (p.element == "wtb_left") wtb = std::abs(p.tau);
+    if (p.element == "stl_right") stl_right = std::abs(p.tau);
+    if (p.element == "shaft_l6") shaft_l6 = std::abs(p.tau);
+  }
+  EXPECT_GT(wtb, 200.0);
+  EXPECT_GT(wtb, shaft_l6);
+  EXPECT_LT(stl_right, 470.0) << "the healthy side is not driven into its brake";
+  const int w = sink.Column("pdu.w");
+  ASSERT_GE(w, 0);
+  EXPECT_LT(std::abs(sink.rows().back()[w]), 1e-3) << "held by the pressure-off brakes";
 }
 
 TEST(HydraulicPdu, BadSettingsAreRejected) {
