@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs what is missing, builds highlift and runs the main job on the bundled A380-class
 # flap transmission (both wings; the embedded component database is the default):
-#   validate -> info -> estimate -> check -> size -> modes -> peak -> export (Modelica).
+#   validate -> info -> estimate -> check -> size -> modes -> peak (single-DOF and transient)
+#   -> simulate (the rupture with wing-tip brakes, full resolution) -> export (Modelica).
 # Exit code 1 of an analysis means it found violated requirements or negative margins: the demo
 # reports it and goes on. Anything else (invalid input, a crash) stops the demo with that code.
 # Usage: scripts/demo.sh [PROJECT.json]      (from anywhere; default the A380-class example)
@@ -37,7 +38,11 @@ run estimate "$example"
 run check "$example"
 run size "$example"
 run modes "$example"
-run peak "$example" --no-intervals
+run peak "$example" --no-intervals --transient
+if grep -q '"rupture_wtb"' "$example"; then
+  run simulate "$example" --scenario rupture_wtb --energy --output build/demo-rupture_wtb.csv \
+    --signals pdu.w,appu_left.w,appu_right.w,wtb_left.tau,shaft_l7.tau,stl_left.tau,monitor.wtb
+fi
 run export "$example" --modelica build/demo-modelica --model reduced --scenario rupture_wtb
 
 echo

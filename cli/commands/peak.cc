@@ -35,6 +35,7 @@ struct TransientPeak {
   std::string name;       ///< the case
   std::string kind;       ///< jam or rupture
   std::string scenario;   ///< scenario simulated (the project's or made up)
+  std::string load_case;  ///< its load case
   double single_dof = 0;  ///< N*m at the shaft (reference) speed, tau_total nominal
   double transient = 0;   ///< N*m at the shaft speed, largest on the load path
   std::string at;         ///< component carrying it
@@ -52,6 +53,7 @@ TransientPeak RunCase(const Project& project, const reduced_models::PeakCase& pc
   t.single_dof = pc.tau_total.nominal;
   const Scenario scenario = sim::SizingScenario(project, pc.kind, pc.component);
   t.scenario = scenario.name;
+  t.load_case = scenario.load_case;
   sim::DriveNetworkOptions options;
   options.shaft_elements = elements;
   const sim::DriveModel model = sim::BuildDriveNetwork(project, &scenario, options);
@@ -118,7 +120,8 @@ class PeakCommand : public Command {
         nlohmann::json cases = nlohmann::json::array();
         for (const auto& t : transient) {
           nlohmann::json c = {{"case", t.name},          {"kind", t.kind},
-                              {"scenario", t.scenario},  {"single_dof", t.single_dof},
+                              {"scenario", t.scenario},  {"load_case", t.load_case},
+                              {"single_dof", t.single_dof},
                               {"transient", t.transient}, {"at", t.at},
                               {"time", t.time},          {"ok", t.ok},
                               {"wall_seconds", t.wall_seconds}};
@@ -133,10 +136,13 @@ class PeakCommand : public Command {
       std::cout << report.FullReport() << "\n";
       if (transient_) {
         std::cout << "Transient peaks (full-resolution simulation) beside the single-DOF estimate, N*m at the "
-                     "shaft speed:\n";
-        TextTable table({"case", "single-DOF", "transient", "ratio", "at", "t [s]", "status"}, {1, 2, 3, 5});
+                     "shaft speed\n(jams while extending, ruptures while retracting with the airload aiding the motion,\nfailure at "
+                     "1 s, as the single-DOF estimate assumes):\n";
+        TextTable table({"case", "simulated as (load case)", "single-DOF", "transient", "ratio", "at", "t [s]", "status"},
+                        {2, 3, 4, 6});
         for (const auto& t : transient)
-          table.AddRow({t.name, FormatNumber(t.single_dof, 4), FormatNumber(t.transient, 4),
+          table.AddRow({t.name, t.scenario + (t.load_case.empty() ? "" : " (" + t.load_case + ")"),
+                        FormatNumber(t.single_dof, 4), FormatNumber(t.transient, 4),
                         std::isfinite(t.Ratio()) ? FormatNumber(t.Ratio(), 3) : "-", t.at.empty() ? "-" : t.at,
                         FormatNumber(t.time, 4), t.ok ? "ok" : "failed: " + t.message});
         std::cout << table.ToString() << "\n";

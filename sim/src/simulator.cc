@@ -1,6 +1,7 @@
-// The CVODE driver: BDF with Newton iterations, dense or banded direct linear solver with a
-// difference-quotient Jacobian on the band the network structure allows, root finding for
-// state events, stop times for time events, re-initialisation after every event.
+// The CVODE driver: BDF with Newton iterations; a dense, banded or sparse (KLU) direct linear
+// solver with a difference-quotient Jacobian on the pattern the network structure allows
+// (coloured columns for the sparse one); root finding for state events, stop times for time
+// events, re-initialisation after events that change the equations.
 #include "highlift/sim/simulator.h"
 
 #include <algorithm>

@@ -85,3 +85,36 @@ TEST(SimulateCli, DriveSystemProjectRejectsZeroElements) {
 }
 
 }  // namespace
+
+// `highlift peak --transient`: a sizing case simulated under the single-DOF conditions, the
+// transient peak beside the estimate. The rupture of shaft_l1 is the project's scenario
+// rupture_wtb, which extends against opposing loads; the sizing case retracts with the airload
+// aiding (a made-up scenario on that load case), and the report says so.
+TEST(PeakTransientCli, RuptureSimulatedWhileRetractingBelowTheSingleDofEstimate) {
+  const auto r = highlift::testing::RunCli(
+      {"peak", "examples/a380_class_flaps.json", "--transient", "--case", "rupture_wtb", "--no-intervals", "--json"});
+  ASSERT_TRUE(r.exit_code == 0 || r.exit_code == 1) << r.err;  // 1: negative margins of the example
+  const auto j = nlohmann::json::parse(r.out);
+  ASSERT_EQ(j["transient"].size(), 1u) << j["transient"].dump();
+  const auto& c = j["transient"][0];
+  EXPECT_EQ(c["case"], "rupture_wtb");
+  EXPECT_EQ(c["kind"], "rupture");
+  EXPECT_EQ(c["scenario"], "rupture_shaft_l1");
+  EXPECT_EQ(c["load_case"], "retract_aiding");
+  EXPECT_TRUE(c["ok"].get<bool>()) << c.dump();
+  // The outboard part is stopped by the WTB, which slips: the largest torque is at the tip,
+  // well below the rigid-stop estimate and above the WTB's dynamic capacity (550 N*m).
+  const std::string at = c["at"];
+  EXPECT_TRUE(at == "shaft_l7" || at == "wtb_left") << at;
+  const double ratio = c["ratio"];
+  EXPECT_GT(ratio, 0.1);
+  EXPECT_LT(ratio, 1.0);
+  EXPECT_GT(c["transient"].get<double>(), 500.0);
+  EXPECT_GT(c["time"].get<double>(), 1.0);  // after the rupture at 1 s
+}
+
+TEST(PeakTransientCli, ElementsWithoutTransientIsAUsageError) {
+  const auto r = highlift::testing::RunCli({"peak", "examples/a380_class_flaps.json", "--elements", "6"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("give --transient as well"), std::string::npos) << r.err;
+}
