@@ -294,6 +294,15 @@ int ScaleAddISparse(sunrealtype c, SUNMatrix A) {
   return 0;
 }
 
+// CVODE's linear solver interface keeps a copy of the Jacobian (savedJ) cloned from the
+// matrix it was given; a clone of SUNDIALS' gets a fresh operation table, so the clone carries
+// ours on (the copy savedJ -> A of every setup without a new Jacobian is the frequent one).
+SUNMatrix CloneSparse(SUNMatrix A) {
+  SUNMatrix B = SUNMatClone_Sparse(A);
+  if (B) InstallFastSparseOps(B);
+  return B;
+}
+
 }  // namespace
 
 void InstallFastVectorOps(N_Vector v) {
@@ -335,6 +344,7 @@ void InstallFastSparseOps(SUNMatrix A) {
   A->ops->zero = ZeroSparse;
   A->ops->copy = CopySparse;
   A->ops->scaleaddi = ScaleAddISparse;
+  A->ops->clone = CloneSparse;
 }
 
 }  // namespace highlift::sim::detail
