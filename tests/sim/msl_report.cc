@@ -11,10 +11,10 @@ int main(int argc, char** argv) {
   std::filesystem::path dir;
   if (argc > 1) {
     dir = argv[1];
-  } else if (auto found = SharedReference("msl")) {
-    dir = *found;
+  } else if (const SharedReferenceLookup found = LocateSharedReference("msl"); found.dir) {
+    dir = *found.dir;
   } else {
-    std::cerr << "msl_report: reference/msl not found; pass its path or set HIGHLIFT_SHARED\n";
+    std::cerr << "msl_report: " << found.message << "; or pass the folder as the argument\n";
     return 2;
   }
   bool all = true;
