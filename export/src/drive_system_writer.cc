@@ -1,9 +1,15 @@
 // Drive-system projects (catalogue components) to a Modelica model of HighLift and MSL
 // components. Full resolution: every component is one instance and every torque shaft a chain
-// of settings.shaft_elements spring-dampers between lumped shaft inertias. Reduced resolution
-// (paper section 2, approach of [4]): inertias are lumped at the gearboxes and stations; the
-// shafts, bearings and joints between them become one spring-damper with their series stiffness
-// and their inertia and drag split between its two ends.
+// of settings.shaft_elements (at least 4) spring-dampers between lumped shaft inertias.
+// Reduced resolution (paper section 2, approach of [4]): inertias are lumped at the gearboxes
+// and stations; the shafts, bearings and joints between them become one spring-damper with
+// their series stiffness and their inertia and drag split between its two ends.
+//
+// The translation is the simulator's (sim/src/drive_network.cc, highlift::sim::BuildDriveNetwork):
+// the same elements with the same parameter values and connections, so that a model simulated
+// with `highlift simulate` and the exported one agree element by element
+// (tests/export/drive_system_agreement_test.cc). Instance names are the simulator's element
+// ids with the generator's Modelica spelling (shaft.e1 -> shaft_spring1, see that test).
 #include <algorithm>
 #include <cmath>
 #include <deque>
@@ -24,6 +30,12 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr double kDefaultDisconnectorStiffness = 1e6;  // N*m/rad, far above any shaft segment
 constexpr double kDefaultDisconnectorDamping = 100;    // N*m*s/rad
 constexpr double kJamStiffness = 1e5;                  // N*m/rad referred to the actuator input
+// Regularisation speed w_small of the bearing, gear and actuator friction, rad/s: the default
+// of DriveNetworkOptions::friction_speed (sim/include/highlift/sim/drive_network.h). Brakes
+// (pressure-off, wing-tip and torque-limiter brakes) keep their exact stick/slip law.
+constexpr double kFrictionSpeed = 0.1;
+// Lower bound of the split of a shaft at full resolution (DriveNetworkOptions::kMinShaftElements).
+constexpr int kMinShaftElements = 4;
 
 std::optional<double> Value(const Component& c, const std::string& name) {
   auto it = c.parameters.find(name);
@@ -45,6 +57,12 @@ bool IsChainType(const std::string& type) {
 
 bool IsActuator(const std::string& type) {
   return type == "geared_rotary_actuator" || type == "ballscrew_actuator";
+}
+
+/// A pdu whose text parameter `drive` is "hydraulic" (docs/hydraulics.md).
+bool IsHydraulicPdu(const Component& c) {
+  auto drive = c.texts.find("drive");
+  return drive != c.texts.end() && drive->second == "hydraulic";
 }
 
 // Speed of `to` / speed of `from` through a component entered at port `from`.
@@ -70,7 +88,8 @@ struct TorqueShaftData {
   double drag = 0;  // N*m, Coulomb drag of the whole segment
 };
 
-TorqueShaftData ShaftData(const Component& s) {
+/// `beta`: the project's structural damping (d = beta*c when the shaft gives no damping).
+TorqueShaftData ShaftData(const Component& s, double beta) {
   TorqueShaftData data;
   const double L = RequireValue(s, "length");
   const auto D = Value(s, "outer_diameter");
@@ -97,7 +116,7 @@ TorqueShaftData ShaftData(const Component& s) {
   } else {
     data.J = RequireValue(s, "density") * polar * L;
   }
-  data.d = ValueOr(s, "damping", 0.0);
+  data.d = ValueOr(s, "damping", beta * data.c);
   data.drag = ValueOr(s, "drag_per_length", 0.0) * L;
   return data;
 }
@@ -135,8 +154,23 @@ class DriveSystemWriter {
   void EmitChains();  // reduced resolution
   void EmitLoads();
   void EmitMonitoring();
+  /// The command that applies the wing-tip brakes also shuts the PDU down (the mechanical PDU's
+  /// input `stop`, the hydraulic PDU's `<pdu>_stop`), as the simulator's translation does
+  /// (ConnectShutdown in sim/src/drive_network.cc).
+  bool PduShutdownConnected() const;
+  void ConnectShutdown(const std::string& command);
 
   std::vector<Modifier> Stribeck(const Component& c) const;
+  /// `mods` with the friction regularisation w_small of the drive translation.
+  static std::vector<Modifier> Regularised(std::vector<Modifier> mods) {
+    mods.push_back({"w_small", FormatModelicaReal(kFrictionSpeed), {}});
+    return mods;
+  }
+  /// The project's structural damping beta (s): d = beta*c for elastic elements without their own.
+  double Beta() const { return project_.settings.structural_damping; }
+  /// Shaft elements at full resolution: the project's setting, at least kMinShaftElements.
+  int ShaftElements() const { return std::max(kMinShaftElements, project_.settings.shaft_elements); }
+  std::vector<std::vector<double>> SpeedCommandRows() const;
   std::string Name(const std::string& base) { return ids_.Add(base); }
   void Add(std::string cls, std::string name, std::vector<Modifier> mods, std::string comment) {
     writer_.AddInstance({std::move(cls), std::move(name), std::move(mods), std::move(comment)});
@@ -162,6 +196,7 @@ class DriveSystemWriter {
   const Component* pdu_ = nullptr;
   std::string pdu_instance_;
   std::string speed_table_;                  // instance of the PDU speed command table
+  std::string pdu_stop_;                     // hydraulic PDU: the BooleanToReal of its shutdown input
   std::map<std::string, double> speed_factor_;  // component id -> speed / PDU speed
   std::vector<const Component*> wtbs_;
   std::vector<std::string> wtb_instances_;
@@ -201,8 +236,23 @@ std::string DriveSystemWriter::TableModifier(const std::string& name,
   return name;
 }
 
+// The PDU speed command: the load case's profile, signed by the direction (held after its last
+// point; a single point is held as a constant).
+std::vector<std::vector<double>> DriveSystemWriter::SpeedCommandRows() const {
+  std::vector<std::vector<double>> rows;
+  if (load_case_ && load_case_->pdu_speed && !load_case_->pdu_speed->x.empty()) {
+    const Table& t = *load_case_->pdu_speed;
+    for (std::size_t i = 0; i < t.x.size(); ++i) rows.push_back({t.x[i], direction_ * t.y[i]});
+  } else {
+    rows = {{0.0, 0.0}, {1.0, 0.0}};
+  }
+  if (rows.size() == 1) rows.push_back({rows[0][0] + 1.0, rows[0][1]});
+  return rows;
+}
+
 // The hydraulic PDU: the parts of sim/src/hydraulic_pdu.cc (AddHydraulicPdu) as instances of
-// HighLift.Hydraulics and the MSL, with the same values and connections.
+// HighLift.Hydraulics and the MSL, with the same values and connections (with the shutdown
+// input when the project has wing-tip brakes, as AddHydraulicPdu's with_stop).
 void DriveSystemWriter::EmitHydraulicPdu(const Component& c) {
   auto value = [&](const std::string& param) {
     if (auto v = Value(c, param)) return *v;
@@ -239,13 +289,31 @@ void DriveSystemWriter::EmitHydraulicPdu(const Component& c) {
   std::optional<double> t_lost;
   if (scenario_)
     if (auto it = scenario_->values.find("motor_lost_time"); it != scenario_->values.end()) t_lost = it->second;
+  // Operation of each motor: "active" 1 while it runs; its pressure-off brake is commanded
+  // 1 - active. The shutdown input (the wing-tip brake command, Boolean, as a 0/1 signal)
+  // takes every motor out of operation; the lost motor also stops at motor_lost_time.
+  const bool with_stop = PduShutdownConnected();
+  std::string one, running;  // the constant 1; 1 - stop, when the PDU has a shutdown input
+  if (with_stop || t_lost) {
+    one = Name(c.id + "_one");
+    Add("Modelica.Blocks.Sources.Constant", one, {{"k", "1", {}}}, "");
+  }
+  if (with_stop) {
+    pdu_stop_ = Name(c.id + "_stop");
+    const std::string sum = Name(c.id + "_running");
+    Add("Modelica.Blocks.Math.BooleanToReal", pdu_stop_, {},
+        "shutdown command (the wing-tip brake command) as a 0/1 signal");
+    Add("Modelica.Blocks.Math.Add", sum, {{"k1", "1", {}}, {"k2", "-1", {}}}, "motors in operation: 1 - stop");
+    writer_.AddConnect(one + ".y", sum + ".u1");
+    writer_.AddConnect(pdu_stop_ + ".y", sum + ".u2");
+    running = sum + ".y";
+  }
   std::vector<std::string> rotors;
   for (int k = 1; k <= n_m; ++k) {
     const std::string n = std::to_string(k);
     const std::string valve = Name(c.id + "_valve" + n), cylinder = Name(c.id + "_cylinder" + n);
     const std::string rod = Name(c.id + "_rod" + n), control = Name(c.id + "_control" + n);
     const std::string motor = Name(c.id + "_motor" + n), rotor = Name(c.id + "_rotor" + n);
-    const std::string active = Name(c.id + "_active" + n);
     Add("HighLift.Hydraulics.ServoValve", valve,
         {{"A_max", real(value("valve_area"), "valve_area"), {}},
          {"T_v", real(value("valve_time_constant"), "valve_time_constant"), {}}},
@@ -276,31 +344,34 @@ void DriveSystemWriter::EmitHydraulicPdu(const Component& c) {
     Add("Modelica.Mechanics.Rotational.Components.Inertia", rotor, {{"J", real(value("motor_inertia"), "motor_inertia"), {}}},
         "rotor of motor " + n);
     const bool lost = t_lost && k == n_m;
-    if (lost)
-      Add("Modelica.Blocks.Sources.Step", active,
+    std::string active = running;  // the signal "motor k in operation" (empty: always)
+    if (lost) {
+      const std::string step = Name(c.id + "_motor_lost");
+      Add("Modelica.Blocks.Sources.Step", step,
           {{"height", "-1", {}}, {"offset", "1", {}}, {"startTime", FormatModelicaReal(*t_lost, "motor_lost_time"), {}}},
           "motor " + n + " lost");
-    else
-      Add("Modelica.Blocks.Sources.Constant", active, {{"k", "1", {}}}, "motor " + n + " in operation");
-    writer_.AddConnect(valve + ".port_P", volume + ".port");
-    writer_.AddConnect(valve + ".port_T", tank + ".port");
-    writer_.AddConnect(valve + ".port_A", cylinder + ".port_A");
-    writer_.AddConnect(valve + ".port_B", cylinder + ".port_B");
-    writer_.AddConnect(cylinder + ".flange", rod + ".flange_a");
-    writer_.AddConnect(w_ref + ".y", control + ".w_ref");
-    writer_.AddConnect(active + ".y", control + ".active");
-    writer_.AddConnect(rotor + ".flange_a", control + ".flange_m");
-    writer_.AddConnect(rod + ".flange_b", control + ".flange_s");
-    writer_.AddConnect(control + ".u", valve + ".u");
-    writer_.AddConnect(control + ".eps", motor + ".eps");
-    writer_.AddConnect(motor + ".port_A", volume + ".port");
-    writer_.AddConnect(motor + ".port_B", tank + ".port");
-    writer_.AddConnect(motor + ".flange", rotor + ".flange_a");
-    if (lost) {
-      const std::string pob = Name(c.id + "_pob" + n), command = Name(c.id + "_pob_command" + n);
-      Add("Modelica.Blocks.Sources.Step", command,
-          {{"height", "1", {}}, {"startTime", FormatModelicaReal(*t_lost, "motor_lost_time"), {}}},
-          "pressure-off brake of the lost motor applied");
+      active = step + ".y";
+      if (!running.empty()) {
+        const std::string product = Name(c.id + "_active" + n);
+        Add("Modelica.Blocks.Math.Product", product, {}, "motor " + n + " in operation");
+        writer_.AddConnect(running, product + ".u1");
+        writer_.AddConnect(active, product + ".u2");
+        active = product + ".y";
+      }
+    }
+    if (active.empty()) {
+      // Always in operation (the simulator leaves the input open, which reads 1 there).
+      const std::string constant = Name(c.id + "_active" + n);
+      Add("Modelica.Blocks.Sources.Constant", constant, {{"k", "1", {}}}, "motor " + n + " in operation");
+      writer_.AddConnect(constant + ".y", control + ".active");
+    } else {
+      writer_.AddConnect(active, control + ".active");
+      const std::string command = Name(c.id + "_pob_command" + n), pob = Name(c.id + "_pob" + n);
+      Add("Modelica.Blocks.Math.Add", command, {{"k1", "1", {}}, {"k2", "-1", {}}},
+          "pressure-off brake of motor " + n + ": applied when the motor is out of operation");
+      writer_.AddConnect(one + ".y", command + ".u1");
+      writer_.AddConnect(active, command + ".u2");
+      // Brake: tau = cgeo*mu*fn_max*f_normalized with mu = 0.5: the POB torque at the motor.
       Add("Modelica.Mechanics.Rotational.Components.Brake", pob,
           {{"fn_max", real(2.0 * value("brake_torque") / ratio, "brake_torque"), {}},
            {"mu_pos", "[0, 0.5]", {}}},
@@ -308,6 +379,19 @@ void DriveSystemWriter::EmitHydraulicPdu(const Component& c) {
       writer_.AddConnect(command + ".y", pob + ".f_normalized");
       writer_.AddConnect(rotor + ".flange_b", pob + ".flange_a");
     }
+    writer_.AddConnect(valve + ".port_P", volume + ".port");
+    writer_.AddConnect(valve + ".port_T", tank + ".port");
+    writer_.AddConnect(valve + ".port_A", cylinder + ".port_A");
+    writer_.AddConnect(valve + ".port_B", cylinder + ".port_B");
+    writer_.AddConnect(cylinder + ".flange", rod + ".flange_a");
+    writer_.AddConnect(w_ref + ".y", control + ".w_ref");
+    writer_.AddConnect(rotor + ".flange_a", control + ".flange_m");
+    writer_.AddConnect(rod + ".flange_b", control + ".flange_s");
+    writer_.AddConnect(control + ".u", valve + ".u");
+    writer_.AddConnect(control + ".eps", motor + ".eps");
+    writer_.AddConnect(motor + ".port_A", volume + ".port");
+    writer_.AddConnect(motor + ".port_B", tank + ".port");
+    writer_.AddConnect(motor + ".flange", rotor + ".flange_a");
     rotors.push_back(rotor);
   }
   const std::string gear = Name(c.id + "_gear"), output = Name(c.id + "_output");
@@ -332,16 +416,9 @@ void DriveSystemWriter::EmitHydraulicPdu(const Component& c) {
   Map(c, "left", output + ".flange_b");
   Map(c, "right", output + ".flange_a");
 
-  std::vector<std::vector<double>> rows;
-  if (load_case_ && load_case_->pdu_speed) {
-    const Table& t = *load_case_->pdu_speed;
-    for (std::size_t i = 0; i < t.x.size(); ++i) rows.push_back({t.x[i], direction_ * t.y[i]});
-  } else {
-    rows = {{0.0, 0.0}, {1.0, 0.0}};
-  }
   speed_table_ = Name(c.id + "_speed");
   std::vector<Modifier> table_mods;
-  TableModifier(speed_table_, rows, table_mods);
+  TableModifier(speed_table_, SpeedCommandRows(), table_mods);
   table_mods.push_back({"extrapolation", "Modelica.Blocks.Types.Extrapolation.HoldLastPoint", {}});
   Add("Modelica.Blocks.Sources.CombiTimeTable", speed_table_, table_mods,
       "PDU output speed command [rad/s]" + std::string(load_case_ ? " of load case " + load_case_->name : ""));
@@ -349,7 +426,7 @@ void DriveSystemWriter::EmitHydraulicPdu(const Component& c) {
 }
 
 void DriveSystemWriter::EmitPdu(const Component& c) {
-  if (auto drive = c.texts.find("drive"); drive != c.texts.end() && drive->second == "hydraulic") {
+  if (IsHydraulicPdu(c)) {
     EmitHydraulicPdu(c);
     return;
   }
@@ -370,21 +447,15 @@ void DriveSystemWriter::EmitPdu(const Component& c) {
     if (auto it = scenario_->values.find("motor_lost_time"); it != scenario_->values.end())
       mods.push_back({"t_motor_lost", FormatModelicaReal(it->second, "scenario value motor_lost_time"), {}});
   }
+  if (PduShutdownConnected()) mods.push_back({"useStopInput", "true", {}});
   Add("HighLift.Drives.PDU", name, mods, c.description);
   Map(c, "left", name + ".flange_left");
   Map(c, "right", name + ".flange_right");
 
   // The speed command: the load case's PDU speed profile, signed by the direction.
-  std::vector<std::vector<double>> rows;
-  if (load_case_ && load_case_->pdu_speed) {
-    const Table& t = *load_case_->pdu_speed;
-    for (std::size_t i = 0; i < t.x.size(); ++i) rows.push_back({t.x[i], direction_ * t.y[i]});
-  } else {
-    rows = {{0.0, 0.0}, {1.0, 0.0}};
-  }
   speed_table_ = Name(c.id + "_speed");
   std::vector<Modifier> table_mods;
-  TableModifier(speed_table_, rows, table_mods);
+  TableModifier(speed_table_, SpeedCommandRows(), table_mods);
   table_mods.push_back({"extrapolation", "Modelica.Blocks.Types.Extrapolation.HoldLastPoint", {}});
   Add("Modelica.Blocks.Sources.CombiTimeTable", speed_table_, table_mods,
       "PDU output speed command [rad/s]" + std::string(load_case_ ? " of load case " + load_case_->name : ""));
@@ -410,6 +481,8 @@ void DriveSystemWriter::EmitTorqueLimiter(const Component& c) {
        {"tau2_ext", Real(tau2, c, "end_stop_torque"), {}},
        {"tau2_ret", Real(tau2_ret, c, "end_stop_torque"), {}},
        {"c1", Real(RequireValue(c, "stiffness_normal"), c, "stiffness_normal"), {}},
+       // Structural damping of the balls and ramps.
+       {"d", Real(Beta() * RequireValue(c, "stiffness_normal"), c, "stiffness_normal"), {}},
        {"c2", Real(RequireValue(c, "stiffness_lockout"), c, "stiffness_lockout"), {}},
        {"c3", Real(RequireValue(c, "stiffness_end_stop"), c, "stiffness_end_stop"), {}},
        {"tauB_max", Real(RequireValue(c, "max_brake_torque"), c, "max_brake_torque"), {}},
@@ -420,8 +493,8 @@ void DriveSystemWriter::EmitTorqueLimiter(const Component& c) {
 }
 
 void DriveSystemWriter::EmitShaftFull(const Component& c) {
-  const TorqueShaftData data = ShaftData(c);
-  const int n = std::max(1, project_.settings.shaft_elements);
+  const TorqueShaftData data = ShaftData(c, Beta());
+  const int n = ShaftElements();
   const bool ruptured = scenario_ && scenario_->rupture_component == c.id;
   const int broken = ruptured ? (n + 1) / 2 : 0;  // the spring replaced by a Disconnector
   std::vector<std::string> masses;
@@ -429,9 +502,11 @@ void DriveSystemWriter::EmitShaftFull(const Component& c) {
     const double share = (i == 0 || i == n) ? 0.5 / n : 1.0 / n;
     const std::string name = Name(c.id + "_mass" + std::to_string(i));
     std::vector<Modifier> mods = {{"J", Real(data.J * share, c, "inertia"), {}}};
-    if (data.drag > 0) {
-      mods.push_back({"tau_C", Real(data.drag * share, c, "drag_per_length"), {}});
-      Add("HighLift.Mechanical.LossyInertia", name, mods, "");
+    // The drag of the segment (its bearings and joints) acts at its two end masses, half at
+    // each, as in the reduced model (interior masses without friction).
+    if (data.drag > 0 && (i == 0 || i == n)) {
+      mods.push_back({"tau_C", Real(data.drag * 0.5, c, "drag_per_length"), {}});
+      Add("HighLift.Mechanical.LossyInertia", name, Regularised(mods), "");
     } else {
       Add("Modelica.Mechanics.Rotational.Components.Inertia", name, mods, "");
     }
@@ -457,7 +532,7 @@ void DriveSystemWriter::EmitSteadyBearing(const Component& c) {
   const std::string name = Name(c.id);
   std::vector<Modifier> mods = {{"J", Real(RequireValue(c, "inertia"), c, "inertia"), {}}};
   for (auto& m : Stribeck(c)) mods.push_back(m);
-  Add("HighLift.Mechanical.LossyInertia", name, mods, c.description);
+  Add("HighLift.Mechanical.LossyInertia", name, Regularised(mods), c.description);
   Map(c, "a", name + ".flange_a");
   Map(c, "b", name + ".flange_b");
 }
@@ -472,12 +547,14 @@ void DriveSystemWriter::EmitUniversalJoint(const Component& c) {
   std::vector<Modifier> mods = {{"J", Real(RequireValue(c, "inertia"), c, "inertia"), {}},
                                 {"eta_GE", Real(RequireValue(c, "efficiency"), c, "efficiency"), {}}};
   if (c_joint) {
-    mods.insert(mods.begin(), {{"elastic", "true", {}}, {"c", Real(*c_joint, c, "stiffness"), {}},
+    mods.insert(mods.begin(), {{"elastic", "true", {}},
+                               {"c", Real(*c_joint, c, "stiffness"), {}},
+                               {"d", Real(Beta() * *c_joint, c, "stiffness"), {}},
                                {"b", Real(b, c, "backlash"), {}}});
     mods.push_back({"ratio", "1", {}});
-    Add("HighLift.Mechanical.GeneralRotationalElement", name, mods, c.description);
+    Add("HighLift.Mechanical.GeneralRotationalElement", name, Regularised(mods), c.description);
   } else {
-    Add("HighLift.Mechanical.LossyInertia", name, mods, c.description);
+    Add("HighLift.Mechanical.LossyInertia", name, Regularised(mods), c.description);
   }
   Map(c, "a", name + ".flange_a");
   Map(c, "b", name + ".flange_b");
@@ -495,11 +572,13 @@ void DriveSystemWriter::EmitGearbox(const Component& c) {
                                 {"elastic", stiffness ? "true" : "false", {}}};
   if (stiffness) {
     mods.push_back({"c", Real(*stiffness, c, "stiffness"), {}});
+    mods.push_back({"d", Real(Beta() * *stiffness, c, "stiffness"), {}});
     mods.push_back({"b", Real(b, c, "backlash"), {}});
   }
   mods.push_back({"J", Real(RequireValue(c, "inertia"), c, "inertia"), {}});
   for (auto& m : Stribeck(c)) mods.push_back(m);
   mods.push_back({"eta_GE", Real(eta, c, "eta_mesh"), {}});
+  mods = Regularised(std::move(mods));
   if (c.type == "branch_gearbox") {
     Add("HighLift.Mechanical.BranchGearbox", name, mods, c.description);
     Map(c, "input", name + ".flange_a");
@@ -525,20 +604,23 @@ void DriveSystemWriter::EmitActuator(const Component& c) {
   if (auto stiffness = Value(c, "stiffness")) {
     mods.push_back({"elastic", "true", {}});
     mods.push_back({"c", Real(*stiffness, c, "stiffness"), {}});
+    mods.push_back({"d", Real(Beta() * *stiffness, c, "stiffness"), {}});
     mods.push_back({"b", Real(ValueOr(c, "backlash", 0.0), c, "backlash"), {}});
   } else if (ValueOr(c, "backlash", 0.0) > 0) {
     throw InputError("component '" + c.id + "' (" + c.type + "): a backlash needs a stiffness: give 'stiffness'",
                      c.where);
   }
   for (auto& m : Stribeck(c)) mods.push_back(m);
-  Add("HighLift.Mechanical.GearedRotaryActuator", name, mods, c.description);
+  Add("HighLift.Mechanical.GearedRotaryActuator", name, Regularised(mods), c.description);
   Map(c, "input", name + ".flange_a");
 
   // A jam of this actuator: its output is tied to the structure at the scenario's time.
   if (scenario_ && scenario_->jam_component == c.id) {
     const std::string jam = Name(c.id + "_jam");
+    const double c_jam = kJamStiffness * ratio * ratio;
     Add("HighLift.Mechanical.Jam", jam,
-        {{"c", FormatModelicaReal(kJamStiffness * ratio * ratio), {}},
+        {{"c", FormatModelicaReal(c_jam), {}},
+         {"d", FormatModelicaReal(Beta() * c_jam), {}},
          {"t_jam", FormatModelicaReal(*scenario_->jam_time, "jam time"), {}}},
         "jam of " + c.id + " (stiffness " + FormatModelicaReal(kJamStiffness) + " N*m/rad at the input)");
     writer_.AddConnect(name + ".flange_b", jam + ".flange");
@@ -584,7 +666,8 @@ void DriveSystemWriter::EmitDisconnector(const Component& c) {
 
 void DriveSystemWriter::EmitJam(const Component& c) {
   const std::string name = Name(c.id);
-  std::vector<Modifier> mods = {{"c", Real(RequireValue(c, "stiffness"), c, "stiffness"), {}}};
+  std::vector<Modifier> mods = {{"c", Real(RequireValue(c, "stiffness"), c, "stiffness"), {}},
+                                {"d", Real(Beta() * RequireValue(c, "stiffness"), c, "stiffness"), {}}};
   if (scenario_ && scenario_->jam_component == c.id)
     mods.push_back({"t_jam", FormatModelicaReal(*scenario_->jam_time, "jam time"), {}});
   Add("HighLift.Mechanical.Jam", name, mods, c.description);
@@ -656,7 +739,7 @@ void DriveSystemWriter::EmitChains() {
       members_text += (members_text.empty() ? "" : ", ") + m->id;
       if (scenario_ && scenario_->rupture_component == m->id) ruptured = true;
       if (m->type == "torque_shaft") {
-        const TorqueShaftData d = ShaftData(*m);
+        const TorqueShaftData d = ShaftData(*m, Beta());
         compliance += 1.0 / d.c;
         if (d.d > 0) damping_compliance += 1.0 / d.d;
         J += d.J;
@@ -667,6 +750,7 @@ void DriveSystemWriter::EmitChains() {
         drag += ValueOr(*m, "coulomb_torque", 0.0);
         if (auto c = Value(*m, "stiffness")) {
           compliance += 1.0 / *c;
+          if (Beta() > 0) damping_compliance += 1.0 / (Beta() * *c);
           elastic = true;
         }
       }
@@ -677,7 +761,7 @@ void DriveSystemWriter::EmitChains() {
       std::vector<Modifier> mods = {{"J", FormatModelicaReal(J * share, "inertia of " + base), {}}};
       if (drag > 0) {
         mods.push_back({"tau_C", FormatModelicaReal(drag * share, "drag of " + base), {}});
-        Add("HighLift.Mechanical.LossyInertia", name, mods, "lumped: " + members_text);
+        Add("HighLift.Mechanical.LossyInertia", name, Regularised(mods), "lumped: " + members_text);
       } else {
         Add("Modelica.Mechanics.Rotational.Components.Inertia", name, mods, "lumped: " + members_text);
       }
@@ -745,10 +829,11 @@ void DriveSystemWriter::EmitLoads() {
                            a->where);
         travel = *stroke / RequireValue(*a, "lead");
       }
-      // Position 0..1 of full travel -> output angle from the start of the motion.
+      // Position 0..1 of full travel -> output angle from the start of the motion. Retracting
+      // from full travel the output angle runs from 0 down to -travel, so the keys
+      // (x - 1)*travel of the positions x in increasing order are already increasing.
       for (std::size_t i = 0; i < table.x.size(); ++i)
         rows.push_back({direction_ > 0 ? table.x[i] * travel : (table.x[i] - 1) * travel, sign * table.y[i]});
-      if (direction_ < 0) std::reverse(rows.begin(), rows.end());
       const std::string sensor = Name(a->id + "_angle");
       Add("Modelica.Mechanics.Rotational.Sensors.AngleSensor", sensor, {}, "output angle of " + a->id);
       writer_.AddConnect(gra + ".flange_b", sensor + ".flange");
@@ -818,6 +903,7 @@ void DriveSystemWriter::EmitMonitoring() {
         {{"startTime", FormatModelicaReal(scenario_->wtb_time.value_or(0.0), "wtb time"), {}}},
         "wing-tip brake command at the scenario's time");
     for (const auto& wtb : wtb_instances_) writer_.AddConnect(command + ".y", wtb + ".apply");
+    ConnectShutdown(command + ".y");
     return;
   }
   if (!pdu_) return;  // no PDU angle to monitor: the WTBs stay released
@@ -889,7 +975,22 @@ void DriveSystemWriter::EmitMonitoring() {
     writer_.AddConnect(speed_table_ + ".y[1]", integrator + ".u");
     writer_.AddConnect(integrator + ".y", command + ".phi_cmd");
     for (const auto& wtb : wtb_instances_) writer_.AddConnect(command + ".wtb", wtb + ".apply");
+    ConnectShutdown(command + ".wtb");
   }
+}
+
+// EmitMonitoring connects a brake command whenever the project has wing-tip brakes (the monitor
+// needs the PDU angle, so with a PDU there is always one). The mechanical PDU takes it at its
+// input `stop` (useStopInput), the hydraulic one at the BooleanToReal `<pdu>_stop`.
+bool DriveSystemWriter::PduShutdownConnected() const {
+  if (!pdu_) return false;
+  return std::any_of(project_.components.begin(), project_.components.end(),
+                     [](const Component& c) { return c.type == "wing_tip_brake"; });
+}
+
+void DriveSystemWriter::ConnectShutdown(const std::string& command) {
+  if (!PduShutdownConnected()) return;
+  writer_.AddConnect(command, IsHydraulicPdu(*pdu_) ? pdu_stop_ + ".u" : pdu_instance_ + ".stop");
 }
 
 ModelOutput DriveSystemWriter::Run() {
@@ -963,6 +1064,7 @@ ModelOutput DriveSystemWriter::Run() {
   Experiment experiment;
   experiment.tolerance = project_.settings.relative_tolerance;
   experiment.interval = project_.settings.output_interval;
+  if (scenario_ && scenario_->output_interval) experiment.interval = *scenario_->output_interval;
   experiment.stop_time = scenario_ ? scenario_->stop_time : 10.0;
   writer_.SetExperiment(experiment);
   writer_.SetDescription(project_.name);
@@ -971,7 +1073,7 @@ ModelOutput DriveSystemWriter::Run() {
   doc << "<html>\n<p>Drive system of the highlift project <strong>" << HtmlEscape(project_.name)
       << "</strong>, exported by <code>highlift export</code> at "
       << (options_.resolution == ModelResolution::kFull
-              ? "full resolution (each torque shaft split into " + std::to_string(std::max(1, project_.settings.shaft_elements)) + " elements)"
+              ? "full resolution (each torque shaft split into " + std::to_string(ShaftElements()) + " elements)"
               : std::string("reduced resolution (inertias lumped at gearboxes and stations)"))
       << ".</p>\n";
   if (!project_.description.empty()) doc << "<p>" << HtmlEscape(project_.description) << "</p>\n";
@@ -982,7 +1084,9 @@ ModelOutput DriveSystemWriter::Run() {
     if (!scenario_->description.empty()) doc << " " << HtmlEscape(scenario_->description);
     doc << "</p>\n";
   }
-  doc << "<p>Positive rotation is the extend direction. The initial state is the drive at rest.</p>\n";
+  doc << "<p>Positive rotation is the extend direction. The model starts at rest with untwisted springs "
+         "(the simulator starts from the static equilibrium of the loads held by the parked brakes; "
+         "see docs/modelica.md for the same start in a Modelica tool).</p>\n";
   if (!lumping_notes_.empty()) {
     doc << "<p>Lumped chains (spring-damper or inertia: members):</p>\n<ul>\n";
     for (const auto& n : lumping_notes_) doc << "<li>" << HtmlEscape(n) << "</li>\n";

@@ -64,6 +64,15 @@ bool HasModifier(const std::string& cls, const std::string& name) {
 
 std::string FormatInteger(double value) { return std::to_string(static_cast<long long>(value)); }
 
+// Conditional inputs whose switch is a parameter of the Modelica class but not of the element
+// type (the simulator enables the input by its connection): element type, input, switch.
+struct ConditionalInput {
+  const char* type;
+  const char* input;
+  const char* parameter;
+};
+constexpr ConditionalInput kConditionalInputs[] = {{"PDU", "stop", "useStopInput"}};
+
 // Parameters of EddyCurrentTorque that belong to the heat capacitor we add beside it.
 bool IsHeatCapacitorParameter(const std::string& name) {
   return name == "C_heatPort" || name == "T_heatPort_start";
@@ -150,6 +159,9 @@ ModelOutput WriteElementNetwork(const Project& project, const std::string& model
       }
     }
     if (connected.count({e.id, "support"})) inst.modifiers.push_back({"useSupport", "true", {}});
+    for (const ConditionalInput& input : kConditionalInputs)
+      if (e.type == input.type && connected.count({e.id, input.input}))
+        inst.modifiers.push_back({input.parameter, "true", {}});
     writer.AddInstance(inst);
     if (heat_port) {
       // The heat port of the eddy current brake goes into a lumped heat capacitor.
@@ -181,6 +193,7 @@ ModelOutput WriteElementNetwork(const Project& project, const std::string& model
   experiment.interval = project.settings.output_interval;
   if (scenario) {
     experiment.stop_time = scenario->stop_time;
+    if (scenario->output_interval) experiment.interval = *scenario->output_interval;  // as `highlift simulate`
   } else if (auto it = project.settings.values.find("stop_time"); it != project.settings.values.end()) {
     experiment.stop_time = it->second;
   }

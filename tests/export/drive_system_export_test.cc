@@ -55,17 +55,44 @@ TEST(DriveSystemExport, ReducedModelMatchesGolden) {
   EXPECT_LT(report.component_count, Export(ModelResolution::kFull).component_count);
 }
 
-TEST(DriveSystemExport, FullModelSplitsShaftsIntoSettingsElements) {
-  const auto report = Export(ModelResolution::kFull, "jam_gra_1");
-  const std::string text = testing::Flatten(FileOf(report, "OneStationRig.mo").content);
-  // shaft_elements = 2: springs with twice the segment stiffness, end masses with J/4.
+TEST(DriveSystemExport, FullModelSplitsShaftsIntoSettingsElementsAtLeastFour) {
   const double G = 44e9, D = 0.05, d = 0.046, L = 3.0, rho = 4420;
   const double polar = M_PI / 32 * (std::pow(D, 4) - std::pow(d, 4));
-  EXPECT_NEAR(ModifierValue(text, "shaft_1_spring1", "c"), 2 * G * polar / L, 1e-9 * G * polar / L);
-  EXPECT_NEAR(ModifierValue(text, "shaft_1_spring2", "c"), 2 * G * polar / L, 1e-9 * G * polar / L);
-  EXPECT_NEAR(ModifierValue(text, "shaft_1_mass0", "J"), rho * polar * L / 4, 1e-12);
-  EXPECT_NEAR(ModifierValue(text, "shaft_1_mass1", "J"), rho * polar * L / 2, 1e-12);
-  EXPECT_EQ(text.find("shaft_1_spring3"), std::string::npos);
+  const double c = G * polar / L, J = rho * polar * L;
+  // The rig asks for shaft_elements = 2; the simulator's lower bound of 4 applies (as in
+  // sim::BuildDriveNetwork): springs with 4 c, end masses with J/8, inner masses J/4.
+  {
+    const auto report = Export(ModelResolution::kFull, "jam_gra_1");
+    const std::string text = testing::Flatten(FileOf(report, "OneStationRig.mo").content);
+    EXPECT_NEAR(ModifierValue(text, "shaft_1_spring1", "c"), 4 * c, 1e-9 * c);
+    EXPECT_NEAR(ModifierValue(text, "shaft_1_spring4", "c"), 4 * c, 1e-9 * c);
+    EXPECT_NEAR(ModifierValue(text, "shaft_1_mass0", "J"), J / 8, 1e-12);
+    EXPECT_NEAR(ModifierValue(text, "shaft_1_mass1", "J"), J / 4, 1e-12);
+    EXPECT_EQ(text.find("shaft_1_spring5"), std::string::npos);
+    // No damping given: the structural damping d = beta*c per element (4 d for 4 c).
+    EXPECT_NEAR(ModifierValue(text, "shaft_1_spring2", "d"), 4 * 4e-4 * c, 1e-9 * c);
+  }
+  Project project = SmallDrive();
+  project.settings.shaft_elements = 6;
+  ModelicaExportOptions options;
+  options.scenario = "jam_gra_1";
+  const std::string text = testing::Flatten(FileOf(GenerateModelica(project, options), "OneStationRig.mo").content);
+  EXPECT_NEAR(ModifierValue(text, "shaft_1_spring6", "c"), 6 * c, 1e-9 * c);
+  EXPECT_NEAR(ModifierValue(text, "shaft_1_mass6", "J"), J / 12, 1e-12);
+  EXPECT_EQ(text.find("shaft_1_spring7"), std::string::npos);
+}
+
+// The drag of a shaft acts at its two end masses (half each, regularised friction), its
+// interior masses are plain inertias, as in the simulator.
+TEST(DriveSystemExport, ShaftDragActsAtTheEndMassesWithRegularisedFriction) {
+  const std::string text = testing::Flatten(FileOf(Export(ModelResolution::kFull), "OneStationRig.mo").content);
+  EXPECT_NE(text.find("HighLift.Mechanical.LossyInertia shaft_1_mass0(J=0.00028843665869362323, tau_C=0.375, w_small=0.1)"),
+            std::string::npos)
+      << text;
+  EXPECT_NE(text.find("Modelica.Mechanics.Rotational.Components.Inertia shaft_1_mass1(J=0.0005768733173872465)"),
+            std::string::npos);
+  EXPECT_NE(text.find("HighLift.Mechanical.LossyInertia shaft_1_mass4(J=0.00028843665869362323, tau_C=0.375, w_small=0.1)"),
+            std::string::npos);
 }
 
 TEST(DriveSystemExport, ReducedModelLumpsChainsWithSeriesStiffness) {
@@ -92,6 +119,7 @@ TEST(DriveSystemExport, RuptureScenarioInsertsADisconnectorAndTheMonitor) {
     EXPECT_NE(text.find("t_disconnect=1"), std::string::npos);
     EXPECT_NE(text.find("HighLift.Control.Monitoring monitor("), std::string::npos);
     EXPECT_NE(text.find("connect(monitor.wtb, wtb.apply)"), std::string::npos);
+    EXPECT_NE(text.find("connect(monitor.wtb, pdu.stop)"), std::string::npos);
     // The APPU sits behind the 1:1 through-drive: no gain between the tip and the PDU angle.
     EXPECT_NE(text.find("connect(appu_phi.phi, monitor.phi_left)"), std::string::npos);
     EXPECT_NE(text.find("experiment(StopTime=3, Tolerance=1e-06, Interval=0.001)"), std::string::npos);
@@ -101,9 +129,13 @@ TEST(DriveSystemExport, RuptureScenarioInsertsADisconnectorAndTheMonitor) {
 TEST(DriveSystemExport, JamScenarioJamsTheActuatorOutputAndTimesTheWtb) {
   const auto report = Export(ModelResolution::kFull, "jam_gra_1");
   const std::string text = testing::Flatten(FileOf(report, "OneStationRig.mo").content);
-  EXPECT_NE(text.find("HighLift.Mechanical.Jam gra_1_jam(c=4e+09, t_jam=1)"), std::string::npos) << text;
+  // Stiffness 1e5 N*m/rad at the input (x 200^2 at the output), structural damping beta*c.
+  EXPECT_NE(text.find("HighLift.Mechanical.Jam gra_1_jam(c=4e+09, d=1600000, t_jam=1)"), std::string::npos) << text;
   EXPECT_NE(text.find("connect(gra_1.flange_b, gra_1_jam.flange)"), std::string::npos);
   EXPECT_NE(text.find("Modelica.Blocks.Sources.BooleanStep wtbCommand(startTime=1.5)"), std::string::npos);
+  // The WTB command also shuts the PDU down.
+  EXPECT_NE(text.find("connect(wtbCommand.y, pdu.stop)"), std::string::npos);
+  EXPECT_NE(text.find("tauPOB=1100, useStopInput=true)"), std::string::npos);
   EXPECT_EQ(text.find("HighLift.Mechanical.Disconnector"), std::string::npos);
   EXPECT_EQ(CheckIssues(report), "");
 }

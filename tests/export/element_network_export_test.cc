@@ -180,3 +180,40 @@ TEST(ElementNetworkExport, EveryElementTypeExportsToKnownClassesAndModifiers) {
 
 }  // namespace
 }  // namespace highlift
+
+namespace highlift {
+namespace {
+
+// The PDU's shutdown input is enabled by its connection (the simulator has no switch for it):
+// the export writes useStopInput = true when `stop` is connected, and the monitor's Boolean
+// brake command connects to the Boolean input.
+TEST(ElementNetworkExport, ConnectedPduStopInputIsSwitchedOn) {
+  const Project project = ParseProject(R"({
+    "format": "highlift-project/1",
+    "name": "shutdown",
+    "elements": [
+      {"id": "command", "type": "Constant", "parameters": {"k": 10}},
+      {"id": "pdu", "type": "PDU"},
+      {"id": "spare", "type": "PDU"},
+      {"id": "load", "type": "Inertia", "parameters": {"J": 1}},
+      {"id": "spare_load", "type": "Inertia", "parameters": {"J": 1}},
+      {"id": "monitor", "type": "Monitoring"}
+    ],
+    "element_connections": [
+      ["command.y", "pdu.w_ref"], ["command.y", "spare.w_ref"],
+      ["pdu.flange_left", "load.flange_a"], ["spare.flange_left", "spare_load.flange_a"],
+      ["pdu.phi", "monitor.phi_left"], ["pdu.phi", "monitor.phi_right"], ["pdu.phi", "monitor.phi_pdu"],
+      ["pdu.phi", "monitor.phi_cmd"], ["pdu.w", "monitor.w_left"], ["pdu.w", "monitor.w_right"],
+      ["monitor.wtb", "pdu.stop"]
+    ]
+  })");
+  const auto report = GenerateModelica(project, ModelicaExportOptions{});
+  EXPECT_EQ(CheckIssues(report), "");
+  const std::string text = testing::Flatten(FileOf(report, "Shutdown.mo").content);
+  EXPECT_NE(text.find("HighLift.Drives.PDU pdu(useStopInput=true)"), std::string::npos) << text;
+  EXPECT_NE(text.find("HighLift.Drives.PDU spare\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("connect(monitor.wtb, pdu.stop)"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace highlift

@@ -12,7 +12,7 @@
 #include <set>
 #include <sstream>
 
-#include "export_test_util.h"
+#include "exported_model.h"
 #include "highlift/core/catalogue.h"
 #include "highlift/core/error.h"
 #include "highlift/sim/drive_network.h"
@@ -53,23 +53,21 @@ std::string ModelText(const Project& project, ModelResolution resolution, const 
   return "";
 }
 
-/// Declarations of the flattened model text (one line each, "  Class name(modifiers)"):
-/// instance -> (class, modifier text).
-std::map<std::string, std::pair<std::string, std::string>> Declarations(const std::string& text) {
-  std::map<std::string, std::pair<std::string, std::string>> out;
-  const std::regex declaration(R"(^  ([A-Za-z][A-Za-z0-9_.]*) ([A-Za-z_][A-Za-z0-9_]*)(\((.*)\))?$)");
-  std::istringstream lines(text.substr(0, text.find("\nequation\n")));
-  std::smatch m;
-  for (std::string line; std::getline(lines, line);)
-    if (std::regex_match(line, m, declaration)) out[m[2]] = {m[1], m[4]};
+/// Declarations of the model text: instance -> (class, modifiers).
+std::map<std::string, std::pair<std::string, std::map<std::string, std::string>>> Declarations(
+    const std::string& text) {
+  std::map<std::string, std::pair<std::string, std::map<std::string, std::string>>> out;
+  for (const auto& [name, instance] : testing::ParseExportedModel(text).instances)
+    out[name] = {instance.class_path, instance.modifiers};
   return out;
 }
 
-/// The numeric value of modifier `name` in a modifier text, or nan.
-double Modifier(const std::string& modifiers, const std::string& name) {
-  std::smatch m;
-  if (!std::regex_search(modifiers, m, std::regex("(^|[ ,])" + name + "=([-+0-9.e]+)(,|$)"))) return std::nan("");
-  return std::stod(m[2]);
+/// The numeric value of modifier `name`, or nan.
+double Modifier(const std::map<std::string, std::string>& modifiers, const std::string& name) {
+  double v = 0;
+  auto it = modifiers.find(name);
+  if (it == modifiers.end() || !testing::ModifierNumber(it->second, v)) return std::nan("");
+  return v;
 }
 
 TEST(HydraulicExport, ServoValveSpoolModelsExportWithTheirParameters) {
@@ -134,19 +132,34 @@ TEST(HydraulicExport, ExamplePassesTheStructuralCheckInEveryScenario) {
 // is applied at the scenario's motor_lost_time; the other motor stays active.
 TEST(HydraulicExport, MotorLostAtTheScenarioTime) {
   const auto lost = Declarations(ModelText(WithMotorLost(), ModelResolution::kReduced, "one_motor_lost"));
-  ASSERT_TRUE(lost.count("pdu_active2"));
-  EXPECT_EQ(lost.at("pdu_active2").first, "Modelica.Blocks.Sources.Step");
-  EXPECT_EQ(Modifier(lost.at("pdu_active2").second, "startTime"), 2.5);
-  EXPECT_EQ(Modifier(lost.at("pdu_active2").second, "height"), -1.0);
-  EXPECT_EQ(lost.at("pdu_active1").first, "Modelica.Blocks.Sources.Constant");
+  ASSERT_TRUE(lost.count("pdu_motor_lost"));
+  EXPECT_EQ(lost.at("pdu_motor_lost").first, "Modelica.Blocks.Sources.Step");
+  EXPECT_EQ(Modifier(lost.at("pdu_motor_lost").second, "startTime"), 2.5);
+  EXPECT_EQ(Modifier(lost.at("pdu_motor_lost").second, "height"), -1.0);
+  // The example has wing-tip brakes, so both motors also stop on the shutdown command.
+  EXPECT_EQ(lost.at("pdu_active2").first, "Modelica.Blocks.Math.Product");
   ASSERT_TRUE(lost.count("pdu_pob2"));
   EXPECT_EQ(lost.at("pdu_pob2").first, "Modelica.Mechanics.Rotational.Components.Brake");
-  EXPECT_EQ(Modifier(lost.at("pdu_pob_command2").second, "startTime"), 2.5);
-  EXPECT_FALSE(lost.count("pdu_pob1"));
+  EXPECT_EQ(lost.at("pdu_pob_command2").first, "Modelica.Blocks.Math.Add");
 
   const auto running = Declarations(ModelText(HydraulicExample(), ModelResolution::kReduced, "extension"));
-  EXPECT_EQ(running.at("pdu_active2").first, "Modelica.Blocks.Sources.Constant");
-  EXPECT_FALSE(running.count("pdu_pob2"));
+  EXPECT_FALSE(running.count("pdu_motor_lost"));
+  EXPECT_FALSE(running.count("pdu_active2"));
+}
+
+// The wing-tip brake command shuts the hydraulic PDU down, as the simulator's (AddHydraulicPdu
+// with_stop): every motor out of operation (active = 1 - stop), its pressure-off brake applied
+// (1 - active). The Boolean command becomes the 0/1 signal by a BooleanToReal.
+TEST(HydraulicExport, WingTipBrakeCommandShutsThePduDown) {
+  for (const std::string scenario : {"extension", "rupture_wtb"}) {
+    const std::string text = ModelText(HydraulicExample(), ModelResolution::kFull, scenario);
+    const auto declarations = Declarations(text);
+    ASSERT_TRUE(declarations.count("pdu_stop")) << scenario;
+    EXPECT_EQ(declarations.at("pdu_stop").first, "Modelica.Blocks.Math.BooleanToReal");
+    EXPECT_NE(text.find("connect(monitor.wtb, pdu_stop.u)"), std::string::npos) << scenario;
+    EXPECT_NE(text.find("connect(pdu_running.y, pdu_control1.active)"), std::string::npos) << scenario;
+    EXPECT_NE(text.find("connect(pdu_pob_command2.y, pdu_pob2.f_normalized)"), std::string::npos) << scenario;
+  }
 }
 
 // --- The exported hydraulic PDU against the simulator's, element by element ------------------
@@ -155,35 +168,28 @@ TEST(HydraulicExport, MotorLostAtTheScenarioTime) {
 std::string InstanceOf(const std::string& id) {
   if (id == "pdu") return "";  // the simulator's speed sensor (column pdu.w)
   if (id == "pdu.angle") return "pdu";
-  if (id == "pdu.motor_lost") return "pdu_active2";
-  if (id == "pdu.pob_command") return "pdu_pob_command2";
   if (id == "pdu.speed_command") return "pdu_speed";
   std::string name = id;
   std::replace(name.begin(), name.end(), '.', '_');
   return name;
 }
 
-std::string ClassOf(const std::string& type) {
+std::string ClassOf(const std::string& id, const std::string& type) {
+  // The shutdown input: an identity Gain on the 0/1 signal in the simulator, the conversion of
+  // the Boolean wing-tip brake command in Modelica.
+  if (id == "pdu.stop") return "Modelica.Blocks.Math.BooleanToReal";
   static const std::set<std::string> hydraulic = {"PressureSource", "Tank", "TurbulentResistance", "Volume",
                                                   "ServoValve", "DifferentialCylinder",
                                                   "VariableDisplacementMotor", "MotorSpeedControl"};
   if (hydraulic.count(type)) return "HighLift.Hydraulics." + type;
   if (type == "Mass") return "Modelica.Mechanics.Translational.Components.Mass";
   if (type == "AngleSensor") return "Modelica.Mechanics.Rotational.Sensors.AngleSensor";
-  if (type == "Gain") return "Modelica.Blocks.Math.Gain";
+  if (type == "Gain" || type == "Add" || type == "Product") return "Modelica.Blocks.Math." + type;
   if (type == "Step" || type == "Constant" || type == "CombiTimeTable") return "Modelica.Blocks.Sources." + type;
   return "Modelica.Mechanics.Rotational.Components." + type;  // Inertia, IdealGear, IdealPlanetary, Brake
 }
 
-/// Union-find over "instance.port" names.
-struct Groups {
-  std::map<std::string, std::string> parent;
-  std::string Root(const std::string& a) {
-    if (!parent.count(a)) parent[a] = a;
-    return parent[a] == a ? a : parent[a] = Root(parent[a]);
-  }
-  void Join(const std::string& a, const std::string& b) { parent[Root(a)] = Root(b); }
-};
+using Groups = testing::PortGroups;
 
 TEST(HydraulicExport, PduAgreesWithTheSimulatorElementByElement) {
   const Project project = WithMotorLost();
@@ -204,8 +210,9 @@ TEST(HydraulicExport, PduAgreesWithTheSimulatorElementByElement) {
                                           << ") has no exported instance " << instance;
     matched.insert(instance);
     const auto& [cls, modifiers] = exported.at(instance);
-    EXPECT_EQ(cls, ClassOf(e.type)) << e.id;
+    EXPECT_EQ(cls, ClassOf(e.id, e.type)) << e.id;
     if (e.type == "CombiTimeTable") continue;  // the table and its Modelica enumeration
+    if (e.id == "pdu.stop") continue;          // k = 1 of the identity Gain
     const ComponentTypeSpec* spec = FindElementType(e.type);
     ASSERT_NE(spec, nullptr) << e.type;
     for (const auto& [name, value] : e.parameters.scalars) {
@@ -223,14 +230,11 @@ TEST(HydraulicExport, PduAgreesWithTheSimulatorElementByElement) {
     }
   }
   EXPECT_GT(compared, 40);
-  // Every exported part of the PDU is one of the simulator's, but the constant `active` of the
-  // running motor (an unconnected MotorSpeedControl.active is 1 in the simulator).
-  for (const auto& [instance, declaration] : exported) {
-    if (instance.rfind("pdu_", 0) == 0 && !matched.count(instance)) {
-      EXPECT_EQ(instance, "pdu_active1") << "exported " << declaration.first << " " << instance
-                                         << " has no simulator element";
-    }
-  }
+  // Every exported part of the PDU is one of the simulator's (with wing-tip brakes every motor
+  // has its `active` signal; without, the export feeds an unconnected one a constant 1).
+  for (const auto& [instance, declaration] : exported)
+    if (instance.rfind("pdu_", 0) == 0 && !matched.count(instance))
+      ADD_FAILURE() << "exported " << declaration.first << " " << instance << " has no simulator element";
 
   // Connections: two ports of matched parts share a node in the simulator iff they do in the
   // export.

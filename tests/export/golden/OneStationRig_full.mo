@@ -8,7 +8,8 @@ model OneStationRig "one-station rig"
     tau_stall=1000,
     P_max=18000,
     t_ramp=0.4,
-    tauPOB=1100)
+    tauPOB=1100,
+    useStopInput=true)
     annotation (Placement(transformation(extent={{30,-10},{50,10}})));
   Modelica.Blocks.Sources.CombiTimeTable pdu_speed(
     table=[0, 0; 0.4, 25.3; 3, 25.3],
@@ -21,39 +22,74 @@ model OneStationRig "one-station rig"
     tau2_ext=587.5,
     tau2_ret=587.5,
     c1=20000,
+    d=8,
     c2=1000,
     c3=1e+05,
     tauB_max=940,
     J=0.001)
     annotation (Placement(transformation(extent={{70,-10},{90,10}})));
-  HighLift.Mechanical.LossyInertia shaft_1_mass0(J=0.0005768733173872465, tau_C=0.1875)
+  HighLift.Mechanical.LossyInertia shaft_1_mass0(J=0.00028843665869362323, tau_C=0.375, w_small=0.1)
     annotation (Placement(transformation(extent={{110,-10},{130,10}})));
-  HighLift.Mechanical.LossyInertia shaft_1_mass1(J=0.001153746634774493, tau_C=0.375)
+  Modelica.Mechanics.Rotational.Components.Inertia shaft_1_mass1(J=0.0005768733173872465)
     annotation (Placement(transformation(extent={{190,-10},{210,10}})));
-  Modelica.Mechanics.Rotational.Components.SpringDamper shaft_1_spring1(c=5104.560274517616, d=0)
+  Modelica.Mechanics.Rotational.Components.SpringDamper shaft_1_spring1(
+    c=10209.120549035231,
+    d=4.083648219614092)
     annotation (Placement(transformation(extent={{150,-10},{170,10}})));
-  HighLift.Mechanical.LossyInertia shaft_1_mass2(J=0.0005768733173872465, tau_C=0.1875)
+  Modelica.Mechanics.Rotational.Components.Inertia shaft_1_mass2(J=0.0005768733173872465)
     annotation (Placement(transformation(extent={{270,-10},{290,10}})));
-  Modelica.Mechanics.Rotational.Components.SpringDamper shaft_1_spring2(c=5104.560274517616, d=0)
+  Modelica.Mechanics.Rotational.Components.SpringDamper shaft_1_spring2(
+    c=10209.120549035231,
+    d=4.083648219614092)
     annotation (Placement(transformation(extent={{230,-10},{250,10}})));
+  Modelica.Mechanics.Rotational.Components.Inertia shaft_1_mass3(J=0.0005768733173872465)
+    annotation (Placement(transformation(extent={{350,-10},{370,10}})));
+  Modelica.Mechanics.Rotational.Components.SpringDamper shaft_1_spring3(
+    c=10209.120549035231,
+    d=4.083648219614092)
+    annotation (Placement(transformation(extent={{310,-10},{330,10}})));
+  HighLift.Mechanical.LossyInertia shaft_1_mass4(J=0.00028843665869362323, tau_C=0.375, w_small=0.1)
+    annotation (Placement(transformation(extent={{430,-10},{450,10}})));
+  Modelica.Mechanics.Rotational.Components.SpringDamper shaft_1_spring4(
+    c=10209.120549035231,
+    d=4.083648219614092)
+    annotation (Placement(transformation(extent={{390,-10},{410,10}})));
   HighLift.Mechanical.LossyInertia brg_1(
     J=5e-05,
     tau_C=0.1,
     d_vis=1e-04,
     tau_S=0.034999999999999996,
-    f_exp=10)
-    annotation (Placement(transformation(extent={{310,-10},{330,10}})));
-  HighLift.Mechanical.LossyInertia shaft_2_mass0(J=0.00038458221159149764, tau_C=0.125)
-    annotation (Placement(transformation(extent={{350,-10},{370,10}})));
-  HighLift.Mechanical.LossyInertia shaft_2_mass1(J=0.0007691644231829953, tau_C=0.25)
-    annotation (Placement(transformation(extent={{430,-10},{450,10}})));
-  HighLift.Mechanical.Disconnector shaft_2_spring1(c=7656.840411776423, d=0, t_disconnect=1)
-    "rupture of shaft_2"
-    annotation (Placement(transformation(extent={{390,-10},{410,10}})));
-  HighLift.Mechanical.LossyInertia shaft_2_mass2(J=0.00038458221159149764, tau_C=0.125)
-    annotation (Placement(transformation(extent={{430,-50},{450,-30}})));
-  Modelica.Mechanics.Rotational.Components.SpringDamper shaft_2_spring2(c=7656.840411776423, d=0)
+    f_exp=10,
+    w_small=0.1)
     annotation (Placement(transformation(extent={{470,-10},{490,10}})));
+  HighLift.Mechanical.LossyInertia shaft_2_mass0(J=0.00019229110579574882, tau_C=0.25, w_small=0.1)
+    annotation (Placement(transformation(extent={{510,-10},{530,10}})));
+  Modelica.Mechanics.Rotational.Components.Inertia shaft_2_mass1(J=0.00038458221159149764)
+    annotation (Placement(transformation(extent={{590,-10},{610,10}})));
+  Modelica.Mechanics.Rotational.Components.SpringDamper shaft_2_spring1(
+    c=15313.680823552846,
+    d=6.125472329421139)
+    annotation (Placement(transformation(extent={{550,-10},{570,10}})));
+  Modelica.Mechanics.Rotational.Components.Inertia shaft_2_mass2(J=0.00038458221159149764)
+    annotation (Placement(transformation(extent={{670,-10},{690,10}})));
+  HighLift.Mechanical.Disconnector shaft_2_spring2(
+    c=15313.680823552846,
+    d=6.125472329421139,
+    t_disconnect=1)
+    "rupture of shaft_2"
+    annotation (Placement(transformation(extent={{630,-10},{650,10}})));
+  Modelica.Mechanics.Rotational.Components.Inertia shaft_2_mass3(J=0.00038458221159149764)
+    annotation (Placement(transformation(extent={{670,-50},{690,-30}})));
+  Modelica.Mechanics.Rotational.Components.SpringDamper shaft_2_spring3(
+    c=15313.680823552846,
+    d=6.125472329421139)
+    annotation (Placement(transformation(extent={{710,-10},{730,10}})));
+  HighLift.Mechanical.LossyInertia shaft_2_mass4(J=0.00019229110579574882, tau_C=0.25, w_small=0.1)
+    annotation (Placement(transformation(extent={{590,-50},{610,-30}})));
+  Modelica.Mechanics.Rotational.Components.SpringDamper shaft_2_spring4(
+    c=15313.680823552846,
+    d=6.125472329421139)
+    annotation (Placement(transformation(extent={{630,-50},{650,-30}})));
   HighLift.Mechanical.BranchGearbox gbx_1(
     ratio=2,
     elastic=false,
@@ -62,19 +98,21 @@ model OneStationRig "one-station rig"
     d_vis=1e-04,
     tau_S=0.034999999999999996,
     f_exp=10,
-    eta_GE=0.97)
-    annotation (Placement(transformation(extent={{390,-50},{410,-30}})));
+    eta_GE=0.97,
+    w_small=0.1)
+    annotation (Placement(transformation(extent={{550,-50},{570,-30}})));
   HighLift.Mechanical.TorqueLimiter stl_1(
     tau1_ext=90,
     tau1_ret=62.99999999999999,
     tau2_ext=112.5,
     tau2_ret=78.74999999999999,
     c1=20000,
+    d=8,
     c2=1000,
     c3=1e+05,
     tauB_max=180,
     J=5e-04)
-    annotation (Placement(transformation(extent={{430,-90},{450,-70}})));
+    annotation (Placement(transformation(extent={{590,-90},{610,-70}})));
   HighLift.Mechanical.GearedRotaryActuator gra_1(
     ratio=200,
     eta_op=0.85,
@@ -86,17 +124,34 @@ model OneStationRig "one-station rig"
     tau_C=0.2,
     d_vis=2e-04,
     tau_S=0.06999999999999999,
-    f_exp=10)
+    f_exp=10,
+    w_small=0.1)
+    annotation (Placement(transformation(extent={{630,-90},{650,-70}})));
+  HighLift.Mechanical.LossyInertia shaft_3_mass0(J=9.462164588444298e-05, tau_C=0.1875, w_small=0.1)
+    annotation (Placement(transformation(extent={{510,-50},{530,-30}})));
+  Modelica.Mechanics.Rotational.Components.Inertia shaft_3_mass1(J=0.00018924329176888595)
+    annotation (Placement(transformation(extent={{430,-50},{450,-30}})));
+  Modelica.Mechanics.Rotational.Components.SpringDamper shaft_3_spring1(
+    c=13396.407984444013,
+    d=5.358563193777606)
     annotation (Placement(transformation(extent={{470,-50},{490,-30}})));
-  HighLift.Mechanical.LossyInertia shaft_3_mass0(J=0.00018924329176888595, tau_C=0.09375)
+  Modelica.Mechanics.Rotational.Components.Inertia shaft_3_mass2(J=0.00018924329176888595)
     annotation (Placement(transformation(extent={{350,-50},{370,-30}})));
-  HighLift.Mechanical.LossyInertia shaft_3_mass1(J=0.0003784865835377719, tau_C=0.1875)
+  Modelica.Mechanics.Rotational.Components.SpringDamper shaft_3_spring2(
+    c=13396.407984444013,
+    d=5.358563193777606)
+    annotation (Placement(transformation(extent={{390,-50},{410,-30}})));
+  Modelica.Mechanics.Rotational.Components.Inertia shaft_3_mass3(J=0.00018924329176888595)
     annotation (Placement(transformation(extent={{270,-50},{290,-30}})));
-  Modelica.Mechanics.Rotational.Components.SpringDamper shaft_3_spring1(c=6698.2039922220065, d=0)
+  Modelica.Mechanics.Rotational.Components.SpringDamper shaft_3_spring3(
+    c=13396.407984444013,
+    d=5.358563193777606)
     annotation (Placement(transformation(extent={{310,-50},{330,-30}})));
-  HighLift.Mechanical.LossyInertia shaft_3_mass2(J=0.00018924329176888595, tau_C=0.09375)
+  HighLift.Mechanical.LossyInertia shaft_3_mass4(J=9.462164588444298e-05, tau_C=0.1875, w_small=0.1)
     annotation (Placement(transformation(extent={{190,-50},{210,-30}})));
-  Modelica.Mechanics.Rotational.Components.SpringDamper shaft_3_spring2(c=6698.2039922220065, d=0)
+  Modelica.Mechanics.Rotational.Components.SpringDamper shaft_3_spring4(
+    c=13396.407984444013,
+    d=5.358563193777606)
     annotation (Placement(transformation(extent={{230,-50},{250,-30}})));
   Modelica.Mechanics.Rotational.Components.Inertia appu(J=1e-05)
     annotation (Placement(transformation(extent={{150,-50},{170,-30}})));
@@ -104,15 +159,15 @@ model OneStationRig "one-station rig"
     annotation (Placement(transformation(extent={{110,-130},{130,-110}})));
   Modelica.Mechanics.Rotational.Sources.Torque gra_1_load
     "airload on gra_1 (positive table values oppose the motion)"
-    annotation (Placement(transformation(extent={{510,-10},{530,10}})));
+    annotation (Placement(transformation(extent={{670,-90},{690,-70}})));
   Modelica.Mechanics.Rotational.Sensors.AngleSensor gra_1_angle
     "output angle of gra_1"
-    annotation (Placement(transformation(extent={{510,-50},{530,-30}})));
+    annotation (Placement(transformation(extent={{670,-130},{690,-110}})));
   Modelica.Blocks.Tables.CombiTable1Ds gra_1_loadTable(
     table=[0, -5000; 2.2, -20000],
     extrapolation=Modelica.Blocks.Types.Extrapolation.HoldLastPoint)
     "airload [N*m] against the output angle of gra_1 [rad]"
-    annotation (Placement(transformation(extent={{550,-10},{570,10}})));
+    annotation (Placement(transformation(extent={{710,-50},{730,-30}})));
   HighLift.Control.Monitoring monitor(
     phi_asym=12.566370614359172,
     w_over=32.89,
@@ -141,50 +196,74 @@ equation
     annotation (Line(points={{210,0},{230,0}}));
   connect(shaft_1_spring2.flange_b, shaft_1_mass2.flange_a)
     annotation (Line(points={{250,0},{270,0}}));
-  connect(shaft_2_mass0.flange_b, shaft_2_spring1.flange_a)
+  connect(shaft_1_mass2.flange_b, shaft_1_spring3.flange_a)
+    annotation (Line(points={{290,0},{310,0}}));
+  connect(shaft_1_spring3.flange_b, shaft_1_mass3.flange_a)
+    annotation (Line(points={{330,0},{350,0}}));
+  connect(shaft_1_mass3.flange_b, shaft_1_spring4.flange_a)
     annotation (Line(points={{370,0},{390,0}}));
-  connect(shaft_2_spring1.flange_b, shaft_2_mass1.flange_a)
+  connect(shaft_1_spring4.flange_b, shaft_1_mass4.flange_a)
     annotation (Line(points={{410,0},{430,0}}));
+  connect(shaft_2_mass0.flange_b, shaft_2_spring1.flange_a)
+    annotation (Line(points={{530,0},{550,0}}));
+  connect(shaft_2_spring1.flange_b, shaft_2_mass1.flange_a)
+    annotation (Line(points={{570,0},{590,0}}));
   connect(shaft_2_mass1.flange_b, shaft_2_spring2.flange_a)
-    annotation (Line(points={{450,0},{470,0}}));
+    annotation (Line(points={{610,0},{630,0}}));
   connect(shaft_2_spring2.flange_b, shaft_2_mass2.flange_a)
-    annotation (Line(points={{490,0},{430,-40}}));
+    annotation (Line(points={{650,0},{670,0}}));
+  connect(shaft_2_mass2.flange_b, shaft_2_spring3.flange_a)
+    annotation (Line(points={{690,0},{710,0}}));
+  connect(shaft_2_spring3.flange_b, shaft_2_mass3.flange_a)
+    annotation (Line(points={{730,0},{670,-40}}));
+  connect(shaft_2_mass3.flange_b, shaft_2_spring4.flange_a)
+    annotation (Line(points={{690,-40},{630,-40}}));
+  connect(shaft_2_spring4.flange_b, shaft_2_mass4.flange_a)
+    annotation (Line(points={{650,-40},{590,-40}}));
   connect(shaft_3_mass0.flange_b, shaft_3_spring1.flange_a)
-    annotation (Line(points={{370,-40},{310,-40}}));
+    annotation (Line(points={{530,-40},{470,-40}}));
   connect(shaft_3_spring1.flange_b, shaft_3_mass1.flange_a)
-    annotation (Line(points={{330,-40},{270,-40}}));
+    annotation (Line(points={{490,-40},{430,-40}}));
   connect(shaft_3_mass1.flange_b, shaft_3_spring2.flange_a)
-    annotation (Line(points={{290,-40},{230,-40}}));
+    annotation (Line(points={{450,-40},{390,-40}}));
   connect(shaft_3_spring2.flange_b, shaft_3_mass2.flange_a)
+    annotation (Line(points={{410,-40},{350,-40}}));
+  connect(shaft_3_mass2.flange_b, shaft_3_spring3.flange_a)
+    annotation (Line(points={{370,-40},{310,-40}}));
+  connect(shaft_3_spring3.flange_b, shaft_3_mass3.flange_a)
+    annotation (Line(points={{330,-40},{270,-40}}));
+  connect(shaft_3_mass3.flange_b, shaft_3_spring4.flange_a)
+    annotation (Line(points={{290,-40},{230,-40}}));
+  connect(shaft_3_spring4.flange_b, shaft_3_mass4.flange_a)
     annotation (Line(points={{250,-40},{190,-40}}));
   connect(pdu.flange_left, stl.flange_a)
     annotation (Line(points={{40,10},{70,0}}));
   connect(stl.flange_b, shaft_1_mass0.flange_a)
     annotation (Line(points={{90,0},{110,0}}));
-  connect(shaft_1_mass2.flange_b, brg_1.flange_a)
-    annotation (Line(points={{290,0},{310,0}}));
+  connect(shaft_1_mass4.flange_b, brg_1.flange_a)
+    annotation (Line(points={{450,0},{470,0}}));
   connect(brg_1.flange_b, shaft_2_mass0.flange_a)
-    annotation (Line(points={{330,0},{350,0}}));
-  connect(shaft_2_mass2.flange_b, gbx_1.flange_a)
-    annotation (Line(points={{450,-40},{390,-40}}));
+    annotation (Line(points={{490,0},{510,0}}));
+  connect(shaft_2_mass4.flange_b, gbx_1.flange_a)
+    annotation (Line(points={{610,-40},{550,-40}}));
   connect(gbx_1.flange_branch, stl_1.flange_a)
-    annotation (Line(points={{400,-30},{430,-80}}));
+    annotation (Line(points={{560,-30},{590,-80}}));
   connect(stl_1.flange_b, gra_1.flange_a)
-    annotation (Line(points={{450,-80},{470,-40}}));
+    annotation (Line(points={{610,-80},{630,-80}}));
   connect(gbx_1.flange_b, shaft_3_mass0.flange_a)
-    annotation (Line(points={{410,-40},{350,-40}}));
-  connect(shaft_3_mass2.flange_b, appu.flange_a)
+    annotation (Line(points={{570,-40},{510,-40}}));
+  connect(shaft_3_mass4.flange_b, appu.flange_a)
     annotation (Line(points={{210,-40},{150,-40}}));
   connect(appu.flange_b, wtb.flange_a)
     annotation (Line(points={{170,-40},{110,-120}}));
   connect(gra_1_load.flange, gra_1.flange_b)
-    annotation (Line(points={{530,0},{490,-40}}));
+    annotation (Line(points={{690,-80},{650,-80}}));
   connect(gra_1.flange_b, gra_1_angle.flange)
-    annotation (Line(points={{490,-40},{530,-40}}));
+    annotation (Line(points={{650,-80},{690,-120}}));
   connect(gra_1_angle.phi, gra_1_loadTable.u)
-    annotation (Line(points={{531,-46},{548,0}}, color={0,0,127}));
+    annotation (Line(points={{691,-126},{708,-40}}, color={0,0,127}));
   connect(gra_1_loadTable.y[1], gra_1_load.tau)
-    annotation (Line(points={{560,0},{508,0}}, color={0,0,127}));
+    annotation (Line(points={{720,-40},{668,-80}}, color={0,0,127}));
   connect(appu.flange_a, appu_phi.flange)
     annotation (Line(points={{150,-40},{130,-40}}));
   connect(appu.flange_a, appu_w.flange)
@@ -205,14 +284,16 @@ equation
     annotation (Line(points={{51,-40},{80,-40}}, color={0,0,127}));
   connect(monitor.wtb, wtb.apply)
     annotation (Line(points={{80,-40},{120,-108}}, color={0,0,127}));
+  connect(monitor.wtb, pdu.stop)
+    annotation (Line(points={{80,-40},{40,0}}, color={0,0,127}));
 
   annotation (
     experiment(StopTime=3, Tolerance=1e-06, Interval=0.001),
-    Diagram(coordinateSystem(preserveAspectRatio=false, extent={{-20,-140},{580,20}})),
+    Diagram(coordinateSystem(preserveAspectRatio=false, extent={{-20,-140},{740,20}})),
     Documentation(info="<html>
-<p>Drive system of the highlift project <strong>one-station rig</strong>, exported by <code>highlift export</code> at full resolution (each torque shaft split into 2 elements).</p>
+<p>Drive system of the highlift project <strong>one-station rig</strong>, exported by <code>highlift export</code> at full resolution (each torque shaft split into 4 elements).</p>
 <p>A PDU drives one wing transmission: system torque limiter, two shaft segments with a steady bearing, a station (T-gearbox, station torque limiter, geared rotary actuator) and the outboard shaft to the APPU and the wing-tip brake. Numbers: domain.md s3 (E) and the catalogue defaults.</p>
 <p>Scenario <strong>rupture_wtb</strong> (rupture), load case <strong>extend_opposing</strong> (extend).</p>
-<p>Positive rotation is the extend direction. The initial state is the drive at rest.</p>
+<p>Positive rotation is the extend direction. The model starts at rest with untwisted springs (the simulator starts from the static equilibrium of the loads held by the parked brakes; see docs/modelica.md for the same start in a Modelica tool).</p>
 </html>"));
 end OneStationRig;

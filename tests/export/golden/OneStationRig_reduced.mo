@@ -8,7 +8,8 @@ model OneStationRig "one-station rig"
     tau_stall=1000,
     P_max=18000,
     t_ramp=0.4,
-    tauPOB=1100)
+    tauPOB=1100,
+    useStopInput=true)
     annotation (Placement(transformation(extent={{30,-10},{50,10}})));
   Modelica.Blocks.Sources.CombiTimeTable pdu_speed(
     table=[0, 0; 0.4, 25.3; 3, 25.3],
@@ -21,6 +22,7 @@ model OneStationRig "one-station rig"
     tau2_ext=587.5,
     tau2_ret=587.5,
     c1=20000,
+    d=8,
     c2=1000,
     c3=1e+05,
     tauB_max=940,
@@ -34,7 +36,8 @@ model OneStationRig "one-station rig"
     d_vis=1e-04,
     tau_S=0.034999999999999996,
     f_exp=10,
-    eta_GE=0.97)
+    eta_GE=0.97,
+    w_small=0.1)
     annotation (Placement(transformation(extent={{230,-10},{250,10}})));
   HighLift.Mechanical.TorqueLimiter stl_1(
     tau1_ext=90,
@@ -42,6 +45,7 @@ model OneStationRig "one-station rig"
     tau2_ext=112.5,
     tau2_ret=78.74999999999999,
     c1=20000,
+    d=8,
     c2=1000,
     c3=1e+05,
     tauB_max=180,
@@ -58,28 +62,40 @@ model OneStationRig "one-station rig"
     tau_C=0.2,
     d_vis=2e-04,
     tau_S=0.06999999999999999,
-    f_exp=10)
+    f_exp=10,
+    w_small=0.1)
     annotation (Placement(transformation(extent={{310,-10},{330,10}})));
   Modelica.Mechanics.Rotational.Components.Inertia appu(J=1e-05)
     annotation (Placement(transformation(extent={{150,-50},{170,-30}})));
   HighLift.Mechanical.WingTipBrake wtb(tauB_max=550, tauB_lim=700, t_B=0.03, t_lat=0.1, J=5e-04)
     annotation (Placement(transformation(extent={{110,-130},{130,-110}})));
-  HighLift.Mechanical.LossyInertia shaft_1_shaft_2_massA(J=0.0019479110579574883, tau_C=0.675)
+  HighLift.Mechanical.LossyInertia shaft_1_shaft_2_massA(
+    J=0.0019479110579574883,
+    tau_C=0.675,
+    w_small=0.1)
     "lumped: shaft_1, brg_1, shaft_2"
     annotation (Placement(transformation(extent={{110,-10},{130,10}})));
-  HighLift.Mechanical.Disconnector shaft_1_shaft_2(c=1531.3680823552847, d=0, t_disconnect=1)
+  HighLift.Mechanical.Disconnector shaft_1_shaft_2(
+    c=1531.3680823552847,
+    d=0.6125472329421139,
+    t_disconnect=1)
     "series stiffness of shaft_1, brg_1, shaft_2 (ruptures)"
     annotation (Placement(transformation(extent={{150,-10},{170,10}})));
-  HighLift.Mechanical.LossyInertia shaft_1_shaft_2_massB(J=0.0019479110579574883, tau_C=0.675)
+  HighLift.Mechanical.LossyInertia shaft_1_shaft_2_massB(
+    J=0.0019479110579574883,
+    tau_C=0.675,
+    w_small=0.1)
     "lumped: shaft_1, brg_1, shaft_2"
     annotation (Placement(transformation(extent={{190,-10},{210,10}})));
-  HighLift.Mechanical.LossyInertia shaft_3_massA(J=0.0003784865835377719, tau_C=0.1875)
+  HighLift.Mechanical.LossyInertia shaft_3_massA(J=0.0003784865835377719, tau_C=0.1875, w_small=0.1)
     "lumped: shaft_3"
     annotation (Placement(transformation(extent={{270,-50},{290,-30}})));
-  Modelica.Mechanics.Rotational.Components.SpringDamper shaft_3(c=3349.1019961110032, d=0)
+  Modelica.Mechanics.Rotational.Components.SpringDamper shaft_3(
+    c=3349.1019961110032,
+    d=1.3396407984444014)
     "series stiffness of shaft_3"
     annotation (Placement(transformation(extent={{230,-50},{250,-30}})));
-  HighLift.Mechanical.LossyInertia shaft_3_massB(J=0.0003784865835377719, tau_C=0.1875)
+  HighLift.Mechanical.LossyInertia shaft_3_massB(J=0.0003784865835377719, tau_C=0.1875, w_small=0.1)
     "lumped: shaft_3"
     annotation (Placement(transformation(extent={{190,-50},{210,-30}})));
   Modelica.Mechanics.Rotational.Sources.Torque gra_1_load
@@ -165,6 +181,8 @@ equation
     annotation (Line(points={{51,-40},{80,-40}}, color={0,0,127}));
   connect(monitor.wtb, wtb.apply)
     annotation (Line(points={{80,-40},{120,-108}}, color={0,0,127}));
+  connect(monitor.wtb, pdu.stop)
+    annotation (Line(points={{80,-40},{40,0}}, color={0,0,127}));
 
   annotation (
     experiment(StopTime=3, Tolerance=1e-06, Interval=0.001),
@@ -173,7 +191,7 @@ equation
 <p>Drive system of the highlift project <strong>one-station rig</strong>, exported by <code>highlift export</code> at reduced resolution (inertias lumped at gearboxes and stations).</p>
 <p>A PDU drives one wing transmission: system torque limiter, two shaft segments with a steady bearing, a station (T-gearbox, station torque limiter, geared rotary actuator) and the outboard shaft to the APPU and the wing-tip brake. Numbers: domain.md s3 (E) and the catalogue defaults.</p>
 <p>Scenario <strong>rupture_wtb</strong> (rupture), load case <strong>extend_opposing</strong> (extend).</p>
-<p>Positive rotation is the extend direction. The initial state is the drive at rest.</p>
+<p>Positive rotation is the extend direction. The model starts at rest with untwisted springs (the simulator starts from the static equilibrium of the loads held by the parked brakes; see docs/modelica.md for the same start in a Modelica tool).</p>
 <p>Lumped chains (spring-damper or inertia: members):</p>
 <ul>
 <li>shaft_1_shaft_2: shaft_1, brg_1, shaft_2</li>

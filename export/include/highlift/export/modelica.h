@@ -5,8 +5,10 @@
 //   classes directly, with the project's instance names and parameters, so that a Modelica tool
 //   reproduces the MSL reference results.
 // - A drive-system project ("components"/"connections") becomes a model built from HighLift and
-//   MSL components: full resolution (each shaft split into settings.shaft_elements elements) or
-//   reduced (inertias lumped at gearboxes and stations), driven by a scenario's load case.
+//   MSL components: full resolution (each shaft split into settings.shaft_elements elements, at
+//   least 4) or reduced (inertias lumped at gearboxes and stations), driven by a scenario's load
+//   case. The translation is the simulator's (sim::BuildDriveNetwork): the same elements,
+//   parameter values and connections.
 //
 // Output is deterministic: the same project and options give byte-identical files.
 #pragma once
@@ -23,7 +25,7 @@ namespace highlift {
 
 /// Resolution of a drive-system model.
 enum class ModelResolution {
-  kFull,     ///< every shaft segment split into settings.shaft_elements spring-inertia elements
+  kFull,     ///< every shaft segment split into settings.shaft_elements (>= 4) spring-inertia elements
   kReduced,  ///< inertias lumped at gearboxes and stations, one spring per segment
 };
 

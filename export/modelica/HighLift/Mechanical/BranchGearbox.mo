@@ -19,11 +19,13 @@ model BranchGearbox "T-gearbox or down-drive: 1:1 through-drive and a geared bra
   parameter SI.Torque tau_S(min=0) = 0 "Stribeck torque at standstill, equation (3)";
   parameter Real f_exp(unit="s/rad", min=0) = 10 "Decay of the Stribeck torque with speed, equation (3)";
   parameter Real eta_GE(min=0, max=1) = 1 "Efficiency of the branch gear meshes, equation (4)";
+  parameter SI.AngularVelocity w_small(min=0) = 0
+    "Regularisation speed: 0 = exact stick/slip; > 0 = friction scaled by tanh(w/w_small), no stick/slip";
 
   Modelica.Mechanics.Rotational.Interfaces.Flange_b flange_branch "Down-drive flange to the station"
     annotation (Placement(transformation(extent={{-10,90},{10,110}})));
   GeneralRotationalElement branch(elastic=elastic, c=c, d=d, b=b, J=J, tau_C=tau_C, d_vis=d_vis,
-    tau_S=tau_S, f_exp=f_exp, eta_GE=eta_GE, ratio=ratio, useSupport=true)
+    tau_S=tau_S, f_exp=f_exp, eta_GE=eta_GE, w_small=w_small, ratio=ratio, useSupport=true)
     annotation (Placement(transformation(
         origin={0,40},
         extent={{-10,-10},{10,10}},
@@ -56,7 +58,9 @@ A T-gearbox or station down-drive: the transmission passes through 1:1 from
 <a href=\"modelica://HighLift.Mechanical.GeneralRotationalElement\">GeneralRotationalElement</a>
 drives the station at <code>flange_branch</code> with
 <code>ratio</code> = input speed / branch speed. Inertia, friction (equation 3) and the
-load-dependent mesh loss (equation 4, with the torque of the branch) are referred to the input.
+load-dependent mesh loss (equation 4, with the torque of the branch) are referred to the input;
+with <code>w_small &gt; 0</code> they follow the regularised law of
+<a href=\"modelica://HighLift.Mechanical.StribeckFriction\">StribeckFriction</a> (no stick/slip).
 </p>
 </html>"));
 end BranchGearbox;

@@ -25,13 +25,15 @@ model GearedRotaryActuator "Geared rotary actuator: single-stage gearbox whose e
   parameter SI.Torque tau_S(min=0) = 0 "Stribeck torque at standstill, equation (3)";
   parameter Real f_exp(unit="s/rad", min=0) = 10 "Decay of the Stribeck torque with speed, equation (3)";
   parameter Real peak(min=1) = 1 "Static friction at standstill = peak*(tau_C + tau_S)";
+  parameter SI.AngularVelocity w_small(min=0) = 0
+    "Regularisation speed: 0 = exact stick/slip; > 0 = friction and load loss scaled by tanh(w/w_small), no stick/slip";
 
   Modelica.Mechanics.Rotational.Components.ElastoBacklash elastoBacklash(c=c, d=d, b=b) if elastic
     annotation (Placement(transformation(extent={{-90,-10},{-70,10}})));
   Modelica.Mechanics.Rotational.Components.Inertia inputInertia(J=J_in)
     annotation (Placement(transformation(extent={{-60,-10},{-40,10}})));
   StribeckFriction friction(tau_C=tau_C, d_vis=d_vis, tau_S=tau_S, f_exp=f_exp, peak=peak,
-    useEfficiencyInput=true, useSupport=true)
+    w_small=w_small, useEfficiencyInput=true, useSupport=true)
     annotation (Placement(transformation(extent={{-20,-10},{0,10}})));
   Modelica.Mechanics.Rotational.Components.IdealGear idealGear(ratio=ratio, useSupport=true)
     annotation (Placement(transformation(extent={{20,-10},{40,10}})));
@@ -45,6 +47,10 @@ model GearedRotaryActuator "Geared rotary actuator: single-stage gearbox whose e
   Real eta_end(min=0, max=1) "Final efficiency for the current direction of power flow";
   discrete SI.Angle phi_start "Input angle at the last start, stop or reversal";
 
+protected
+  final parameter Boolean regularised = w_small > 0
+    "= true: the friction has no stick/slip modes; figure 7 restarts at the speed reversals";
+
 initial equation
   pre(phi_start) = friction.phi;
 
@@ -52,7 +58,10 @@ equation
   // Figure 7: after a start or reversal the teeth come into contact one after the other, so
   // the load-dependent loss builds up over the input angle phi_eta; when the unit stops, the
   // efficiency rises linearly to 1 below the speed w_eta.
-  when change(friction.mode) then
+  // The start angle: at each change of the friction mode (stick/slip), or with the regularised
+  // friction (no modes) at each zero crossing of the input speed (a start or a reversal).
+  when {not regularised and change(friction.mode), regularised and friction.w > 0,
+      regularised and friction.w < 0} then
     phi_start = friction.phi;
   end when;
   e_angle = min(1, abs(friction.phi - phi_start)/phi_eta);
@@ -121,7 +130,11 @@ starts to move but builds up as the teeth come into contact (figure 7):
 so that when the unit stops, <code>eta_GE</code> rises linearly to 1 below the speed threshold
 <code>w_eta</code> (figure 7a) and the load-dependent friction disappears; when it starts again,
 <code>eta_GE</code> is a function of the input angle <code>phi_in</code> and settles to the
-final value for the sign of the transmitted power (figure 7b).
+final value for the sign of the transmitted power (figure 7b). The start angle
+<code>phi_start</code> is taken at each change of the friction mode (start, stop, reversal);
+with the regularised friction (<code>w_small &gt; 0</code>, no stick/slip modes, see
+<a href=\"modelica://HighLift.Mechanical.StribeckFriction\">StribeckFriction</a>) at each zero
+crossing of the input speed, as in the simulator.
 </p>
 </html>"));
 end GearedRotaryActuator;

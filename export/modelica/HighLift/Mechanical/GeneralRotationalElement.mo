@@ -18,12 +18,14 @@ model GeneralRotationalElement "General rotational element: ElastoBacklash, Loss
   parameter Real f_exp(unit="s/rad", min=0) = 10 "Decay of the Stribeck torque with speed, equation (3)";
   parameter Real peak(min=1) = 1 "Static friction at standstill = peak*(tau_C + tau_S)";
   parameter Real eta_GE(min=0, max=1) = 1 "Gearbox efficiency of the load-dependent loss, equation (4)";
+  parameter SI.AngularVelocity w_small(min=0) = 0
+    "Regularisation speed: 0 = exact stick/slip; > 0 = friction scaled by tanh(w/w_small), no stick/slip";
   parameter Real ratio(start=1) "Gear ratio, speed of flange_a / speed of flange_b";
 
   Modelica.Mechanics.Rotational.Components.ElastoBacklash elastoBacklash(c=c, d=d, b=b) if elastic
     annotation (Placement(transformation(extent={{-70,-10},{-50,10}})));
   LossyInertia lossyInertia(J=J, tau_C=tau_C, d_vis=d_vis, tau_S=tau_S, f_exp=f_exp, peak=peak,
-    eta_GE=eta_GE, useSupport=true)
+    eta_GE=eta_GE, w_small=w_small, useSupport=true)
     annotation (Placement(transformation(extent={{-10,-10},{10,10}})));
   Modelica.Mechanics.Rotational.Components.IdealGear idealGear(ratio=ratio, useSupport=true)
     annotation (Placement(transformation(extent={{50,-10},{70,10}})));
@@ -71,7 +73,8 @@ series, from <code>flange_a</code> to <code>flange_b</code>:
 <li><code>Modelica.Mechanics.Rotational.Components.ElastoBacklash</code> (<code>c</code>,
     <code>d</code>, <code>b</code>); left out when <code>elastic = false</code>;</li>
 <li><a href=\"modelica://HighLift.Mechanical.LossyInertia\">LossyInertia</a> (<code>J</code>,
-    Stribeck friction of equation 3, load-dependent loss of equation 4);</li>
+    Stribeck friction of equation 3, load-dependent loss of equation 4; regularised without
+    stick/slip when <code>w_small &gt; 0</code>);</li>
 <li><code>Modelica.Mechanics.Rotational.Components.IdealGear</code>
     (<code>ratio</code> = speed of flange_a / speed of flange_b).</li>
 </ol>

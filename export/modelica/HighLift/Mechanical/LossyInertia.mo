@@ -10,11 +10,13 @@ model LossyInertia "Inertia with Stribeck bearing friction and load-dependent ge
   parameter Real f_exp(unit="s/rad", min=0) = 10 "Decay of the Stribeck torque with speed, equation (3)";
   parameter Real peak(min=1) = 1 "Static friction at standstill = peak*(tau_C + tau_S)";
   parameter Real eta_GE(min=0, max=1) = 1 "Gearbox efficiency of the load-dependent loss, equation (4)";
+  parameter SI.AngularVelocity w_small(min=0) = 0
+    "Regularisation speed: 0 = exact stick/slip; > 0 = friction scaled by tanh(w/w_small), no stick/slip";
 
   Modelica.Mechanics.Rotational.Components.Inertia inertia(J=J)
     annotation (Placement(transformation(extent={{-60,-10},{-40,10}})));
   StribeckFriction friction(tau_C=tau_C, d_vis=d_vis, tau_S=tau_S, f_exp=f_exp, peak=peak,
-    eta_GE=eta_GE, useSupport=true)
+    w_small=w_small, eta_GE=eta_GE, useSupport=true)
     annotation (Placement(transformation(extent={{20,-10},{40,10}})));
 
 equation
@@ -50,7 +52,9 @@ The modified inertia of the paper (<em>LossyInertia</em>): a rigid rotating mass
 </pre>
 <p>
 (equations 3 and 4, see <a href=\"modelica://HighLift.Mechanical.StribeckFriction\">StribeckFriction</a>),
-with stiction at standstill. The housing reacts the friction torque only; with
+with stiction at standstill, or with <code>w_small &gt; 0</code> the regularised law
+<code>tau_fric = tanh(w/w_small)*(tau_C + tau_S*exp(-f_exp*|w|) + (1 - eta_GE)*|tau_load|) + d_vis*w</code>
+without stick/slip. The housing reacts the friction torque only; with
 <code>useSupport=true</code> it is available at the support flange.
 </p>
 </html>"));
