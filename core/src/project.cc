@@ -29,6 +29,19 @@ const Scenario* Project::FindScenario(std::string_view name) const {
   return nullptr;
 }
 
+std::vector<std::vector<double>> SpeedCommandRows(const LoadCase* load_case) {
+  std::vector<std::vector<double>> rows;
+  if (load_case && load_case->pdu_speed && !load_case->pdu_speed->x.empty()) {
+    const double direction = load_case->direction == "retract" ? -1.0 : 1.0;
+    const Table& t = *load_case->pdu_speed;
+    for (std::size_t i = 0; i < t.x.size(); ++i) rows.push_back({t.x[i], direction * t.y[i]});
+  } else {
+    rows = {{0.0, 0.0}, {1.0, 0.0}};
+  }
+  if (rows.size() == 1) rows.push_back({rows[0][0] + 1.0, rows[0][1]});
+  return rows;
+}
+
 const LoadCase* Project::FindLoadCase(std::string_view name) const {
   for (const auto& l : load_cases)
     if (l.name == name) return &l;

@@ -170,7 +170,6 @@ class DriveSystemWriter {
   double Beta() const { return project_.settings.structural_damping; }
   /// Shaft elements at full resolution: the project's setting, at least kMinShaftElements.
   int ShaftElements() const { return std::max(kMinShaftElements, project_.settings.shaft_elements); }
-  std::vector<std::vector<double>> SpeedCommandRows() const;
   std::string Name(const std::string& base) { return ids_.Add(base); }
   void Add(std::string cls, std::string name, std::vector<Modifier> mods, std::string comment) {
     writer_.AddInstance({std::move(cls), std::move(name), std::move(mods), std::move(comment)});
@@ -234,20 +233,6 @@ std::string DriveSystemWriter::TableModifier(const std::string& name,
     mods.push_back({"table", FormatMatrix(rows, "table " + name), {}});
   }
   return name;
-}
-
-// The PDU speed command: the load case's profile, signed by the direction (held after its last
-// point; a single point is held as a constant).
-std::vector<std::vector<double>> DriveSystemWriter::SpeedCommandRows() const {
-  std::vector<std::vector<double>> rows;
-  if (load_case_ && load_case_->pdu_speed && !load_case_->pdu_speed->x.empty()) {
-    const Table& t = *load_case_->pdu_speed;
-    for (std::size_t i = 0; i < t.x.size(); ++i) rows.push_back({t.x[i], direction_ * t.y[i]});
-  } else {
-    rows = {{0.0, 0.0}, {1.0, 0.0}};
-  }
-  if (rows.size() == 1) rows.push_back({rows[0][0] + 1.0, rows[0][1]});
-  return rows;
 }
 
 // The hydraulic PDU: the parts of sim/src/hydraulic_pdu.cc (AddHydraulicPdu) as instances of
@@ -418,7 +403,7 @@ void DriveSystemWriter::EmitHydraulicPdu(const Component& c) {
 
   speed_table_ = Name(c.id + "_speed");
   std::vector<Modifier> table_mods;
-  TableModifier(speed_table_, SpeedCommandRows(), table_mods);
+  TableModifier(speed_table_, SpeedCommandRows(load_case_), table_mods);
   table_mods.push_back({"extrapolation", "Modelica.Blocks.Types.Extrapolation.HoldLastPoint", {}});
   Add("Modelica.Blocks.Sources.CombiTimeTable", speed_table_, table_mods,
       "PDU output speed command [rad/s]" + std::string(load_case_ ? " of load case " + load_case_->name : ""));
@@ -455,7 +440,7 @@ void DriveSystemWriter::EmitPdu(const Component& c) {
   // The speed command: the load case's PDU speed profile, signed by the direction.
   speed_table_ = Name(c.id + "_speed");
   std::vector<Modifier> table_mods;
-  TableModifier(speed_table_, SpeedCommandRows(), table_mods);
+  TableModifier(speed_table_, SpeedCommandRows(load_case_), table_mods);
   table_mods.push_back({"extrapolation", "Modelica.Blocks.Types.Extrapolation.HoldLastPoint", {}});
   Add("Modelica.Blocks.Sources.CombiTimeTable", speed_table_, table_mods,
       "PDU output speed command [rad/s]" + std::string(load_case_ ? " of load case " + load_case_->name : ""));

@@ -186,10 +186,9 @@ void StribeckFriction::Forces(Eval& e) {
     tau = 0.0;
     return;
   }
-  if (regularized) {
-    // tanh(w/w_small) * (tau_C + tau_S*exp(-f_exp*|w|)) + d_vis*w: continuous and odd in w.
-    const double w = WF(e);
-    tau_stribeck = Smooth(e) * (tau_C + tau_S * Decay(f_exp * std::abs(w))) + d_vis * w;
+  // The friction torque acts between the flange node (half at each flange when flange_a and
+  // flange_b are separate nodes) and the support.
+  auto apply = [&] {
     if (split) {
       e.AddForce(a, -0.5 * tau_stribeck);
       e.AddForce(b, -0.5 * tau_stribeck);
@@ -198,6 +197,12 @@ void StribeckFriction::Forces(Eval& e) {
     }
     e.AddForce(m, tau_stribeck);
     tau = tau_stribeck;
+  };
+  if (regularized) {
+    // tanh(w/w_small) * (tau_C + tau_S*exp(-f_exp*|w|)) + d_vis*w: continuous and odd in w.
+    const double w = WF(e);
+    tau_stribeck = Smooth(e) * (tau_C + tau_S * Decay(f_exp * std::abs(w))) + d_vis * w;
+    apply();
     return;
   }
   if (!Sliding()) {
@@ -206,14 +211,7 @@ void StribeckFriction::Forces(Eval& e) {
   }
   const double w = WF(e);
   tau_stribeck = mode == msl::kForward ? Stribeck(w) : -Stribeck(-w);
-  if (split) {
-    e.AddForce(a, -0.5 * tau_stribeck);
-    e.AddForce(b, -0.5 * tau_stribeck);
-  } else {
-    e.AddForce(a, -tau_stribeck);
-  }
-  e.AddForce(m, tau_stribeck);
-  tau = tau_stribeck;
+  apply();
 }
 
 // Multipliers: tau_load for the rigid tie of the two flanges (flange_a.tau = tau/2 + tau_load,

@@ -155,7 +155,6 @@ class Builder {
   void EmitLoads();
   void EmitMonitoring();
   void ConnectShutdown(const std::string& command);
-  std::vector<std::vector<double>> SpeedCommandRows() const;
 
   const Project& project_;
   const Scenario* scenario_;
@@ -226,20 +225,6 @@ Table Rows(const std::vector<std::vector<double>>& rows) {
   return t;
 }
 
-// The PDU speed command: the load case's profile, signed by the direction (held after its last
-// point).
-std::vector<std::vector<double>> Builder::SpeedCommandRows() const {
-  std::vector<std::vector<double>> rows;
-  if (load_case_ && load_case_->pdu_speed && !load_case_->pdu_speed->x.empty()) {
-    const Table& t = *load_case_->pdu_speed;
-    for (std::size_t i = 0; i < t.x.size(); ++i) rows.push_back({t.x[i], direction_ * t.y[i]});
-  } else {
-    rows = {{0.0, 0.0}, {1.0, 0.0}};
-  }
-  if (rows.size() == 1) rows.push_back({rows[0][0] + 1.0, rows[0][1]});
-  return rows;
-}
-
 void Builder::EmitPdu(const Component& c) {
   if (detail::IsHydraulicPdu(c)) {
     std::optional<double> motor_lost_time;  // the scenario value, as t_motor_lost below
@@ -273,7 +258,7 @@ void Builder::EmitPdu(const Component& c) {
   Map(c, "right", pdu_ports_.flange_right);
   const std::string table = c.id + ".speed_command";
   speed_command_ = table;
-  Add("CombiTimeTable", table, {{"extrapolation", kHoldLastPoint}}, "", {{"table", Rows(SpeedCommandRows())}});
+  Add("CombiTimeTable", table, {{"extrapolation", kHoldLastPoint}}, "", {{"table", Rows(SpeedCommandRows(load_case_))}});
   Connect(table + ".y", pdu_ports_.w_ref);
 }
 

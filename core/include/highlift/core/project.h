@@ -78,6 +78,11 @@ struct LoadCase {
   SourceLocation where;
 };
 
+/// The PDU speed command of a load case as table rows {time, speed}, the simulator's and the
+/// Modelica export's: the `pdu_speed` profile signed by the direction (retract negative); a
+/// single point becomes a constant (two rows); no load case or no profile gives 0.
+std::vector<std::vector<double>> SpeedCommandRows(const LoadCase* load_case);
+
 /// A failure or operating scenario run by the simulator and the peak-load analysis.
 struct Scenario {
   std::string name;
