@@ -141,6 +141,8 @@ class DriveSystemWriter {
   void EmitComponent(const Component& c);
   void EmitPdu(const Component& c);
   void EmitHydraulicPdu(const Component& c);  // drive = "hydraulic" (docs/hydraulics.md)
+  /// The PDU speed command table of the load case, connected to `w_ref` (an input port).
+  void EmitSpeedCommand(const Component& pdu, const std::string& w_ref);
   void EmitTorqueLimiter(const Component& c);
   void EmitShaftFull(const Component& c);
   void EmitSteadyBearing(const Component& c);
@@ -401,13 +403,7 @@ void DriveSystemWriter::EmitHydraulicPdu(const Component& c) {
   Map(c, "left", output + ".flange_b");
   Map(c, "right", output + ".flange_a");
 
-  speed_table_ = Name(c.id + "_speed");
-  std::vector<Modifier> table_mods;
-  TableModifier(speed_table_, SpeedCommandRows(load_case_), table_mods);
-  table_mods.push_back({"extrapolation", "Modelica.Blocks.Types.Extrapolation.HoldLastPoint", {}});
-  Add("Modelica.Blocks.Sources.CombiTimeTable", speed_table_, table_mods,
-      "PDU output speed command [rad/s]" + std::string(load_case_ ? " of load case " + load_case_->name : ""));
-  writer_.AddConnect(speed_table_ + ".y[1]", w_ref + ".u");
+  EmitSpeedCommand(c, w_ref + ".u");
 }
 
 void DriveSystemWriter::EmitPdu(const Component& c) {
@@ -437,14 +433,18 @@ void DriveSystemWriter::EmitPdu(const Component& c) {
   Map(c, "left", name + ".flange_left");
   Map(c, "right", name + ".flange_right");
 
-  // The speed command: the load case's PDU speed profile, signed by the direction.
-  speed_table_ = Name(c.id + "_speed");
+  EmitSpeedCommand(c, name + ".w_ref");
+}
+
+// The speed command: the load case's PDU speed profile, signed by the direction.
+void DriveSystemWriter::EmitSpeedCommand(const Component& pdu, const std::string& w_ref) {
+  speed_table_ = Name(pdu.id + "_speed");
   std::vector<Modifier> table_mods;
   TableModifier(speed_table_, SpeedCommandRows(load_case_), table_mods);
   table_mods.push_back({"extrapolation", "Modelica.Blocks.Types.Extrapolation.HoldLastPoint", {}});
   Add("Modelica.Blocks.Sources.CombiTimeTable", speed_table_, table_mods,
       "PDU output speed command [rad/s]" + std::string(load_case_ ? " of load case " + load_case_->name : ""));
-  writer_.AddConnect(speed_table_ + ".y[1]", name + ".w_ref");
+  writer_.AddConnect(speed_table_ + ".y[1]", w_ref);
 }
 
 void DriveSystemWriter::EmitTorqueLimiter(const Component& c) {

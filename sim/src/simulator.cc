@@ -9,8 +9,6 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
-#include <cstdio>
-#include <cstdlib>
 
 #include "highlift/core/error.h"
 #include "sundials_compat.h"
@@ -636,7 +634,7 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
   };
   // The earliest crossing in (ta, tb] of the roots flagged in root_info, on the interpolant, by
   // bisection to CVODE's root tolerance; leaves `interpolated` and root_info at the root.
-  auto LocateRoot = [&](double ta, double tb, double& t_root) {
+  auto locate_root = [&](double ta, double tb, double& t_root) {
     const double tol = 100.0 * std::numeric_limits<double>::epsilon() * std::max(std::abs(ta), std::abs(tb)) + 1e-15;
     std::vector<int> flagged(root_info.begin(), root_info.end());
     while (tb - ta > tol) {
@@ -685,7 +683,7 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
         sys.Roots(g_out.data());
         if (SignChanged(g_prev, g_out, directions, root_info)) {
           double t_root = t_out;
-          if (!LocateRoot(g_prev_time, t_out, t_root)) {
+          if (!locate_root(g_prev_time, t_out, t_root)) {
             failed = true;
             break;
           }

@@ -287,18 +287,23 @@ void System::AssignStates(const std::map<std::string, int>& signal_source, const
   // (none for outputs that change only at events).
   std::vector<std::vector<int>> follows(n_elements);
   std::vector<char> state(n_elements, 0);
-  std::function<void(int)> visit = [&](int i) {
+  std::function<void(int)> visit;
+  // Appends the states behind element i's signal inputs to `out`.
+  auto append_input_states = [&](int i, std::vector<int>& out) {
+    for (const auto& in : elements_[i]->SignalInputs()) {
+      auto it = signal_source.find(elements_[i]->id + "." + in);
+      if (it == signal_source.end()) continue;
+      const int source = slot_owner[it->second];
+      visit(source);
+      out.insert(out.end(), follows[source].begin(), follows[source].end());
+    }
+  };
+  visit = [&](int i) {
     if (state[i] != 0) return;  // done, or on the stack (loops are rejected above)
     state[i] = 1;
     if (elements_[i]->SignalsFollowState()) {
       follows[i] = own[i];
-      for (const auto& in : elements_[i]->SignalInputs()) {
-        auto it = signal_source.find(elements_[i]->id + "." + in);
-        if (it == signal_source.end()) continue;
-        const int source = slot_owner[it->second];
-        visit(source);
-        follows[i].insert(follows[i].end(), follows[source].begin(), follows[source].end());
-      }
+      append_input_states(i, follows[i]);
       tidy(follows[i]);
     }
     state[i] = 2;
@@ -307,13 +312,7 @@ void System::AssignStates(const std::map<std::string, int>& signal_source, const
   std::vector<std::vector<int>> footprint(n_elements);
   for (int i = 0; i < n_elements; ++i) {
     footprint[i] = own[i];
-    for (const auto& in : elements_[i]->SignalInputs()) {
-      auto it = signal_source.find(elements_[i]->id + "." + in);
-      if (it == signal_source.end()) continue;
-      const int source = slot_owner[it->second];
-      visit(source);
-      footprint[i].insert(footprint[i].end(), follows[source].begin(), follows[source].end());
-    }
+    append_input_states(i, footprint[i]);
     tidy(footprint[i]);
   }
   // Groups of nodes that constraints may couple: their accelerations are solved together, so

@@ -58,14 +58,6 @@ const std::vector<std::string>& Scenarios() {
   return names;
 }
 
-std::string ExportedText(const Project& project, ModelResolution resolution, const std::string& scenario) {
-  ModelicaExportOptions options;
-  options.resolution = resolution;
-  options.scenario = scenario;
-  const ModelicaExportReport report = GenerateModelica(project, options);
-  EXPECT_EQ(testing::CheckIssues(report), "") << scenario << " " << ToString(resolution);
-  return testing::FileOf(report, report.model_file).content;
-}
 
 /// The simulator's side of the comparison: the elements and connections of a drive network.
 struct SimSide {
@@ -280,7 +272,7 @@ TEST(DriveSystemAgreement, A380ClassExampleAgreesWithTheSimulatorElementByElemen
     for (const std::string& scenario : Scenarios()) {
       SCOPED_TRACE(scenario + " " + ToString(resolution));
       const SimSide simulated = Simulated(project, resolution, scenario);
-      const ExportedModel exported = ParseExportedModel(ExportedText(project, resolution, scenario));
+      const ExportedModel exported = ParseExportedModel(testing::ExportedModelText(project, resolution, scenario));
       const auto differences = Differences(simulated, exported);
       EXPECT_TRUE(differences.empty()) << Join(differences);
       EXPECT_EQ(exported.instances.size(), simulated.elements.size());
@@ -297,7 +289,7 @@ TEST(DriveSystemAgreement, OneStationRigAgreesWithTheSimulatorElementByElement) 
     for (const Scenario& scenario : project.scenarios) {
       SCOPED_TRACE(scenario.name + " " + ToString(resolution));
       const auto differences = Differences(Simulated(project, resolution, scenario.name),
-                                           ParseExportedModel(ExportedText(project, resolution, scenario.name)));
+                                           ParseExportedModel(testing::ExportedModelText(project, resolution, scenario.name)));
       EXPECT_TRUE(differences.empty()) << Join(differences);
     }
   }
@@ -308,7 +300,7 @@ TEST(DriveSystemAgreement, OneStationRigAgreesWithTheSimulatorElementByElement) 
 TEST(DriveSystemAgreement, ComparisonCoversFrictionRegularisationDampingAndShutdown) {
   const Project& project = ExampleProject();
   const ExportedModel exported =
-      ParseExportedModel(ExportedText(project, ModelResolution::kFull, "jam_l1"));
+      ParseExportedModel(testing::ExportedModelText(project, ModelResolution::kFull, "jam_l1"));
   int regularised = 0, damped = 0;
   for (const auto& [name, x] : exported.instances) {
     if (x.modifiers.count("w_small") && x.modifiers.at("w_small") == "0.1") ++regularised;
@@ -318,9 +310,9 @@ TEST(DriveSystemAgreement, ComparisonCoversFrictionRegularisationDampingAndShutd
   EXPECT_GT(damped, 100);      // shaft elements, torque limiters, the jam
   EXPECT_EQ(exported.instances.at("gra_l1_jam").modifiers.count("d"), 1u);
   EXPECT_EQ(exported.instances.at("pdu").modifiers.at("useStopInput"), "true");
-  const std::string timed = testing::Flatten(ExportedText(project, ModelResolution::kReduced, "rupture_wtb_timed"));
+  const std::string timed = testing::Flatten(testing::ExportedModelText(project, ModelResolution::kReduced, "rupture_wtb_timed"));
   EXPECT_NE(timed.find("connect(wtbCommand.y, pdu.stop)"), std::string::npos);
-  EXPECT_NE(ExportedText(project, ModelResolution::kReduced, "retraction").find("Interval=0.02"), std::string::npos);
+  EXPECT_NE(testing::ExportedModelText(project, ModelResolution::kReduced, "retraction").find("Interval=0.02"), std::string::npos);
 }
 
 // The comparison is not vacuous: a changed value, a dropped connection, a lost instance and a
@@ -328,7 +320,7 @@ TEST(DriveSystemAgreement, ComparisonCoversFrictionRegularisationDampingAndShutd
 TEST(DriveSystemAgreement, ComparisonReportsAChangedValueConnectionOrInstance) {
   const Project& project = ExampleProject();
   const SimSide simulated = Simulated(project, ModelResolution::kReduced, "rupture_wtb");
-  const ExportedModel exported = ParseExportedModel(ExportedText(project, ModelResolution::kReduced, "rupture_wtb"));
+  const ExportedModel exported = ParseExportedModel(testing::ExportedModelText(project, ModelResolution::kReduced, "rupture_wtb"));
   ASSERT_TRUE(Differences(simulated, exported).empty());
   auto reported = [](const std::vector<std::string>& differences, const std::string& piece) {
     return std::any_of(differences.begin(), differences.end(),

@@ -83,4 +83,15 @@ inline std::string CheckIssues(const ModelicaExportReport& report) {
   return text;
 }
 
+/// The model file of the project's export at `resolution` in `scenario`; a structural issue of
+/// any generated file is a test failure.
+inline std::string ExportedModelText(const Project& project, ModelResolution resolution, const std::string& scenario) {
+  ModelicaExportOptions options;
+  options.resolution = resolution;
+  options.scenario = scenario;
+  const ModelicaExportReport report = GenerateModelica(project, options);
+  EXPECT_EQ(CheckIssues(report), "") << scenario << " " << ToString(resolution);
+  return FileOf(report, report.model_file).content;
+}
+
 }  // namespace highlift::testing

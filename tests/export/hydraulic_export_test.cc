@@ -41,16 +41,7 @@ Project WithMotorLost() {
 }
 
 std::string ModelText(const Project& project, ModelResolution resolution, const std::string& scenario) {
-  ModelicaExportOptions options;
-  options.resolution = resolution;
-  options.scenario = scenario;
-  const ModelicaExportReport report = GenerateModelica(project, options);
-  EXPECT_EQ(CheckIssues(report), "") << scenario << " " << ToString(resolution);
-  for (const auto& f : report.files)
-    if (f.path.find('/') == std::string::npos && f.path.size() > 3 && f.path.substr(f.path.size() - 3) == ".mo")
-      return Flatten(f.content);
-  ADD_FAILURE() << "no model file";
-  return "";
+  return Flatten(testing::ExportedModelText(project, resolution, scenario));
 }
 
 /// Declarations of the model text: instance -> (class, modifiers).
