@@ -16,6 +16,10 @@ namespace highlift::cli {
 
 enum ExitCode : int { kSuccess = 0, kViolated = 1, kInvalidInput = 2 };
 
+/// Points of the domains `size --json` and `peak --json` sample to report the tightness of
+/// their enclosures (--tightness overrides).
+constexpr int kDefaultTightnessSamples = 32;
+
 /// A command: Setup() declares its options on the subcommand; Run() does the work after
 /// parsing and returns an exit code. Exceptions of type highlift::InputError are reported by
 /// main() with exit code 2.

@@ -87,6 +87,10 @@ class PeakCommand : public Command {
     options_.AddTo(app);
     app.add_option("--case", peak_.only_case, "only this sizing case (e.g. jam_l3, rupture_shaft_l2a)");
     app.add_flag("--no-intervals", no_intervals_, "point values only (no enclosures, no ranking)");
+    app.add_option("--tightness", tightness_,
+                   "points of the domains sampled to measure how tight each enclosure is (width over the hull of "
+                   "the sampled values, in the JSON); default 32 with --json, else 0")
+        ->check(CLI::Range(0, 100000));
     app.add_flag("--transient", transient_,
                  "also simulate each case at full resolution and print the transient peak shaft torque "
                  "beside the single-DOF estimate");
@@ -102,6 +106,7 @@ class PeakCommand : public Command {
       throw InputError("--elements " + std::to_string(elements_) + ": give 1 or more spring-dampers per shaft");
     peak_.intervals = !no_intervals_;
     peak_.rank = !no_intervals_;
+    peak_.tightness_samples = tightness_ >= 0 ? tightness_ : (options_.json ? kDefaultTightnessSamples : 0);
     const reduced_models::PeakReport report = reduced_models::AnalysePeaks(project, peak_);
     std::vector<TransientPeak> transient;
     bool all_ok = true;
@@ -156,6 +161,7 @@ class PeakCommand : public Command {
   CommonOptions options_;
   reduced_models::PeakOptions peak_;
   bool no_intervals_ = false;
+  int tightness_ = -1;
   bool transient_ = false;
   int elements_ = 0;
 };

@@ -16,11 +16,16 @@ class SizeCommand : public Command {
   void Setup(CLI::App& app) override {
     options_.AddTo(app);
     app.add_flag("--no-intervals", no_intervals_, "point values only (no enclosures over the parameter domains)");
+    app.add_option("--tightness", tightness_,
+                   "points of the domains sampled to measure how tight each enclosure is (width over the hull of "
+                   "the sampled values, in the JSON); default 32 with --json, else 0")
+        ->check(CLI::Range(0, 100000));
   }
   int Run() override {
     const Project project = LoadProject(options_.project);
     reduced_models::SizingOptions options;
     options.intervals = !no_intervals_;
+    options.tightness_samples = tightness_ >= 0 ? tightness_ : (options_.json ? kDefaultTightnessSamples : 0);
     const reduced_models::SizingReport report = reduced_models::Size(project, options);
     if (options_.json)
       std::cout << report.ToJson().dump(2) << "\n";
@@ -32,6 +37,7 @@ class SizeCommand : public Command {
  private:
   CommonOptions options_;
   bool no_intervals_ = false;
+  int tightness_ = -1;
 };
 
 }  // namespace

@@ -645,11 +645,15 @@ class Builder {
         loads[actuator] = best;
         aiding[actuator] = -std::fabs(best);
       }
-      double w = 0.0;
+      // The speed: the profile's peak, else the PDU's max_output_speed (its variable, so the
+      // friction of the flow is enclosed over its domain, as reduced_models' sizing does).
+      std::string w = Num(0.0);
       if (lc.pdu_speed && !lc.pdu_speed->y.empty()) {
-        for (double y : lc.pdu_speed->y) w = std::max(w, std::fabs(y));
+        double peak = 0.0;
+        for (double y : lc.pdu_speed->y) peak = std::max(peak, std::fabs(y));
+        w = Num(peak);
       } else if (pdu && reduced_models::HasReducedModelValue(*pdu, "max_output_speed")) {
-        w = reduced_models::ReducedModelValue(*pdu, "max_output_speed");
+        w = Value(*pdu, "max_output_speed");
       }
       flows.push_back(Flow(lc, loads, w));
       directions.push_back(lc.direction);
@@ -748,7 +752,7 @@ class Builder {
   }
 
   /// The torque flow of one load case: a variable per node, leaves first.
-  std::vector<std::string> Flow(const LoadCase& lc, const std::map<std::string, double>& loads, double w) {
+  std::vector<std::string> Flow(const LoadCase& lc, const std::map<std::string, double>& loads, const std::string& w) {
     const std::size_t n = peaks_->nodes.size();
     std::vector<std::string> var(n);
     for (std::size_t k = 0; k < n; ++k) var[k] = "torque." + lc.name + "." + peaks_->nodes[k].id;
@@ -982,13 +986,14 @@ class Builder {
   }
 
   /// Stribeck friction at node k's speed, the paper's equation (3); empty when it has none.
-  std::string Stribeck(int k) const { return Stribeck(k, peaks_->w_operating); }
-  /// The same at PDU speed `w_pdu` [rad/s].
-  std::string Stribeck(int k, double w_pdu) const {
+  std::string Stribeck(int k) const { return Stribeck(k, Num(peaks_->w_operating)); }
+  /// The same at PDU speed `w_pdu` [rad/s]: a number, or the name of the speed variable when the
+  /// speed is uncertain (the PDU's max_output_speed), so the friction is enclosed over its domain.
+  std::string Stribeck(int k, const std::string& w_pdu) const {
     const Component& c = NodeComponent(k);
     for (const char* name : {"coulomb_torque", "viscous_coefficient", "stribeck_torque", "stribeck_decay"})
       if (!HasValue(c, name)) return "";
-    const std::string w = "(" + Num(w_pdu) + " * " + SpeedRatio(k) + ")";
+    const std::string w = "(" + w_pdu + " * " + SpeedRatio(k) + ")";
     return Value(c, "coulomb_torque") + " + " + Value(c, "viscous_coefficient") + " * " + w + " + " +
            Value(c, "stribeck_torque") + " * exp(-(" + Value(c, "stribeck_decay") + " * " + w + "))";
   }

@@ -5,11 +5,13 @@
 #include <limits>
 #include <functional>
 #include <numbers>
+#include <optional>
 
 #include "graph_model.h"
 #include "highlift/core/error.h"
 #include "highlift/core/text_table.h"
 #include "highlift/reduced_models/modal.h"
+#include "highlift/reduced_models/sampling.h"
 #include "highlift/reduced_models/single_dof.h"
 #include "torque_flow.h"
 
@@ -176,6 +178,7 @@ void Enclose(const detail::Graph& g, const Focus& f, int elements, const detail:
 /// steady flows the rupture speed needs, for one parameter mode. Computed once per mode.
 struct ModeData {
   detail::ParameterMode mode;
+  std::vector<Interval> n;       ///< speed ratio of the node's input to the PDU output
   std::vector<Interval> J;       ///< concentrated inertia of the node
   std::vector<Interval> link_c;  ///< stiffness of the node's link (shaft or elastic component), 0 if rigid
   std::vector<Interval> link_J;  ///< distributed inertia of a shaft
@@ -201,7 +204,7 @@ bool FrictionOnly(const std::string& name) {
 }
 
 ModeData Evaluate(const detail::Graph& g, const detail::ParameterMode& mode, const std::map<std::string, double>& aiding,
-                  double w, const ModeData* nominal = nullptr) {
+                  const Interval& w, const ModeData* nominal = nullptr) {
   if (nominal && (TimingOnly(mode.parameter) || FrictionOnly(mode.parameter))) {
     ModeData d = *nominal;
     d.mode = mode;
@@ -211,7 +214,8 @@ ModeData Evaluate(const detail::Graph& g, const detail::ParameterMode& mode, con
   }
   ModeData d;
   d.mode = mode;
-  const auto n = detail::SpeedRatios<Interval>(g, mode);
+  d.n = detail::SpeedRatios<Interval>(g, mode);
+  const auto& n = d.n;
   const std::size_t count = g.nodes.size();
   d.J.assign(count, Interval(0.0));
   d.link_c.assign(count, Interval(0.0));
@@ -319,14 +323,22 @@ PeakReport AnalysePeaks(const Project& project, const PeakOptions& options) {
                      "the airloads: add a load case under \"load_cases\"");
 
   // Operating speed and the largest airload magnitudes over the load cases, as aiding loads.
+  // (With intervals, the speeds are enclosures over the PDU's max_output_speed domain where a
+  // load case has no speed profile.)
   double w_operating = 0.0;
+  Interval w_operating_all(0.0);
   std::map<std::string, double> aiding;
   for (const LoadCase& lc : project.load_cases) {
     w_operating = std::max(w_operating, detail::SizingSpeed(lc, pdu));
+    if (options.intervals) w_operating_all = detail::Max(w_operating_all, detail::SizingSpeed<Interval>(lc, pdu, all));
     for (const auto& [actuator, value] : detail::SizingLoads(lc))
       aiding[actuator] = std::min(aiding[actuator], -std::abs(value));
   }
-  const double w_reference = detail::HasValue(pdu, "max_output_speed") ? detail::NominalValue(pdu, "max_output_speed") : w_operating;
+  if (!options.intervals) w_operating_all = Interval(w_operating);
+  const bool has_reference = detail::HasValue(pdu, "max_output_speed");
+  const double w_reference = has_reference ? detail::NominalValue(pdu, "max_output_speed") : w_operating;
+  const Interval w_reference_all =
+      has_reference && options.intervals ? detail::Read<Interval>(pdu, "max_output_speed", all) : Interval(w_reference);
   const auto speed_ratio = detail::SpeedRatios<double>(g, nominal);
 
   // Parameter modes evaluated once: nominal, all intervals, and one per uncertain parameter.
@@ -334,11 +346,14 @@ PeakReport AnalysePeaks(const Project& project, const PeakOptions& options) {
   ModeData at_all;
   std::vector<ModeData> singles;
   if (options.intervals) {
-    at_all = Evaluate(g, all, aiding, w_operating);
+    at_all = Evaluate(g, all, aiding, w_operating_all);
     if (options.rank)
       for (const auto& [component, parameter] : detail::UncertainParameters(g))
         singles.push_back(Evaluate(g, {detail::ParameterMode::kOne, component, parameter}, aiding, w_operating, &at_nominal));
+  } else {
+    at_all = at_nominal;
   }
+  const ModeData& bounds = at_all;  // the mode every enclosure below is taken over
 
   auto scenario_name = [&](const std::string& kind, const std::string& component) {
     for (const Scenario& s : project.scenarios) {
@@ -364,22 +379,29 @@ PeakReport AnalysePeaks(const Project& project, const PeakOptions& options) {
     pc.acts_at = g.Id(a);
     for (int k : g.PathToRoot(a)) pc.load_path.push_back(g.Id(k));
     pc.w_max = w_operating;
-    pc.w_max_bounds = Domain::Point(w_operating);
+    pc.w_max_bounds = w_operating_all.ToDomain();
     pc.J_star = fm.oscillator.J_star;
     pc.c_star = fm.oscillator.c_star;
     pc.omega = fm.oscillator.omega;
     pc.first_mode_share = fm.oscillator.first_mode_share;
     pc.tau_dynamic.nominal = PeakTorque(pc.w_max, fm.oscillator);
-    double static_torque = detail::HasValue(pdu, "stall_torque") ? detail::NominalValue(pdu, "stall_torque") : 0.0;
+    // Static part at nominal values and its enclosure over the domains (every term over its domain).
+    const bool stall = detail::HasValue(pdu, "stall_torque");
+    double static_torque = stall ? detail::NominalValue(pdu, "stall_torque") : 0.0;
+    Interval static_bounds = stall ? detail::Read<Interval>(pdu, "stall_torque", bounds.mode) : Interval(0.0);
     for (int k : g.PathToRoot(a))
-      if (g.Type(k) == "system_torque_limiter" && detail::HasValue(*g.nodes[k].component, "lockout_torque_extend"))
-        static_torque = std::min(static_torque, detail::NominalValue(*g.nodes[k].component, "lockout_torque_extend") * speed_ratio[k]);
+      if (g.Type(k) == "system_torque_limiter" && detail::HasValue(*g.nodes[k].component, "lockout_torque_extend")) {
+        const Component& stl = *g.nodes[k].component;
+        static_torque = std::min(static_torque, detail::NominalValue(stl, "lockout_torque_extend") * speed_ratio[k]);
+        static_bounds = detail::Min(static_bounds, detail::Read<Interval>(stl, "lockout_torque_extend", bounds.mode) * bounds.n[k]);
+      }
     pc.tau_static = static_torque;
+    pc.tau_static_bounds = static_bounds.ToDomain();
     pc.note = "static part: PDU stall torque, capped by the system torque limiter on the path; components behind "
               "a station torque limiter see at most its end-stop torque";
     Interval omega(pc.omega), J(pc.J_star);
     if (options.intervals) Enclose(g, focus, elements, all, &omega, &J);
-    pc.tau_dynamic.bounds = (Interval(w_operating) * omega * J).ToDomain();
+    pc.tau_dynamic.bounds = (w_operating_all * omega * J).ToDomain();
     if (options.intervals && options.rank) pc.ranking = Rank(g, focus, fm, pc.w_max, singles, nullptr);
     report.cases.push_back(std::move(pc));
   }
@@ -411,17 +433,20 @@ PeakReport AnalysePeaks(const Project& project, const PeakOptions& options) {
     const Component& wtb = *g.nodes[brake].component;
     // w_max rises with the back-drive torque, thresholds and latencies, falls with drag and J:
     // its lower and upper corners bound it.
+    // The speed ratio, the operating and reference speeds are those of the mode: nominal points
+    // for at_nominal and the single-parameter modes, enclosures for at_all.
     auto rupture_speed = [&](const ModeData& d, bool upper) {
       const auto pick = [upper](const Interval& x, bool rising) { return (rising == upper) ? x.hi : x.lo; };
+      const bool wide = &d == &at_all && options.intervals;
       Interval J_total(0.0);
       for (int k : part) J_total += d.J[k] + d.link_J[k];
-      const Interval n = Interval(speed_ratio[root]);
+      const Interval n = d.n[root];
       RuptureInput in;
-      in.w0 = w_operating;
+      in.w0 = pick(wide ? w_operating_all : Interval(w_operating), true);
       in.J = pick(J_total, false);
       in.tau_aiding = std::max(0.0, pick(-(d.back.tau_in[root] * n), true));
       in.tau_drag = std::max(0.0, pick(d.drag.tau_in[root] * n, false));
-      in.w_reference = w_reference;
+      in.w_reference = pick(wide ? w_reference_all : Interval(w_reference), true);
       in.overspeed_factor = sensor ? pick(detail::Read<Interval>(*sensor, "overspeed_factor", d.mode), true) : 1.3;
       in.asymmetry_threshold =
           sensor ? pick(detail::Read<Interval>(*sensor, "asymmetry_threshold", d.mode), true) : 4.0 * std::numbers::pi;
@@ -435,6 +460,7 @@ PeakReport AnalysePeaks(const Project& project, const PeakOptions& options) {
     pc.w_max = speed.w_max;
     pc.trigger = speed.trigger;
     pc.tau_static = backdrive;
+    pc.tau_static_bounds = {rupture_speed(bounds, false).second, rupture_speed(bounds, true).second};
     pc.J_star = fm.oscillator.J_star;
     pc.c_star = fm.oscillator.c_star;
     pc.omega = fm.oscillator.omega;
@@ -468,27 +494,34 @@ PeakReport AnalysePeaks(const Project& project, const PeakOptions& options) {
 
   for (auto& pc : report.cases) {
     pc.tau_total.nominal = pc.tau_dynamic.nominal + pc.tau_static;
-    pc.tau_total.bounds = {pc.tau_dynamic.bounds.lo + pc.tau_static, pc.tau_dynamic.bounds.hi + pc.tau_static};
+    pc.tau_total.bounds = (Interval::FromDomain(pc.tau_dynamic.bounds) + Interval::FromDomain(pc.tau_static_bounds)).ToDomain();
   }
 
   // Worst case per component on any load path, with its allowable. In a jam, a station torque
   // limiter locks out and grounds the excess: what lies behind it sees at most its end-stop torque.
+  // The cap (nominal and its enclosure) and everything after it are taken over the same domains
+  // as the case's enclosure, so the margin below is guaranteed: the smallest allowable against
+  // the largest local torque.
   std::map<std::string, ComponentPeak> worst;
   for (const auto& pc : report.cases) {
-    double cap = kInf;  // N*m at the reference speed
+    double cap = kInf;               // N*m at the reference speed, nominal
+    Interval cap_bounds(kInf, kInf);  // its enclosure
     for (auto id = pc.load_path.rbegin(); id != pc.load_path.rend(); ++id) {
       const int k = g.Find(*id);
       Bounded torque = pc.tau_total;
       torque.nominal = std::min(torque.nominal, cap);
-      torque.bounds = {std::min(torque.bounds.lo, cap), std::min(torque.bounds.hi, cap)};
+      torque.bounds = detail::Min(Interval::FromDomain(torque.bounds), cap_bounds).ToDomain();
       auto& w = worst[*id];
       if (w.component.empty() || torque.bounds.hi > w.torque.bounds.hi) {
         w.component = *id;
         w.worst_case = pc.name;
         w.torque = torque;
       }
-      if (pc.kind == "jam" && g.Type(k) == "station_torque_limiter" && detail::HasValue(*g.nodes[k].component, "end_stop_torque"))
-        cap = std::min(cap, detail::NominalValue(*g.nodes[k].component, "end_stop_torque") * speed_ratio[k]);
+      if (pc.kind == "jam" && g.Type(k) == "station_torque_limiter" && detail::HasValue(*g.nodes[k].component, "end_stop_torque")) {
+        const Component& limiter = *g.nodes[k].component;
+        cap = std::min(cap, detail::NominalValue(limiter, "end_stop_torque") * speed_ratio[k]);
+        cap_bounds = detail::Min(cap_bounds, detail::Read<Interval>(limiter, "end_stop_torque", bounds.mode) * bounds.n[k]);
+      }
     }
   }
   for (std::size_t i = 0; i < g.nodes.size(); ++i) {
@@ -496,21 +529,56 @@ PeakReport AnalysePeaks(const Project& project, const PeakOptions& options) {
     if (it == worst.end()) continue;
     ComponentPeak& w = it->second;
     const Component& c = *g.nodes[i].component;
-    w.local_torque = w.torque.bounds.hi / speed_ratio[i];
+    // Largest torque at the component's own speed: the largest reference torque over the smallest ratio.
+    w.local_torque = (Interval(w.torque.bounds.hi) / bounds.n[i]).hi;
+    std::optional<Interval> allowable;
     if (c.type == "torque_shaft") {
       w.allowable_name = "torque capacity";
       w.allowable = detail::ShaftTorqueCapacity<double>(c, nominal);
+      allowable = detail::ShaftTorqueCapacity<Interval>(c, bounds.mode);
     } else if (c.type == "wing_tip_brake" && detail::HasValue(c, "static_capacity")) {
       w.allowable_name = "static capacity";
       w.allowable = detail::NominalValue(c, "static_capacity");
+      allowable = detail::Read<Interval>(c, "static_capacity", bounds.mode);
     } else if (c.type == "geared_rotary_actuator" && detail::HasValue(c, "output_torque_rating")) {
       w.allowable_name = "rated output torque / ratio";
       w.allowable = detail::NominalValue(c, "output_torque_rating") / detail::NominalValue(c, "ratio");
+      allowable = detail::Read<Interval>(c, "output_torque_rating", bounds.mode) / detail::Read<Interval>(c, "ratio", bounds.mode);
     }
-    w.margin = w.allowable > 0.0 ? w.allowable / w.local_torque - 1.0 : kInf;
+    w.allowable_min = allowable ? allowable->lo : 0.0;
+    // Guaranteed: no point of the domains has a smaller margin (outward rounded).
+    w.margin = w.allowable_min > 0.0 ? (Interval(w.allowable_min) / Interval(w.local_torque) - Interval(1.0)).lo : kInf;
     report.worst.push_back(w);
   }
+  if (options.intervals && options.tightness_samples > 0) MeasureTightness(project, options, &report);
   return report;
+}
+
+void MeasureTightness(const Project& project, const PeakOptions& options, PeakReport* report) {
+  const std::vector<UncertainParameter> uncertain = UncertainParameters(project);
+  const std::size_t cases = report->cases.size(), worst = report->worst.size();
+  SampledHull dynamic(cases), total(cases), component(worst);
+  DomainSampler sampler(uncertain, options.tightness_seed);
+  PeakOptions point_options = options;
+  point_options.intervals = false;
+  point_options.rank = false;
+  point_options.tightness_samples = 0;
+  const int samples = uncertain.empty() ? 1 : options.tightness_samples;
+  for (int k = 0; k < samples; ++k) {
+    const PeakReport at = AnalysePeaks(FixParameters(project, uncertain, sampler.Next()), point_options);
+    HIGHLIFT_CHECK(at.cases.size() == cases && at.worst.size() == worst, "peak cases differ between the enclosure and a point");
+    for (std::size_t i = 0; i < cases; ++i) {
+      HIGHLIFT_CHECK(at.cases[i].name == report->cases[i].name, "peak cases differ between the enclosure and a point");
+      dynamic.Add(i, at.cases[i].tau_dynamic.nominal);
+      total.Add(i, at.cases[i].tau_total.nominal);
+    }
+    for (std::size_t i = 0; i < worst; ++i) component.Add(i, at.worst[i].torque.nominal);
+  }
+  for (std::size_t i = 0; i < cases; ++i) {
+    report->cases[i].tau_dynamic.SetTightness(dynamic.lo[i], dynamic.hi[i]);
+    report->cases[i].tau_total.SetTightness(total.lo[i], total.hi[i]);
+  }
+  for (std::size_t i = 0; i < worst; ++i) report->worst[i].torque.SetTightness(component.lo[i], component.hi[i]);
 }
 
 bool PeakReport::ok() const {
@@ -534,27 +602,30 @@ std::string PeakReport::BriefReport() const {
 std::string PeakReport::FullReport() const {
   std::string out = "Single-DOF peak loads (paper eq. 1): " + project + " (" + reduction + ")\n";
   TextTable table({"case", "acts at", "w_max [rad/s]", "J* [kg*m^2]", "c* [N*m/rad]", "f1 [Hz]", "mode-1 share",
-                   "tau_dyn [N*m]", "enclosure [N*m]", "tau_static [N*m]", "tau_max [N*m]", "widest parameter"},
+                   "tau_dyn [N*m]", "enclosure [N*m]", "tau_static [N*m]", "tau_max [N*m]", "enclosure [N*m]",
+                   "widest parameter"},
                   {2, 3, 4, 5, 6, 7, 9, 10});
   for (const auto& c : cases)
     table.AddRow({c.name, c.acts_at, Fmt(c.w_max), Fmt(c.J_star), Fmt(c.c_star), Fmt(Hz(c.omega)), Fmt(c.first_mode_share, 3),
                   Fmt(c.tau_dynamic.nominal), "[" + Fmt(c.tau_dynamic.bounds.lo) + ", " + Fmt(c.tau_dynamic.bounds.hi) + "]",
                   Fmt(c.tau_static), Fmt(c.tau_total.nominal),
+                  "[" + Fmt(c.tau_total.bounds.lo) + ", " + Fmt(c.tau_total.bounds.hi) + "]",
                   c.ranking.empty() ? "-" : c.ranking[0].parameter + " (" + Fmt(100 * c.ranking[0].share, 3) + " %)"});
   out += table.ToString();
-  out += "\nWorst case per component\n";
+  out += "\nWorst case per component (margin: the smallest allowable over the domains against the largest local "
+         "torque; no point of the domains has a smaller margin)\n";
   TextTable worst_table({"component", "worst case", "tau_max [N*m]", "upper bound [N*m]", "local torque [N*m]", "allowable",
-                         "allowable [N*m]", "margin"},
+                         "allowable min [N*m]", "margin"},
                         {2, 3, 4, 6, 7});
   for (const auto& w : worst)
     worst_table.AddRow({w.component, w.worst_case, Fmt(w.torque.nominal), Fmt(w.torque.bounds.hi), Fmt(w.local_torque),
-                        w.allowable_name.empty() ? "-" : w.allowable_name, w.allowable > 0 ? Fmt(w.allowable) : "-",
+                        w.allowable_name.empty() ? "-" : w.allowable_name, w.allowable_min > 0 ? Fmt(w.allowable_min) : "-",
                         std::isinf(w.margin) ? "-" : Fmt(100.0 * w.margin, 3) + " %"});
   return out + worst_table.ToString();
 }
 
 nlohmann::json PeakReport::ToJson() const {
-  auto bounded = [](const Bounded& b) { return nlohmann::json{{"nominal", b.nominal}, {"min", b.bounds.lo}, {"max", b.bounds.hi}}; };
+  auto bounded = [](const Bounded& b) { return reduced_models::ToJson(b); };
   nlohmann::json j = {{"project", project}, {"model", reduction}, {"ok", ok()}};
   j["cases"] = nlohmann::json::array();
   for (const auto& c : cases) {
@@ -565,7 +636,9 @@ nlohmann::json PeakReport::ToJson() const {
                           {"w_max_bounds", {c.w_max_bounds.lo, c.w_max_bounds.hi}}, {"trigger", c.trigger},
                           {"J_star_kg_m2", c.J_star}, {"c_star_N_m_rad", c.c_star}, {"omega_rad_s", c.omega},
                           {"first_mode_share", c.first_mode_share}, {"tau_dynamic_N_m", bounded(c.tau_dynamic)},
-                          {"tau_static_N_m", c.tau_static}, {"tau_max_N_m", bounded(c.tau_total)}, {"ranking", ranking},
+                          {"tau_static_N_m", c.tau_static},
+                          {"tau_static_bounds_N_m", {c.tau_static_bounds.lo, c.tau_static_bounds.hi}},
+                          {"tau_max_N_m", bounded(c.tau_total)}, {"ranking", ranking},
                           {"note", c.note}});
   }
   j["worst"] = nlohmann::json::array();
@@ -573,6 +646,7 @@ nlohmann::json PeakReport::ToJson() const {
     j["worst"].push_back({{"component", w.component}, {"worst_case", w.worst_case}, {"tau_max_N_m", bounded(w.torque)},
                           {"local_torque_N_m", w.local_torque}, {"allowable_name", w.allowable_name},
                           {"allowable_N_m", w.allowable > 0 ? nlohmann::json(w.allowable) : nlohmann::json(nullptr)},
+                          {"allowable_min_N_m", w.allowable_min > 0 ? nlohmann::json(w.allowable_min) : nlohmann::json(nullptr)},
                           {"margin", std::isfinite(w.margin) ? nlohmann::json(w.margin) : nlohmann::json(nullptr)}});
   return j;
 }

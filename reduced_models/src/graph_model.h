@@ -263,14 +263,23 @@ inline std::map<std::string, double> SizingLoads(const LoadCase& load_case) {
   return loads;
 }
 
-/// The largest PDU speed of a load case; the PDU's max_output_speed when it has no profile.
-inline double SizingSpeed(const LoadCase& load_case, const Component& pdu) {
+/// The largest PDU speed of a load case; the PDU's max_output_speed when it has no profile (its
+/// domain under ParameterMode::kIntervals, so an uncertain speed is enclosed, not taken at nominal).
+template <class T = double>
+T SizingSpeed(const LoadCase& load_case, const Component& pdu, const ParameterMode& mode = {}) {
   if (load_case.pdu_speed && !load_case.pdu_speed->y.empty()) {
     double best = 0.0;
     for (double y : load_case.pdu_speed->y) best = std::max(best, std::abs(y));
-    return best;
+    return T(best);
   }
-  return NominalValue(pdu, "max_output_speed");
+  return Read<T>(pdu, "max_output_speed", mode);
 }
+
+/// Largest of two values; for intervals, the enclosure of max(x, y) over both.
+inline double Max(double a, double b) { return std::max(a, b); }
+inline Interval Max(const Interval& a, const Interval& b) { return {std::max(a.lo, b.lo), std::max(a.hi, b.hi)}; }
+/// Smallest of two values; for intervals, the enclosure of min(x, y) over both.
+inline double Min(double a, double b) { return std::min(a, b); }
+inline Interval Min(const Interval& a, const Interval& b) { return {std::min(a.lo, b.lo), std::min(a.hi, b.hi)}; }
 
 }  // namespace highlift::reduced_models::detail

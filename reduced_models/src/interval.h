@@ -40,18 +40,29 @@ inline double Up(double x, int ulps = 1) {
 }
 inline Interval Outward(double lo, double hi, int ulps = 1) { return {Down(lo, ulps), Up(hi, ulps)}; }
 
-inline Interval operator+(const Interval& a, const Interval& b) { return Outward(a.lo + b.lo, a.hi + b.hi); }
+/// Outward rounding that keeps a sign the operands prove: the sum, product or quotient of
+/// non-negative numbers is non-negative, so its lower bound never drops below zero (a zero
+/// inertia times a speed ratio stays an exact zero, not -5e-324).
+inline Interval OutwardNonNegative(bool non_negative, double lo, double hi) {
+  Interval r = Outward(lo, hi);
+  if (non_negative && r.lo < 0.0) r.lo = 0.0;
+  return r;
+}
+
+inline Interval operator+(const Interval& a, const Interval& b) {
+  return OutwardNonNegative(a.lo >= 0.0 && b.lo >= 0.0, a.lo + b.lo, a.hi + b.hi);
+}
 inline Interval operator-(const Interval& a, const Interval& b) { return Outward(a.lo - b.hi, a.hi - b.lo); }
 inline Interval operator-(const Interval& a) { return {-a.hi, -a.lo}; }
 inline Interval operator*(const Interval& a, const Interval& b) {
   const double p[4] = {a.lo * b.lo, a.lo * b.hi, a.hi * b.lo, a.hi * b.hi};
-  return Outward(*std::min_element(p, p + 4), *std::max_element(p, p + 4));
+  return OutwardNonNegative(a.lo >= 0.0 && b.lo >= 0.0, *std::min_element(p, p + 4), *std::max_element(p, p + 4));
 }
 /// y = a / b, defined for denominators that do not contain zero (ratios, efficiencies, J, c).
 inline Interval operator/(const Interval& a, const Interval& b) {
   HIGHLIFT_CHECK(b.lo > 0.0 || b.hi < 0.0, "interval division by an interval containing zero");
   const double q[4] = {a.lo / b.lo, a.lo / b.hi, a.hi / b.lo, a.hi / b.hi};
-  return Outward(*std::min_element(q, q + 4), *std::max_element(q, q + 4));
+  return OutwardNonNegative(a.lo >= 0.0 && b.lo > 0.0, *std::min_element(q, q + 4), *std::max_element(q, q + 4));
 }
 inline Interval& operator+=(Interval& a, const Interval& b) { return a = a + b; }
 inline Interval& operator-=(Interval& a, const Interval& b) { return a = a - b; }

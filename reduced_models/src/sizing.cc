@@ -7,6 +7,7 @@
 #include "graph_model.h"
 #include "highlift/core/error.h"
 #include "highlift/core/text_table.h"
+#include "highlift/reduced_models/sampling.h"
 #include "torque_flow.h"
 
 namespace highlift::reduced_models {
@@ -62,9 +63,11 @@ SizingReport Size(const Project& project, const SizingOptions& options) {
     }
     const auto loads = detail::SizingLoads(load_case);
     const double w = detail::SizingSpeed(load_case, pdu);
+    // The speed enclosure: the PDU's max_output_speed domain where the load case has no profile.
+    const Interval w_all = options.intervals ? detail::SizingSpeed<Interval>(load_case, pdu, interval_mode) : Interval(w);
     const auto flow = detail::SolveFlow<double>(g, nominal_mode, loads, w);
     detail::Flow<Interval> wide;
-    if (options.intervals) wide = detail::SolveFlow<Interval>(g, interval_mode, loads, w);
+    if (options.intervals) wide = detail::SolveFlow<Interval>(g, interval_mode, loads, w_all);
     LoadCaseSizing s;
     s.load_case = load_case.name;
     s.direction = load_case.direction;
@@ -81,7 +84,7 @@ SizingReport Size(const Project& project, const SizingOptions& options) {
     const double eta = detail::NominalValue(pdu, "efficiency");
     s.pdu_power = {s.pdu_torque.nominal * w, {s.pdu_torque.bounds.lo * w, s.pdu_torque.bounds.hi * w}};
     if (options.intervals) {
-      const Interval power = Interval(s.pdu_torque.bounds.lo, s.pdu_torque.bounds.hi) * Interval(w);
+      const Interval power = Interval(s.pdu_torque.bounds.lo, s.pdu_torque.bounds.hi) * w_all;
       const Interval input = detail::BySign(
           power, [&](const Interval& p) { return p / detail::Read<Interval>(pdu, "efficiency", interval_mode); },
           [&](const Interval& p) { return p * detail::Read<Interval>(pdu, "efficiency", interval_mode); });
@@ -154,7 +157,8 @@ SizingReport Size(const Project& project, const SizingOptions& options) {
         const auto flow = detail::SolveFlow<double>(g, nominal_mode, aiding, w, false);
         Bounded b = Make(std::max(0.0, -flow.tau_in[wing]));
         if (options.intervals) {
-          const auto wide = detail::SolveFlow<Interval>(g, interval_mode, aiding, w, false);
+          const auto wide = detail::SolveFlow<Interval>(g, interval_mode, aiding,
+                                                        detail::SizingSpeed<Interval>(load_case, pdu, interval_mode), false);
           b.bounds = {std::max(0.0, -wide.tau_in[wing].hi), std::max(0.0, -wide.tau_in[wing].lo)};
         }
         backdrive = Max(backdrive, b);
@@ -163,16 +167,19 @@ SizingReport Size(const Project& project, const SizingOptions& options) {
     }
   }
 
-  // Margins against allowables, on the largest operating torque (upper bound) at own speed.
+  // Margins against allowables, on the largest operating torque (upper bound) at own speed and,
+  // with intervals, the smallest allowable over the domains: a guaranteed lower bound of the margin.
   for (std::size_t i = 0; i < g.nodes.size(); ++i) {
     const int node = static_cast<int>(i);
     const Component& c = *g.nodes[node].component;
     const double load = operating(node, "").bounds.hi;
-    auto add = [&](const std::string& name, double allowable, double at_load) {
-      report.margins.push_back({c.id, name, at_load, allowable, at_load > 0 ? allowable / at_load - 1.0 : kInf});
+    const detail::ParameterMode& allowable_mode = options.intervals ? interval_mode : nominal_mode;
+    auto add = [&](const std::string& name, const Interval& allowable, double at_load) {
+      const double margin = at_load > 0 ? (Interval(allowable.lo) / Interval(at_load) - Interval(1.0)).lo : kInf;
+      report.margins.push_back({c.id, name, at_load, allowable.lo, margin});
     };
     if (c.type == "torque_shaft") {
-      add("torque capacity at the allowable shear stress", detail::ShaftTorqueCapacity<double>(c, nominal_mode), load);
+      add("torque capacity at the allowable shear stress", detail::ShaftTorqueCapacity<Interval>(c, allowable_mode), load);
     } else if (c.type == "geared_rotary_actuator" && detail::HasValue(c, "output_torque_rating")) {
       double output = 0.0;
       for (const LoadCase& load_case : project.load_cases) {
@@ -180,12 +187,42 @@ SizingReport Size(const Project& project, const SizingOptions& options) {
         auto it = loads.find(c.id);
         if (it != loads.end()) output = std::max(output, std::abs(it->second));
       }
-      add("rated output torque", detail::NominalValue(c, "output_torque_rating"), output);
+      add("rated output torque", detail::Read<Interval>(c, "output_torque_rating", allowable_mode), output);
     } else if (c.type == "pdu" && detail::HasValue(c, "stall_torque")) {
-      add("stall torque", detail::NominalValue(c, "stall_torque"), load);
+      add("stall torque", detail::Read<Interval>(c, "stall_torque", allowable_mode), load);
     }
   }
+  if (options.intervals && options.tightness_samples > 0) MeasureTightness(project, options, &report);
   return report;
+}
+
+void MeasureTightness(const Project& project, const SizingOptions& options, SizingReport* report) {
+  const std::vector<UncertainParameter> uncertain = UncertainParameters(project);
+  // Every enclosure of the report in one list, in a fixed order: per load case the PDU torque,
+  // power and input power and the component torques; then the settings' operating torques.
+  auto enclosures = [](SizingReport& r) {
+    std::vector<Bounded*> out;
+    for (auto& c : r.cases) {
+      out.insert(out.end(), {&c.pdu_torque, &c.pdu_power, &c.pdu_input_power});
+      for (auto& t : c.components) out.push_back(&t.torque);
+    }
+    for (auto& s : r.settings) out.push_back(&s.operating);
+    return out;
+  };
+  const std::vector<Bounded*> mine = enclosures(*report);
+  SampledHull hull(mine.size());
+  DomainSampler sampler(uncertain, options.tightness_seed);
+  SizingOptions point_options = options;
+  point_options.intervals = false;
+  point_options.tightness_samples = 0;
+  const int samples = uncertain.empty() ? 1 : options.tightness_samples;
+  for (int k = 0; k < samples; ++k) {
+    SizingReport at = Size(FixParameters(project, uncertain, sampler.Next()), point_options);
+    const std::vector<Bounded*> theirs = enclosures(at);
+    HIGHLIFT_CHECK(theirs.size() == mine.size(), "sizing reports differ between the enclosure and a point");
+    for (std::size_t i = 0; i < theirs.size(); ++i) hull.Add(i, theirs[i]->nominal);
+  }
+  for (std::size_t i = 0; i < mine.size(); ++i) mine[i]->SetTightness(hull.lo[i], hull.hi[i]);
 }
 
 bool SizingReport::ok() const {
@@ -243,8 +280,27 @@ std::string SizingReport::FullReport() const {
   return out;
 }
 
+void Bounded::SetTightness(double lo, double hi) {
+  const double scale = std::max({std::abs(bounds.lo), std::abs(bounds.hi), std::abs(lo), std::abs(hi)});
+  const double floor = std::max(1e-6 * scale, std::numeric_limits<double>::min());
+  tightness = std::max(bounds.hi - bounds.lo, floor) / std::max(hi - lo, floor);
+}
+
+SampledHull::SampledHull(std::size_t count)
+    : lo(count, std::numeric_limits<double>::infinity()), hi(count, -std::numeric_limits<double>::infinity()) {}
+
+void SampledHull::Add(std::size_t i, double value) {
+  lo[i] = std::min(lo[i], value);
+  hi[i] = std::max(hi[i], value);
+}
+
+nlohmann::json ToJson(const Bounded& b) {
+  nlohmann::json j = {{"nominal", b.nominal}, {"min", b.bounds.lo}, {"max", b.bounds.hi}};
+  if (b.tightness > 0) j["tightness"] = b.tightness;
+  return j;
+}
+
 namespace {
-nlohmann::json ToJson(const Bounded& b) { return {{"nominal", b.nominal}, {"min", b.bounds.lo}, {"max", b.bounds.hi}}; }
 nlohmann::json Finite(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
 }  // namespace
 

@@ -39,16 +39,17 @@ T MeshEfficiency(const Component& c, const ParameterMode& mode) {
   return PowInt(Read<T>(c, "eta_mesh", mode), meshes);
 }
 
-/// `loads`: actuator id -> output torque (positive opposing the motion). `w_pdu` >= 0.
+/// `loads`: actuator id -> output torque (positive opposing the motion). `w_pdu` >= 0 (an interval
+/// when the PDU speed is uncertain).
 template <class T>
 Flow<T> SolveFlow(const Graph& g, const ParameterMode& mode, const std::map<std::string, double>& loads,
-                  double w_pdu, bool friction = true) {
+                  const T& w_pdu, bool friction = true) {
   Flow<T> f;
   const std::size_t count = g.nodes.size();
   f.n = SpeedRatios<T>(g, mode);
   f.w_in.resize(count);
   f.tau_in.assign(count, T(0.0));
-  for (std::size_t i = 0; i < count; ++i) f.w_in[i] = f.n[i] * T(w_pdu);
+  for (std::size_t i = 0; i < count; ++i) f.w_in[i] = f.n[i] * w_pdu;
   const T on(friction ? 1.0 : 0.0);
   for (std::size_t k = count; k-- > 0;) {
     const Component& c = *g.nodes[k].component;

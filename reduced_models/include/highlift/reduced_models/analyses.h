@@ -3,6 +3,7 @@
 // after the rupture of every shaft segment), with interval enclosures and parameter ranking.
 #pragma once
 
+#include <cstdint>
 #include <map>
 #include <string>
 #include <string_view>
@@ -69,7 +70,8 @@ struct PeakCase {
   double omega = 0.0;      ///< rad/s, first eigenfrequency of the part in focus
   double first_mode_share = 0.0;
   Bounded tau_dynamic;     ///< N*m, equation (1)
-  double tau_static = 0.0; ///< N*m, static drive (jam) or back-drive (rupture) torque
+  double tau_static = 0.0; ///< N*m, static drive (jam) or back-drive (rupture) torque, nominal
+  Domain tau_static_bounds;  ///< N*m, its enclosure over the parameter domains
   Bounded tau_total;       ///< N*m, tau_dynamic + tau_static
   std::vector<ParameterShare> ranking;  ///< by share of the tau_dynamic width, largest first
   std::string note;
@@ -79,10 +81,12 @@ struct ComponentPeak {
   std::string component;
   std::string worst_case;
   Bounded torque;          ///< N*m at the reference (shaft) speed
-  double local_torque = 0.0;  ///< N*m at the component's own speed (upper bound)
+  double local_torque = 0.0;  ///< N*m at the component's own speed (upper bound over the domains)
   std::string allowable_name;
-  double allowable = 0.0;  ///< N*m, 0 when the component has none
-  double margin = 0.0;     ///< allowable / local_torque - 1 (infinite without allowable)
+  double allowable = 0.0;      ///< N*m at nominal values, 0 when the component has none
+  double allowable_min = 0.0;  ///< N*m, lower bound of the allowable over the domains
+  double margin = 0.0;     ///< allowable_min / local_torque - 1: guaranteed lower bound of the margin
+                           ///< over the domains (infinite without allowable)
 };
 
 struct PeakReport {
@@ -104,9 +108,16 @@ struct PeakOptions {
   bool intervals = true;          ///< enclosures over the parameter domains
   bool rank = true;               ///< rank the parameters by their share of the width
   std::string only_case;          ///< empty: every case
+  /// Points of the domains at which the cases are evaluated to measure the tightness of the
+  /// enclosures (Bounded::tightness of tau_dynamic, tau_total and the worst torques); 0: not measured. Each costs one point evaluation.
+  int tightness_samples = 0;
+  std::uint64_t tightness_seed = 1;  ///< seed of the sampler (sampling.h)
 };
 /// Throws InputError when `only_case` names no case (listing the cases).
 PeakReport AnalysePeaks(const Project& project, const PeakOptions& options = {});
+/// Fills the tightness of the enclosures of `report` (made by AnalysePeaks with intervals) from
+/// options.tightness_samples point evaluations (AnalysePeaks calls it when that is > 0).
+void MeasureTightness(const Project& project, const PeakOptions& options, PeakReport* report);
 
 }  // namespace highlift::reduced_models
 

@@ -3,6 +3,7 @@
 // torque-limiter and brake settings; margins against the components' allowables.
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -19,6 +20,24 @@ namespace highlift::reduced_models {
 struct Bounded {
   double nominal = 0.0;
   Domain bounds = Domain::Point(0.0);
+  /// Width of `bounds` over the width of the hull of the values at sampled points of the
+  /// domains (the options' tightness_samples): 1 is exact, 2 twice as wide as what the samples
+  /// reach. 0 when not measured. Widths under 1e-6 of the magnitude count as that floor (so a
+  /// value no parameter moves reads 1, not a ratio of round-off widths).
+  double tightness = 0.0;
+
+  /// Sets `tightness` from the hull [lo, hi] of the sampled values.
+  void SetTightness(double lo, double hi);
+};
+
+/// {"nominal", "min", "max"} and, when measured, "tightness".
+nlohmann::json ToJson(const Bounded& b);
+
+/// Hull of sampled values of several enclosures, for Bounded::SetTightness.
+struct SampledHull {
+  std::vector<double> lo, hi;
+  explicit SampledHull(std::size_t count);
+  void Add(std::size_t i, double value);
 };
 
 struct ComponentTorque {
@@ -60,8 +79,9 @@ struct AllowableMargin {
   std::string component;
   std::string allowable_name;  ///< e.g. "torque capacity (allowable shear stress)"
   double load = 0.0;           ///< N*m, the largest operating torque (upper bound), own speed
-  double allowable = 0.0;      ///< N*m
-  double margin = 0.0;         ///< allowable / load - 1
+  double allowable = 0.0;      ///< N*m; with intervals the smallest value over the domains
+  double margin = 0.0;         ///< allowable / load - 1, outward rounded: with intervals no point of
+                               ///< the domains has a smaller margin
 };
 
 struct SizingReport {
@@ -78,10 +98,17 @@ struct SizingReport {
 
 struct SizingOptions {
   bool intervals = true;       ///< also compute enclosures over the parameter domains
+  /// Points of the domains at which the sizing is evaluated to measure the tightness of the
+  /// enclosures (Bounded::tightness); 0: not measured. Each costs one point evaluation.
+  int tightness_samples = 0;
+  std::uint64_t tightness_seed = 1;  ///< seed of the sampler (sampling.h)
 };
 
 /// Throws InputError when the project has no PDU, no load case, or a value the laws need.
 SizingReport Size(const Project& project, const SizingOptions& options = {});
+/// Fills the tightness of the enclosures of `report` (made by Size with intervals) from
+/// options.tightness_samples point evaluations (Size calls it when that is > 0).
+void MeasureTightness(const Project& project, const SizingOptions& options, SizingReport* report);
 
 /// Total mass of the torque shafts [kg] (nominal values).
 double ShaftMass(const Project& project);

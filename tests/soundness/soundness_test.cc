@@ -1,0 +1,245 @@
+// The soundness property of the reported enclosures (size, peak) and of the propagator's
+// narrowed domains (check), on the bundled examples and on random chain projects, plus the
+// counter-examples that once broke it. CI runs 10^4 points; bench/soundness runs 10^6.
+// HIGHLIFT_SOUNDNESS_SEED=<n> reruns with another seed (a failure names the seed it used).
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+
+#include "common/run_cli.h"
+#include "highlift/core/project_io.h"
+#include "highlift/reduced_models/analyses.h"
+#include "highlift/reduced_models/sampling.h"
+#include "soundness/soundness.h"
+
+namespace highlift::testing {
+namespace {
+
+/// Under the sanitizers (HIGHLIFT_SOUNDNESS_SCALE=10) every count is divided by the scale: the
+/// release build runs the full 10^4 points; the sanitizer build looks for memory errors on the
+/// same code paths.
+constexpr int Scaled(int count) { return count / HIGHLIFT_SOUNDNESS_SCALE; }
+
+std::uint64_t BaseSeed() {
+  const char* env = std::getenv("HIGHLIFT_SOUNDNESS_SEED");
+  return env && *env ? std::strtoull(env, nullptr, 10) : 20261201;
+}
+
+std::string Report(const SoundnessResult& r) {
+  std::string out = std::to_string(r.points) + " points, " + std::to_string(r.checks) + " checks, " +
+                    std::to_string(r.violations.size()) + " violations";
+  for (std::size_t i = 0; i < r.violations.size() && i < 20; ++i) out += "\n  " + r.violations[i];
+  return out;
+}
+
+Project Example(const std::string& name) {
+  return LoadProject(std::filesystem::path(HIGHLIFT_SOURCE_DIR) / "examples" / name);
+}
+
+class ExampleSoundness : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(ExampleSoundness, SizeAndPeakEnclosuresHoldAtSampledPoints) {
+  SoundnessOptions options;
+  options.points = Scaled(250);
+  options.seed = BaseSeed();
+  const SoundnessResult r = CheckEnclosures(Example(GetParam()), options);
+  EXPECT_EQ(r.points, Scaled(250));
+  EXPECT_GT(r.checks, Scaled(250) * 20);
+  EXPECT_TRUE(r.violations.empty()) << Report(r);
+}
+
+TEST_P(ExampleSoundness, CheckKeepsEveryFeasiblePoint) {
+  SoundnessOptions options;
+  options.points = 8;
+  options.seed = BaseSeed();
+  const SoundnessResult r = CheckDomainSoundness(Example(GetParam()), options);
+  EXPECT_EQ(r.points, 8);
+  EXPECT_TRUE(r.violations.empty()) << Report(r);
+}
+
+INSTANTIATE_TEST_SUITE_P(Examples, ExampleSoundness,
+                         ::testing::Values("a380_class_flaps.json", "a320_class_flaps.json", "a320_class_slats.json"),
+                         [](const auto& info) {
+                           std::string name = info.param.substr(0, info.param.find('.'));
+                           for (char& c : name)
+                             if (c == '-') c = '_';
+                           return name;
+                         });
+
+TEST(RandomProjectSoundness, SizeAndPeakEnclosuresHoldOnRandomChains) {
+  // 90 random projects x 100 points: with the examples' 750, about 10^4 points in CI.
+  SoundnessResult all;
+  const std::uint64_t base = BaseSeed();
+  for (std::uint64_t k = 0; k < 90; ++k) {
+    SoundnessOptions options;
+    options.points = Scaled(100);
+    options.seed = base + k;
+    const Project project = RandomChainProject(base + k);
+    all.Merge(CheckEnclosures(project, options));
+  }
+  EXPECT_EQ(all.points, 90 * Scaled(100));
+  EXPECT_TRUE(all.violations.empty()) << Report(all);
+}
+
+TEST(RandomProjectSoundness, CheckKeepsEveryFeasiblePointOnRandomChains) {
+  SoundnessResult all;
+  const std::uint64_t base = BaseSeed() + 1000;
+  for (std::uint64_t k = 0; k < 10; ++k) {
+    SoundnessOptions options;
+    options.points = 10;
+    options.seed = base + k;
+    RandomProjectOptions small;
+    small.max_stations = 3;
+    all.Merge(CheckDomainSoundness(RandomChainProject(base + k, small), options));
+  }
+  EXPECT_EQ(all.points, 100);
+  EXPECT_TRUE(all.violations.empty()) << Report(all);
+}
+
+TEST(RandomChainProject, IsReproducibleFromItsSeed) {
+  const Project a = RandomChainProject(42), b = RandomChainProject(42), c = RandomChainProject(43);
+  EXPECT_EQ(DescribeDifference(a, b), "");
+  EXPECT_NE(DescribeDifference(a, c), "");
+}
+
+// ---- The counter-examples of the enclosure defects, each a regression test ----------------
+
+/// One wing: PDU, a system torque limiter, one station, a tip shaft, a wing-tip brake.
+Project SmallChain() {
+  Project p = RandomChainProject(7, {.max_stations = 1, .allow_two_wings = false});
+  return p;
+}
+
+Parameter Uncertain(double nominal, double lo, double hi) {
+  Parameter p;
+  p.nominal = nominal;
+  p.domain = {lo, hi};
+  p.provenance = Provenance::kUser;
+  return p;
+}
+
+/// tau_total of case `name` with every parameter at its nominal value (the point code path).
+double PointTotal(const Project& project, const std::string& name) {
+  reduced_models::PeakOptions point;
+  point.intervals = false;
+  point.rank = false;
+  for (const auto& c : reduced_models::AnalysePeaks(project, point).cases)
+    if (c.name == name) return c.tau_total.nominal;
+  ADD_FAILURE() << "no case " << name;
+  return 0.0;
+}
+
+const reduced_models::PeakCase& Case(const reduced_models::PeakReport& report, const std::string& name) {
+  for (const auto& c : report.cases)
+    if (c.name == name) return c;
+  throw std::runtime_error("no case " + name);
+}
+
+TEST(EnclosureRegression, JamStaticPartSpansTheLimiterLockoutDomain) {
+  // Was: the static part of a jam behind a system torque limiter entered the total at its
+  // nominal lock-out torque, so the lock-out at 517 N*m gave a total above the enclosure.
+  Project p = SmallChain();
+  Component* pdu = p.FindComponent("pdu");
+  pdu->parameters["stall_torque"] = Uncertain(2000.0, 2000.0, 2000.0);
+  Component* stl = p.FindComponent("stl_l");
+  ASSERT_NE(stl, nullptr);
+  stl->parameters["lockout_torque_extend"] = Uncertain(470.0, 423.0, 517.0);
+  const auto report = reduced_models::AnalysePeaks(p, {});
+  const auto& jam = Case(report, "jam_gra_l1");
+  EXPECT_LT(jam.tau_static_bounds.lo, 424.0);
+  EXPECT_GT(jam.tau_static_bounds.hi, 516.0);
+  Project at_517 = p;
+  at_517.FindComponent("stl_l")->parameters["lockout_torque_extend"] = Uncertain(517.0, 517.0, 517.0);
+  EXPECT_LE(PointTotal(at_517, "jam_gra_l1"), jam.tau_total.bounds.hi);
+}
+
+TEST(EnclosureRegression, RuptureBackDriveSpansTheAidingEfficiencyDomain) {
+  // Was: the rupture's back-drive torque entered the total at nominal efficiency; the point 0.8
+  // gave a larger maximum than the enclosure over [0.6, 0.8].
+  Project p = SmallChain();
+  Component* gra = p.FindComponent("gra_l1");
+  gra->parameters["eta_aiding"] = Uncertain(0.7, 0.6, 0.8);
+  const auto report = reduced_models::AnalysePeaks(p, {});
+  const auto& rupture = Case(report, "rupture_shaft_l1");
+  Project at_08 = p;
+  at_08.FindComponent("gra_l1")->parameters["eta_aiding"] = Uncertain(0.8, 0.8, 0.8);
+  EXPECT_LE(PointTotal(at_08, "rupture_shaft_l1"), rupture.tau_total.bounds.hi);
+  EXPECT_GT(rupture.tau_static_bounds.hi, rupture.tau_static_bounds.lo);
+}
+
+TEST(EnclosureRegression, MarginIsTheWorstOverTheAllowableDomain) {
+  // A margin must not read positive where a point of the domains violates it: the allowable
+  // enters at its lower bound.
+  Project p = SmallChain();
+  Component* wtb = p.FindComponent("wtb_l");
+  wtb->parameters["static_capacity"] = Uncertain(600.0, 100.0, 900.0);
+  const auto report = reduced_models::AnalysePeaks(p, {});
+  for (const auto& w : report.worst)
+    if (w.component == "wtb_l") {
+      EXPECT_DOUBLE_EQ(w.allowable_min, 100.0);
+      EXPECT_LE(w.margin, 100.0 / w.local_torque - 1.0 + 1e-12);
+      return;
+    }
+  ADD_FAILURE() << "wtb_l has no worst-case row";
+}
+
+TEST(EnclosureRegression, ZeroLimiterInertiaIsValidWithIntervals) {
+  // Was: "point 'stl': inertia J must be >= 0" from an outward-rounded 0 * ratio^2.
+  Project p = SmallChain();
+  Parameter zero;
+  zero.nominal = 0.0;
+  zero.domain = Domain::Point(0.0);
+  zero.provenance = Provenance::kUser;
+  p.FindComponent("stl_l")->parameters["inertia"] = zero;
+  EXPECT_NO_THROW(reduced_models::AnalysePeaks(p, {}));
+  const std::filesystem::path file = std::filesystem::path(HIGHLIFT_BINARY_DIR) / "soundness_zero_inertia.json";
+  SaveProject(p, file);
+  const CliResult result = RunCli({"peak", file.string()});
+  EXPECT_NE(result.exit_code, 2) << result.err;
+  EXPECT_EQ(result.err.find("must be >= 0"), std::string::npos) << result.err;
+}
+
+TEST(EnclosureRegression, InfoAcceptsWideZero) {
+  const CliResult result =
+      RunCli({"info", (std::filesystem::path(HIGHLIFT_SOURCE_DIR) / "examples" / "a320_class_flaps.json").string(),
+              "--wide", "0"});
+  EXPECT_EQ(result.exit_code, 0) << result.err;
+}
+
+TEST(Tightness, ReportedInPeakAndSizeJson) {
+  const std::string example = (std::filesystem::path(HIGHLIFT_SOURCE_DIR) / "examples" / "a320_class_flaps.json").string();
+  for (const char* command : {"peak", "size"}) {
+    const CliResult result = RunCli({command, example, "--json", "--tightness", "16"});
+    ASSERT_LE(result.exit_code, 1) << result.err;
+    const auto j = nlohmann::json::parse(result.out);
+    int measured = 0;
+    std::function<void(const nlohmann::json&)> walk = [&](const nlohmann::json& node) {
+      if (node.is_object()) {
+        if (node.contains("tightness")) {
+          EXPECT_GE(node["tightness"].get<double>(), 1.0 - 1e-9) << command << ": " << node.dump();
+          ++measured;
+        }
+        for (const auto& [key, value] : node.items()) walk(value);
+      } else if (node.is_array()) {
+        for (const auto& value : node) walk(value);
+      }
+    };
+    walk(j);
+    EXPECT_GT(measured, 5) << command;
+  }
+}
+
+TEST(Tightness, ExactForAProjectWithoutUncertainty) {
+  Project p = SmallChain();
+  const auto uncertain = reduced_models::UncertainParameters(p);
+  std::vector<double> x;
+  for (const auto& u : uncertain) x.push_back(u.domain.lo);
+  const Project point = reduced_models::FixParameters(p, uncertain, x);
+  reduced_models::PeakOptions options;
+  options.tightness_samples = 4;
+  for (const auto& c : reduced_models::AnalysePeaks(point, options).cases) EXPECT_NEAR(c.tau_total.tightness, 1.0, 1e-6) << c.name;
+}
+
+}  // namespace
+}  // namespace highlift::testing
