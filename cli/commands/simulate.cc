@@ -93,6 +93,10 @@ class SimulateCommand : public Command {
                    "Drive-system projects, full model: spring-dampers per torque shaft (default: the "
                    "project's shaft_elements, at least 4)");
     app.add_flag("--energy", energy_, "Energy bookkeeping: energy.* columns and the balance in the report");
+    app.add_option("--rtol", rtol_, "Relative tolerance (default: the experiment's Tolerance or settings.relative_tolerance)");
+    app.add_option("--atol", atol_,
+                   "Absolute tolerance per unit nominal value: a state's absolute tolerance is atol times its "
+                   "nominal value (default: settings.absolute_tolerance, else 1e-8)");
   }
 
   int Run() override {
@@ -117,9 +121,12 @@ class SimulateCommand : public Command {
       for (const auto& s : project.scenarios) names += (names.empty() ? "" : ", ") + s.name;
       throw InputError("the project has " + std::to_string(project.scenarios.size()) +
                        " scenarios; choose one with --scenario NAME (" + names + ")");
-    } else {
-      throw InputError("the project has no scenario; add one with a stop_time (e.g. "
-                       "{\"name\": \"run\", \"kind\": \"extension\", \"stop_time\": \"1 s\"})");
+    } else if (!project.experiment || drive) {
+      throw InputError(drive ? "the project has no scenario; add one with a stop_time (e.g. "
+                               "{\"name\": \"run\", \"kind\": \"extension\", \"stop_time\": \"1 s\"})"
+                             : "the element network has no experiment and no scenario; add "
+                               "\"experiment\": {\"StopTime\": \"1 s\"} (Modelica's experiment annotation: "
+                               "StartTime, StopTime, Interval, Tolerance)");
     }
     sim::DriveModel drive_model;
     sim::Network network;
@@ -141,9 +148,20 @@ class SimulateCommand : public Command {
     sim::Simulator simulator(network);
     sim::SimulationOptions options;
     if (drive) options = drive_model.Options(project);
-    options.stop_time = scenario->stop_time;
     options.relative_tolerance = project.settings.relative_tolerance;
-    options.output_interval = scenario->output_interval.value_or(project.settings.output_interval);
+    if (project.settings.absolute_tolerance) options.absolute_tolerance = *project.settings.absolute_tolerance;
+    if (scenario != nullptr) {
+      options.stop_time = scenario->stop_time;
+      options.output_interval = scenario->output_interval.value_or(project.settings.output_interval);
+    } else {  // the element network's experiment
+      const Experiment& x = *project.experiment;
+      options.start_time = x.start_time;
+      options.stop_time = x.stop_time;
+      options.output_interval = x.interval.value_or(project.settings.output_interval);
+      if (x.tolerance) options.relative_tolerance = *x.tolerance;
+    }
+    if (!std::isnan(rtol_)) options.relative_tolerance = rtol_;
+    if (!std::isnan(atol_)) options.absolute_tolerance = atol_;
     options.energy = energy_;
     options.Validate();
 
@@ -164,7 +182,9 @@ class SimulateCommand : public Command {
     if (options_.json) {
       nlohmann::json j;
       j["project"] = options_.project;
-      j["scenario"] = scenario->name;
+      j["scenario"] = scenario != nullptr ? scenario->name : "experiment";
+      j["relative_tolerance"] = options.relative_tolerance;
+      j["absolute_tolerance"] = options.absolute_tolerance;
       j["status"] = sim::ToString(report.status);
       j["ok"] = report.ok();
       j["message"] = report.message;
@@ -265,6 +285,7 @@ class SimulateCommand : public Command {
   std::string model_;
   int elements_ = -1;
   bool energy_ = false;
+  double rtol_ = NAN, atol_ = NAN;  // NaN: not given
 };
 
 }  // namespace

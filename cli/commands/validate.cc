@@ -9,6 +9,8 @@
 #include "highlift/core/error.h"
 #include "highlift/core/project_io.h"
 #include "highlift/core/validate.h"
+#include "highlift/sim/drive_network.h"
+#include "highlift/sim/simulator.h"
 
 namespace highlift::cli {
 namespace {
@@ -63,7 +65,19 @@ class ValidateCommand : public Command {
       return kInvalidInput;
     }
 
-    const ValidationReport report = ValidateProject(project);
+    ValidationReport report = ValidateProject(project);
+    // An element network that passes the graph checks gets the simulator's structural check,
+    // the one `simulate` applies (undetermined flanges, massless nodes, loops, initial values).
+    if (report.ok() && !project.elements.empty() && !sim::IsDriveSystemProject(project)) {
+      std::string problem;
+      try {
+        problem = sim::CheckStructure(sim::NetworkFromProject(project),
+                                      project.experiment ? project.experiment->start_time : 0.0);
+      } catch (const InputError& e) {
+        problem = e.what();
+      }
+      if (!problem.empty()) report.issues.push_back({ValidationIssue::Severity::kError, "", "", problem, {}});
+    }
     std::size_t errors = 0;
     std::size_t warnings = 0;
     for (const auto& issue : report.issues) {

@@ -63,6 +63,15 @@ inline ParameterSpec Start(std::string name, Dimension dimension, std::string un
   p.optional = true;
   return p;
 }
+/// An optional nominal value of a state (MSL `nominal`): scales the solver's absolute tolerance
+/// of that state (absolute_tolerance * nominal); absent means 1.
+inline ParameterSpec Nominal(std::string name, Dimension dimension, std::string unit,
+                             std::string description) {
+  ParameterSpec p = Scalar(std::move(name), dimension, std::move(unit), std::nullopt,
+                           {std::nextafter(0.0, 1.0), kInf}, std::move(description));
+  p.optional = true;
+  return p;
+}
 inline ParameterSpec Flag(std::string name, bool nominal, std::string description) {
   ParameterSpec p = Scalar(std::move(name), {}, "1", nominal ? 1.0 : 0.0, {0, 1},
                            std::move(description));
@@ -101,5 +110,7 @@ void AppendBrakeTypes(std::vector<ComponentTypeSpec>& types);
 void AppendGearTypes(std::vector<ComponentTypeSpec>& types);
 void AppendDriveTypes(std::vector<ComponentTypeSpec>& types);
 void AppendHydraulicTypes(std::vector<ComponentTypeSpec>& types);
+/// Modelica.Mechanics.Translational and the rotational-translational gears (MSL).
+void AppendTranslationalTypes(std::vector<ComponentTypeSpec>& types);
 
 }  // namespace highlift::element_types

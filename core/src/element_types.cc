@@ -34,6 +34,9 @@ std::vector<ComponentTypeSpec> MakeElementTypes() {
                       "initial relative angle phi_b - phi_a (fixed when given)"));
     p.push_back(Start("w_rel_start", AngularVelocity(), "rad/s",
                       "initial relative speed w_b - w_a (fixed when given)"));
+    p.push_back(Nominal("phi_nominal", angle, "rad",
+                        "nominal relative angle: the absolute tolerance of phi_rel is "
+                        "absolute_tolerance * phi_nominal (absent: 1)"));
     return p;
   };
   auto friction_parameters = [&](std::string table, std::string table_description) {
@@ -81,7 +84,17 @@ std::vector<ComponentTypeSpec> MakeElementTypes() {
                            "moment of inertia"),
                     Start("phi_start", angle, "rad", "initial angle (fixed when given)"),
                     Start("w_start", AngularVelocity(), "rad/s",
-                          "initial speed (fixed when given)")}));
+                          "initial speed (fixed when given)"),
+                    Flag("phi_fixed", true,
+                         "false: phi_start is a guess (MSL fixed = false), used where the initial "
+                         "equations leave the angle free"),
+                    Flag("w_fixed", true, "false: w_start is a guess (MSL fixed = false)"),
+                    Nominal("phi_nominal", angle, "rad",
+                            "nominal angle (MSL phi(nominal)): absolute tolerance of phi = "
+                            "absolute_tolerance * phi_nominal (absent: 1)"),
+                    Nominal("w_nominal", AngularVelocity(), "rad/s",
+                            "nominal speed (MSL w(nominal)): absolute tolerance of w = "
+                            "absolute_tolerance * w_nominal (absent: 1)")}));
   t.push_back(Type("Spring", "linear spring: tau = c * (phi_rel - phi_rel0)", {flange_a(), flange_b()},
                    relative_starts({Scalar("c", Torque(), "N*m/rad", std::nullopt, non_negative,
                                            "spring constant"),
@@ -98,17 +111,24 @@ std::vector<ComponentTypeSpec> MakeElementTypes() {
                                            non_negative, "damping constant"),
                                     Scalar("phi_rel0", angle, "rad", 0.0, any,
                                            "unstretched relative angle")})));
+  auto backlash = [&] {
+    return relative_starts({Scalar("c", Torque(), "N*m/rad", std::nullopt, positive, "spring constant in contact"),
+                            Scalar("d", RotationalDamping(), "N*m*s/rad", std::nullopt, non_negative,
+                                   "damping constant in contact"),
+                            Scalar("b", angle, "rad", 0.0, non_negative, "total backlash"),
+                            Scalar("phi_rel0", angle, "rad", 0.0, any, "unstretched relative angle")});
+  };
   t.push_back(Type("ElastoBacklash",
                    "spring-damper with total backlash b; contact pushes only, damping limited to "
                    "the spring torque",
-                   {flange_a(), flange_b()},
-                   relative_starts({Scalar("c", Torque(), "N*m/rad", std::nullopt, positive,
-                                           "spring constant in contact"),
-                                    Scalar("d", RotationalDamping(), "N*m*s/rad", std::nullopt,
-                                           non_negative, "damping constant in contact"),
-                                    Scalar("b", angle, "rad", 0.0, non_negative, "total backlash"),
-                                    Scalar("phi_rel0", angle, "rad", 0.0, any,
-                                           "unstretched relative angle")})));
+                   {flange_a(), flange_b()}, backlash()));
+  t.push_back(Type("ElastoBacklash2",
+                   "spring-damper with total backlash b; in contact tau = c*phi_contact + "
+                   "d*w_rel (jumps at contact), set to 0 where it would pull",
+                   {flange_a(), flange_b()}, backlash()));
+  t.push_back(Type("RelativeStates",
+                   "relative angle and speed of two flanges as states of their own (no torque)",
+                   {flange_a(), flange_b()}, relative_starts({})));
   t.push_back(Type("IdealGear",
                    "ideal gear: phi_a - phi_s = ratio * (phi_b - phi_s), ratio*tau_a + tau_b = 0",
                    {flange_a(), flange_b(), Support()},
@@ -116,8 +136,9 @@ std::vector<ComponentTypeSpec> MakeElementTypes() {
                            "transmission ratio w_a / w_b (not 0)")}));
   t.push_back(Type("IdealPlanetary",
                    "planetary gear: (1 + ratio) * phi_carrier = phi_sun + ratio * phi_ring",
-                   {Flange("sun", "sun flange"), Flange("carrier", "carrier flange"),
-                    Flange("ring", "ring flange")},
+                   // MSL: an open flange carries no torque (a free ring idles the gear).
+                   {Flange("sun", "sun flange", false), Flange("carrier", "carrier flange", false),
+                    Flange("ring", "ring flange", false)},
                    {Scalar("ratio", Dimensionless(), "1", std::nullopt, positive,
                            "number of ring teeth / number of sun teeth")}));
   t.push_back(Type("LossyGear",
@@ -185,14 +206,38 @@ std::vector<ComponentTypeSpec> MakeElementTypes() {
               "heat capacity on the heat port (useHeatPort=true)"),
        Scalar("T_heatPort_start", Temperature(), "K", 293.15, positive,
               "initial temperature of the heat capacity")}));
+  auto f_crit = [&](std::string filter) {
+    return Scalar("f_crit", AngularVelocity(), "Hz", 50.0, positive,
+                  "critical frequency of the " + std::move(filter) + " of the input (exact = false)");
+  };
   t.push_back(Type("Speed",
-                   "speed source: the flange follows w_ref through a critically damped filter "
-                   "(MSL exact=false)",
+                   "speed source: w = w_ref (exact) or w_ref through a first-order filter of "
+                   "f_crit; w = w_ref at the start",
                    source_ports({Signal("w_ref", "reference speed [rad/s]")}),
-                   {Flag("exact", false, "only false is supported: w follows w_ref filtered"),
-                    Scalar("f_crit", AngularVelocity(), "Hz", 50.0, positive,
-                           "filter frequency (first-order filter, MSL semantics for the speed)"),
+                   {Flag("exact", false,
+                         "true: w = w_ref exactly (w_ref must be differentiable); false: filtered"),
+                    f_crit("first-order filter"),
                     Start("phi_start", Dimensionless(), "rad", "initial flange angle")}));
+  t.push_back(Type("Position",
+                   "position source: phi = phi_ref (exact) or phi_ref through the second-order "
+                   "Bessel filter of f_crit; phi = phi_ref at the start",
+                   source_ports({Signal("phi_ref", "reference angle [rad]")}),
+                   {Flag("exact", false,
+                         "true: phi = phi_ref exactly (phi_ref must be differentiable twice); "
+                         "false: filtered"),
+                    f_crit("second-order Bessel filter")}));
+  t.push_back(Type("Accelerate", "acceleration source: a = a_ref; phi and w integrate it",
+                   source_ports({Signal("a_ref", "reference acceleration [rad/s^2]")}),
+                   {Scalar("phi_start", angle, "rad", 0.0, any, "initial angle (fixed)"),
+                    Scalar("w_start", AngularVelocity(), "rad/s", 0.0, any, "initial speed (fixed)")}));
+  t.push_back(Type("Move",
+                   "motion source: phi, w and a from the inputs u[1], u[2], u[3] (to be "
+                   "consistent)",
+                   source_ports({Signal("u[1]", "angle [rad]"), Signal("u[2]", "speed [rad/s]"),
+                                 Signal("u[3]", "acceleration [rad/s^2]")}),
+                   {}));
+  t.push_back(Type("ConstantSpeed", "w = w_fixed, independent of the torque", source_ports(),
+                   {Scalar("w_fixed", AngularVelocity(), "rad/s", std::nullopt, any, "fixed speed")}));
   // --- Signal sources (Modelica.Blocks) -------------------------------------------------
   t.push_back(Type("Constant", "y = k", {output()},
                    {Scalar("k", Dimensionless(), "1", std::nullopt, any, "constant output")}));
@@ -230,6 +275,7 @@ std::vector<ComponentTypeSpec> MakeElementTypes() {
   AppendGearTypes(t);
   AppendDriveTypes(t);
   AppendHydraulicTypes(t);
+  AppendTranslationalTypes(t);
   return t;
 }
 

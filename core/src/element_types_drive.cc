@@ -126,6 +126,26 @@ void AppendDriveTypes(std::vector<ComponentTypeSpec>& t) {
                    {Flange("flange_a", "first flange"), Flange("flange_b", "second flange"),
                     SignalOutput("w_rel", "relative speed [rad/s]")},
                    {}));
+  t.push_back(Type("AccSensor", "ideal sensor: a = der(der(flange.phi)) (absolute acceleration)",
+                   {Flange("flange", "measured flange"), SignalOutput("a", "acceleration [rad/s^2]")}, {}));
+  t.push_back(Type("RelAccSensor", "ideal sensor: a_rel = der(w_b - w_a)",
+                   {Flange("flange_a", "first flange"), Flange("flange_b", "second flange"),
+                    SignalOutput("a_rel", "relative acceleration [rad/s^2]")},
+                   {}));
+  auto through = [](std::vector<PortSpec> outputs) {
+    std::vector<PortSpec> p{Flange("flange_a", "flange (rigidly joined to flange_b)"),
+                            Flange("flange_b", "flange (rigidly joined to flange_a)")};
+    for (auto& o : outputs) p.push_back(std::move(o));
+    return p;
+  };
+  t.push_back(Type("TorqueSensor", "ideal sensor: tau = flange_a.tau, the torque through a rigid joint",
+                   through({SignalOutput("tau", "torque [N*m]")}), {}));
+  t.push_back(Type("PowerSensor", "ideal sensor: power = flange_a.tau * der(flange_a.phi)",
+                   through({SignalOutput("power", "power [W]")}), {}));
+  t.push_back(Type("MultiSensor", "ideal sensor: tau = flange_a.tau, w = der(flange_a.phi), power = tau * w",
+                   through({SignalOutput("power", "power [W]"), SignalOutput("w", "speed [rad/s]"),
+                            SignalOutput("tau", "torque [N*m]")}),
+                   {}));
 
   // --- Modelica.Blocks tables -------------------------------------------------------------
   t.push_back(Type(

@@ -1,6 +1,6 @@
 // Hydraulic components of the HighLift library, as element types: the classes of
-// export/modelica/HighLift/Hydraulics (same names, parameters, ports and defaults), plus the
-// translational Mass (Modelica Standard Library name) that a displacement cylinder needs. The
+// export/modelica/HighLift/Hydraulics (same names, parameters, ports and defaults). The
+// translational Mass a displacement cylinder needs is in element_types_translational.cc; the
 // sensors and the Gain of a hydraulic PDU are the drive family's (element_types_drive.cc). The laws are in sim/src/hydraulic_elements.cc; docs/hydraulics.md
 // describes the node law and the regularisation.
 //
@@ -138,16 +138,9 @@ void AppendHydraulicTypes(std::vector<ComponentTypeSpec>& types) {
               "valve command per displacement error (position loop gain)"),
        Scalar("s_max", Length(), "m", 0.02, positive, "stroke of the displacement cylinder"),
        Scalar("eps_max", Dimensionless(), "1", 1.0, {0.0, 1.0}, "limit of the displacement command")}));
-  types.push_back(Type("Mass",
-                       "translational mass (Modelica.Mechanics.Translational.Components.Mass): "
-                       "m * a = flange_a.f + flange_b.f",
-                       {Flange("flange_a", "flange, translational (rigidly tied to flange_b)", false),
-                        Flange("flange_b", "flange, translational (rigidly tied to flange_a)", false)},
-                       {Scalar("m", Mass(), "kg", std::nullopt, non_negative, "mass")}));
-  // Provenance: the HighLift library's classes (the translational Mass is the MSL's).
+  // Provenance: the HighLift library's classes.
   for (std::size_t k = first; k < types.size(); ++k)
-    if (types[k].name != "Mass")
-      for (auto& p : types[k].parameters) p.source = "HighLift.Hydraulics." + types[k].name;
+    for (auto& p : types[k].parameters) p.source = "HighLift.Hydraulics." + types[k].name;
 }
 
 }  // namespace highlift::element_types

@@ -286,7 +286,8 @@ class Reader {
     const Node root{doc_.value, ""};
     RequireObject(root, "a project file");
     CheckKeys(root, {"format", "name", "description", "sources", "settings", "components", "connections",
-                     "elements", "element_connections", "requirements", "load_cases", "scenarios"},
+                     "elements", "element_connections", "requirements", "load_cases", "scenarios",
+                     "experiment"},
               "the project");
     Project p;
     p.file = file_;
@@ -312,6 +313,7 @@ class Reader {
     if (root.has("requirements")) ReadRequirements(root["requirements"], p);
     if (root.has("load_cases")) ReadLoadCases(root["load_cases"], p);
     if (root.has("scenarios")) ReadScenarios(root["scenarios"], p);
+    if (root.has("experiment")) p.experiment = ReadExperiment(root["experiment"]);
     return p;
   }
 
@@ -396,9 +398,33 @@ class Reader {
     return values;
   }
 
+  // The Modelica experiment annotation's names: StartTime, StopTime, Interval, Tolerance.
+  Experiment ReadExperiment(const Node& n) const {
+    RequireObject(n, "'experiment'");
+    CheckKeys(n, {"StartTime", "StopTime", "Interval", "Tolerance"}, "the experiment");
+    Experiment x;
+    x.where = Where(n);
+    if (n.has("StartTime")) x.start_time = Scalar(n["StartTime"], dimensions::Time(), "experiment 'StartTime'");
+    if (!n.has("StopTime")) Fail(n, "the experiment needs 'StopTime' (e.g. \"StopTime\": \"1 s\")");
+    x.stop_time = Scalar(n["StopTime"], dimensions::Time(), "experiment 'StopTime'");
+    if (!(x.stop_time > x.start_time))
+      Fail(n["StopTime"], "experiment 'StopTime' must be greater than 'StartTime'");
+    if (n.has("Interval")) {
+      x.interval = Scalar(n["Interval"], dimensions::Time(), "experiment 'Interval'");
+      if (!(*x.interval > 0)) Fail(n["Interval"], "experiment 'Interval' must be > 0 (e.g. \"1 ms\")");
+    }
+    if (n.has("Tolerance")) {
+      x.tolerance = Number(n["Tolerance"], "experiment 'Tolerance'");
+      if (!(*x.tolerance > 0 && *x.tolerance < 1))
+        Fail(n["Tolerance"], "experiment 'Tolerance' must lie between 0 and 1 (e.g. 1e-6)");
+    }
+    return x;
+  }
+
   Settings ReadSettings(const Node& n) const {
     RequireObject(n, "'settings'");
-    CheckKeys(n, {"shaft_elements", "relative_tolerance", "output_interval", "structural_damping", "values"},
+    CheckKeys(n, {"shaft_elements", "relative_tolerance", "absolute_tolerance", "output_interval",
+                  "structural_damping", "values"},
               "the settings");
     Settings s;
     if (n.has("shaft_elements")) {
@@ -412,6 +438,12 @@ class Reader {
       if (!(s.relative_tolerance > 0 && s.relative_tolerance < 1))
         Fail(n["relative_tolerance"], "settings 'relative_tolerance' must lie between 0 and 1 (e.g. 1e-6), got " +
                                           n["relative_tolerance"].value.dump());
+    }
+    if (n.has("absolute_tolerance")) {
+      s.absolute_tolerance = Number(n["absolute_tolerance"], "settings 'absolute_tolerance'");
+      if (!(*s.absolute_tolerance > 0))
+        Fail(n["absolute_tolerance"], "settings 'absolute_tolerance' must be > 0 (e.g. 1e-8), got " +
+                                          n["absolute_tolerance"].value.dump());
     }
     if (n.has("output_interval")) {
       s.output_interval = Scalar(n["output_interval"], dimensions::Time(), "settings 'output_interval'");
@@ -616,7 +648,9 @@ class Reader {
     const std::string text = String(n, what);
     const auto dot = text.find('.');
     if (dot == std::string::npos || dot == 0 || dot + 1 == text.size() || text.find('.', dot + 1) != std::string::npos)
-      Fail(n, what + ": '" + text + "' is not a port reference; write \"component.port\", e.g. \"pdu.left\"");
+      Fail(n, what + ": '" + text + "' is not a port reference; " +
+                  (what.find("element") != std::string::npos ? "write \"element.port\", e.g. \"spring.flange_a\""
+                                                              : "write \"component.port\", e.g. \"pdu.left\""));
     return {text.substr(0, dot), text.substr(dot + 1)};
   }
 
@@ -956,6 +990,7 @@ nlohmann::json ProjectToJson(const Project& project) {
                    {"relative_tolerance", project.settings.relative_tolerance},
                    {"output_interval", project.settings.output_interval},
                    {"structural_damping", project.settings.structural_damping}};
+  if (project.settings.absolute_tolerance) settings["absolute_tolerance"] = *project.settings.absolute_tolerance;
   if (!project.settings.values.empty()) settings["values"] = project.settings.values;
   o["settings"] = settings;
   if (!project.components.empty()) {
@@ -1014,6 +1049,13 @@ nlohmann::json ProjectToJson(const Project& project) {
       a.push_back(item);
     }
     o["scenarios"] = a;
+  }
+  if (project.experiment) {
+    const Experiment& x = *project.experiment;
+    json e = {{"StartTime", x.start_time}, {"StopTime", x.stop_time}};
+    if (x.interval) e["Interval"] = *x.interval;
+    if (x.tolerance) e["Tolerance"] = *x.tolerance;
+    o["experiment"] = e;
   }
   return o;
 }

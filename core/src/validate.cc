@@ -84,7 +84,12 @@ class Validator {
     return element ? FindElementType(c.type) : FindComponentType(c.type);
   }
 
-  std::string Describe(const Component& c) const { return "component '" + c.id + "' (" + c.type + ")"; }
+  // Elements of the element network are "element", drive-system components "component".
+  std::string Describe(const Component& c) const {
+    const auto& e = project_.elements;
+    const bool element = !e.empty() && &c >= e.data() && &c < e.data() + e.size();
+    return (element ? "element '" : "component '") + c.id + "' (" + c.type + ")";
+  }
 
   // Types, parameters, ports, connections -------------------------------------------------------
   void CheckNetwork(const std::vector<Component>& components, const std::vector<Connection>& connections, bool element) {

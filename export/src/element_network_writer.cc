@@ -20,14 +20,15 @@ const std::map<std::string, std::string>& ClassOfElementType() {
     const std::string rotational = "Modelica.Mechanics.Rotational.";
     for (const char* c : {"Fixed", "Inertia", "Spring", "Damper", "SpringDamper", "ElastoBacklash",
                           "ElastoBacklash2", "IdealGear", "IdealPlanetary", "LossyGear",
-                          "BearingFriction", "Brake", "Clutch", "OneWayClutch"})
+                          "BearingFriction", "Brake", "Clutch", "OneWayClutch", "RelativeStates",
+                          "IdealGearR2T", "IdealRollingWheel"})
       m[c] = rotational + "Components." + c;
     for (const char* c : {"Torque", "ConstantTorque", "TorqueStep", "LinearSpeedDependentTorque",
                           "QuadraticSpeedDependentTorque", "SignTorque", "EddyCurrentTorque", "Speed",
-                          "Position", "ConstantSpeed"})
+                          "Position", "ConstantSpeed", "Accelerate", "Move"})
       m[c] = rotational + "Sources." + c;
-    for (const char* c : {"AngleSensor", "SpeedSensor", "TorqueSensor", "RelAngleSensor",
-                          "RelSpeedSensor", "PowerSensor", "MultiSensor"})
+    for (const char* c : {"AngleSensor", "SpeedSensor", "AccSensor", "TorqueSensor", "RelAngleSensor",
+                          "RelSpeedSensor", "RelAccSensor", "PowerSensor", "MultiSensor"})
       m[c] = rotational + "Sensors." + c;
     for (const char* c : {"Constant", "Step", "Ramp", "Sine", "Cosine", "Pulse", "TimeTable"})
       m[c] = std::string("Modelica.Blocks.Sources.") + c;
@@ -46,7 +47,12 @@ const std::map<std::string, std::string>& ClassOfElementType() {
                           "DifferentialCylinder", "VariableDisplacementMotor", "Volume",
                           "MotorSpeedControl"})
       m[c] = std::string("HighLift.Hydraulics.") + c;
-    m["Mass"] = "Modelica.Mechanics.Translational.Components.Mass";
+    const std::string translational = "Modelica.Mechanics.Translational.";
+    for (const char* c : {"Mass", "Fixed", "Spring", "Damper", "SpringDamper"})
+      m[std::string(c) == "Mass" ? c : std::string("Translational.") + c] = translational + "Components." + c;
+    m["Translational.Force"] = translational + "Sources.Force";
+    for (const char* c : {"PositionSensor", "SpeedSensor"})
+      m[std::string("Translational.") + c] = translational + "Sensors." + c;
     m["CombiTimeTable"] = "Modelica.Blocks.Sources.CombiTimeTable";
     m["CombiTable1Ds"] = "Modelica.Blocks.Tables.CombiTable1Ds";
     return m;
@@ -131,7 +137,11 @@ ModelOutput WriteElementNetwork(const Project& project, const std::string& model
         if (IsHeatCapacitorParameter(p.name)) continue;
         const double v = RequireValue(e, p.name);
         const std::string what = "element '" + e.id + "' parameter '" + p.name + "'";
-        if (p.kind == ParameterKind::kBoolean) {
+        const bool start_flag = p.name.size() > 6 && p.name.substr(p.name.size() - 6) == "_fixed" &&
+                                !HasModifier(cls->second, p.name);
+        if (p.kind == ParameterKind::kBoolean && start_flag) {
+          continue;  // phi_fixed = false: the `fixed` attribute of phi_start's modifier
+        } else if (p.kind == ParameterKind::kBoolean) {
           if (p.name == "useHeatPort") heat_port = v != 0.0;
           inst.modifiers.push_back({p.name, v != 0.0 ? "true" : "false", {}});
         } else if (p.kind == ParameterKind::kInteger) {
@@ -143,22 +153,39 @@ ModelOutput WriteElementNetwork(const Project& project, const std::string& model
           const std::string variable = p.name.substr(0, p.name.size() - 6);
           const auto known = MslModifiers(cls->second);
           const bool msl = cls->second.rfind("Modelica.", 0) == 0;
+          auto fixed_flag = e.parameters.find(variable + "_fixed");
+          const bool fixed = fixed_flag == e.parameters.end() || !fixed_flag->second.nominal ||
+                             *fixed_flag->second.nominal != 0.0;
           if (!msl || std::find(known.begin(), known.end(), variable) != known.end()) {
-            inst.modifiers.push_back({variable, "", {{"start", FormatModelicaReal(v, what)}, {"fixed", "true"}}});
-          } else if (variable == "w_rel" || variable == "w") {
-            initial_equations.push_back("der(" + inst.name + (variable == "w" ? ".phi" : ".phi_rel") +
-                                        ") = " + FormatModelicaReal(v, what) + ";");
+            inst.modifiers.push_back(
+                {variable, "", {{"start", FormatModelicaReal(v, what)}, {"fixed", fixed ? "true" : "false"}}});
+          } else if (variable == "w_rel" || variable == "w" || variable == "v_rel" || variable == "v") {
+            const std::string position = variable == "w" ? ".phi" : variable == "w_rel" ? ".phi_rel"
+                                         : variable == "v" ? ".s" : ".s_rel";
+            initial_equations.push_back("der(" + inst.name + position + ") = " + FormatModelicaReal(v, what) + ";");
           } else {
             throw InputError("element '" + e.id + "' (" + e.type + "): initial value '" + p.name +
                                  "' has no variable in " + cls->second + "; leave it out",
                              e.where);
           }
+        } else if (p.name.size() > 8 && p.name.substr(p.name.size() - 8) == "_nominal" &&
+                   !HasModifier(cls->second, p.name)) {
+          // A nominal value the class has no parameter for: the attribute of the variable
+          // (Inertia: phi(nominal = ...); Spring: phi_rel(nominal = ...)).
+          std::string variable = p.name.substr(0, p.name.size() - 8);
+          const auto known = MslModifiers(cls->second);
+          if (std::find(known.begin(), known.end(), variable) == known.end()) variable += "_rel";
+          inst.modifiers.push_back({variable, "", {{"nominal", FormatModelicaReal(v, what)}}});
         } else {
           inst.modifiers.push_back({p.name, FormatModelicaReal(v, what), {}});
         }
       }
     }
-    if (connected.count({e.id, "support"})) inst.modifiers.push_back({"useSupport", "true", {}});
+    // A connected support switches its useSupport on (useSupportR, useSupportT of the
+    // rotational-translational gears).
+    for (const char* support : {"support", "supportR", "supportT"})
+      if (connected.count({e.id, support}))
+        inst.modifiers.push_back({std::string("useS") + (support + 1), "true", {}});
     for (const ConditionalInput& input : kConditionalInputs)
       if (e.type == input.type && connected.count({e.id, input.input}))
         inst.modifiers.push_back({input.parameter, "true", {}});
@@ -194,6 +221,10 @@ ModelOutput WriteElementNetwork(const Project& project, const std::string& model
   if (scenario) {
     experiment.stop_time = scenario->stop_time;
     if (scenario->output_interval) experiment.interval = *scenario->output_interval;  // as `highlift simulate`
+  } else if (project.experiment) {  // the project's own experiment annotation
+    experiment.stop_time = project.experiment->stop_time;
+    if (project.experiment->interval) experiment.interval = *project.experiment->interval;
+    if (project.experiment->tolerance) experiment.tolerance = *project.experiment->tolerance;
   } else if (auto it = project.settings.values.find("stop_time"); it != project.settings.values.end()) {
     experiment.stop_time = it->second;
   }

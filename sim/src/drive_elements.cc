@@ -394,6 +394,7 @@ class Sensor : public Element {
     b = flanges_.size() > 1 ? node_of(flanges_[1]) : -1;
   }
   std::vector<int> Nodes() const override { return b < 0 ? std::vector<int>{a} : std::vector<int>{a, b}; }
+  MasslessRole RoleAt(int) const override { return MasslessRole::kNoTorque; }
   std::vector<std::string> OutputNames() const override { return {output_}; }
   void Outputs(const Eval& e, double* out) const override { out[0] = e.signal[signal_offset]; }
   std::vector<std::string> flanges_;
@@ -593,6 +594,10 @@ class Gain : public SignalBlock {
     u = signal_of("u");
   }
   double Signal(const Eval& e) const override { return k * e.signal[u]; }
+  void SignalDerivatives(const Eval& e, double* d1, double* d2) const override {
+    *d1 = k * e.signal_d1[u];
+    *d2 = k * e.signal_d2[u];
+  }
   double k;
   int u = -1;
 };
@@ -607,6 +612,10 @@ class Add : public SignalBlock {
     u2 = signal_of("u2");
   }
   double Signal(const Eval& e) const override { return k1 * e.signal[u1] + k2 * e.signal[u2]; }
+  void SignalDerivatives(const Eval& e, double* d1, double* d2) const override {
+    *d1 = k1 * e.signal_d1[u1] + k2 * e.signal_d1[u2];
+    *d2 = k1 * e.signal_d2[u1] + k2 * e.signal_d2[u2];
+  }
   double k1, k2;
   int u1 = -1, u2 = -1;
 };

@@ -36,6 +36,7 @@ std::unique_ptr<Element> MakeElement(const NetworkElement& e) {
   else if (t == "Damper") el = std::make_unique<Damper>(e);
   else if (t == "SpringDamper") el = std::make_unique<SpringDamper>(e);
   else if (t == "ElastoBacklash") el = std::make_unique<ElastoBacklash>(e);
+  else if (t == "ElastoBacklash2") el = std::make_unique<ElastoBacklash2>(e);
   else if (t == "IdealGear") el = std::make_unique<IdealGear>(e);
   else if (t == "IdealPlanetary") el = std::make_unique<IdealPlanetary>(e);
   else if (t == "LossyGear") el = std::make_unique<LossyGear>(e);
@@ -50,7 +51,6 @@ std::unique_ptr<Element> MakeElement(const NetworkElement& e) {
   else if (t == "QuadraticSpeedDependentTorque") el = std::make_unique<SpeedDependentTorque>(e, true);
   else if (t == "SignTorque") el = std::make_unique<SignTorque>(e);
   else if (t == "EddyCurrentTorque") el = std::make_unique<EddyCurrentTorque>(e);
-  else if (t == "Speed") el = std::make_unique<Speed>(e);
   else if (t == "Constant") el = std::make_unique<Constant>(e);
   else if (t == "Step") el = std::make_unique<Step>(e);
   else if (t == "Ramp") el = std::make_unique<Ramp>(e);
@@ -59,7 +59,8 @@ std::unique_ptr<Element> MakeElement(const NetworkElement& e) {
   else if (t == "TimeTable") el = std::make_unique<TimeTable>(e);
   else if (t == "Product") el = std::make_unique<Product>();
   else if (t == "Feedback") el = std::make_unique<Feedback>();
-  else if ((el = MakeBrakeElement(e))) {
+  else if ((el = MakeMoreMslElement(e))) {
+  } else if ((el = MakeBrakeElement(e))) {
   } else if ((el = MakeGearElement(e))) {
   } else if ((el = MakeDriveElement(e))) {
   } else if ((el = MakeHydraulicElement(e))) {

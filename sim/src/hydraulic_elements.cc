@@ -1,7 +1,7 @@
 // Hydraulic components of the HighLift library (HighLift.Hydraulics): pressure source and
 // tank, turbulent resistance, servo valve, differential cylinder, variable-displacement motor,
-// compressible volume, the speed loop of a secondary-controlled motor; and the translational
-// Mass of the MSL that a displacement cylinder needs.
+// compressible volume, the speed loop of a secondary-controlled motor. The translational Mass a
+// displacement cylinder needs is in msl_more_elements.cc.
 //
 // Hydraulic nodes (system.cc, BuildHydraulicNodes): connected hydraulic ports share one
 // pressure p; a source fixes it, otherwise dp/dt = sum(V_flow into the node) / sum(V/E) over
@@ -464,30 +464,6 @@ class MotorSpeedControl : public Element {
   int m = -1, r = -1, w_ref = -1, active = -1;
 };
 
-// ------------------------------------------------------------------------------------------
-// Translational Mass (the simulator's mechanical node in m and N).
-
-class Mass : public Element {
- public:
-  explicit Mass(const NetworkElement& e) : m(Param(e, "m")) {}
-  std::vector<std::vector<std::string>> RigidFlanges() const override { return {{"flange_a", "flange_b"}}; }
-  std::vector<std::string> Flanges() const override { return {"flange_a", "flange_b"}; }
-  void Bind(const std::function<int(const std::string&)>& node_of,
-            const std::function<int(const std::string&)>&) override {
-    n = node_of("flange_a");
-  }
-  void AddInertia(std::vector<Node>& nodes) const override { nodes[n].J += m; }
-  std::vector<int> Nodes() const override { return {n}; }
-  std::vector<std::string> OutputNames() const override { return {"s", "v", "a"}; }
-  void Outputs(const Eval& e, double* out) const override {
-    out[0] = e.phi[n];
-    out[1] = e.w[n];
-    out[2] = e.acc[n];
-  }
-  double m;
-  int n = -1;
-};
-
 }  // namespace
 
 std::unique_ptr<Element> MakeHydraulicElement(const NetworkElement& e) {
@@ -500,7 +476,6 @@ std::unique_ptr<Element> MakeHydraulicElement(const NetworkElement& e) {
   if (t == "VariableDisplacementMotor") return std::make_unique<VariableDisplacementMotor>(e);
   if (t == "Volume") return std::make_unique<Volume>(e);
   if (t == "MotorSpeedControl") return std::make_unique<MotorSpeedControl>(e);
-  if (t == "Mass") return std::make_unique<Mass>(e);
   return nullptr;
 }
 

@@ -2,6 +2,7 @@
 // their laws, the KKT solve of the node accelerations, the mode logic of switching elements.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <memory>
@@ -35,6 +36,13 @@ struct Node {
   double J = 0.0;       ///< total inertia attached
   int s_phi = -1;       ///< state index of the angle (-1 for ground)
   int s_w = -1;         ///< state index of the speed
+  /// Nominal values of the angle and speed states (rad, rad/s; NaN: 1), declared by the
+  /// inertias on the node (MSL `phi(nominal=...)`, `w(nominal=...)`): the absolute tolerance
+  /// of a state is SimulationOptions::absolute_tolerance times its nominal value.
+  double phi_nominal = NAN, w_nominal = NAN;
+  /// No inertia and no kinematic coupling, only compliant elements (and sensors): the node is
+  /// the static balance of their torques, its speed solved at each evaluation (System).
+  bool massless = false;
 };
 
 /// A hydraulic node: hydraulic ports connected to each other (sim/src/hydraulic_elements.cc).
@@ -59,6 +67,7 @@ struct Constraint {
   std::vector<std::pair<int, double>> column;
   double rhs = 0.0;
   bool velocity_level = true;  ///< the same relation holds for the speeds (projected at events)
+  double velocity_rhs = 0.0;   ///< the speed relation sum(row * w) = velocity_rhs (velocity_level)
   int owner = -1;              ///< element index
   double lambda = 0.0;         ///< solution: the multiplier (constraint torque)
 };
@@ -72,6 +81,9 @@ struct Eval {
   double* ydot = nullptr;  ///< may be null (output evaluation)
   std::vector<double> phi, w, acc, force;  ///< per node
   std::vector<double> signal;              ///< per signal output slot (Element::signal_offset)
+  /// First and second time derivatives of the signals, per slot (NaN where a block cannot
+  /// give them); computed only when an element needs them (Element::NeedsSignalDerivatives).
+  std::vector<double> signal_d1, signal_d2;
   std::vector<Constraint> constraints;
   int n_constraints = 0;  ///< used entries of `constraints`
 
@@ -82,6 +94,7 @@ struct Eval {
     c.column.clear();
     c.rhs = 0.0;
     c.velocity_level = true;
+    c.velocity_rhs = 0.0;
     c.owner = owner;
     c.lambda = 0.0;
     return c;
@@ -141,6 +154,32 @@ class Element {
   }
   /// Inertia attached to nodes.
   virtual void AddInertia(std::vector<Node>& nodes) const { (void)nodes; }
+  /// How the element's torque on `node` enters the balance of a massless node: kOther (it
+  /// cannot: a source, friction, a gear), kNoTorque (a sensor), kCompliant (tau(phi_rel, w_rel)
+  /// of its own twist state, Element::BalanceTorque).
+  enum class MasslessRole { kOther, kNoTorque, kCompliant };
+  virtual MasslessRole RoleAt(int node) const {
+    (void)node;
+    return MasslessRole::kOther;
+  }
+  /// kCompliant elements: the torque T on `node` when that node turns at w_node (the other
+  /// flange at its evaluated speed), and the other flange's node in `other`.
+  virtual double BalanceTorque(const Eval& e, int node, double w_node, int& other) const {
+    (void)e;
+    (void)node;
+    (void)w_node;
+    other = -1;
+    return 0.0;
+  }
+  /// kCompliant elements: the rate dT/dt = dT/dphi_rel * w_rel of that torque from the twist
+  /// alone (the balance of springs without damping).
+  virtual double BalanceRate(const Eval& e, int node, double w_node, int& other) const {
+    (void)e;
+    (void)node;
+    (void)w_node;
+    other = -1;
+    return 0.0;
+  }
   /// Nodes this element may couple by a constraint (for the KKT grouping and bandwidth).
   virtual std::vector<int> CoupledNodes() const { return {}; }
   /// Nodes this element reads or acts on.
@@ -165,6 +204,11 @@ class Element {
   /// 0 for other states: the absolute tolerance of a twist follows from a torque tolerance
   /// (SimulationOptions::torque_tolerance). `stiffness` has NumStates() entries, all 0 on entry.
   virtual void StateStiffness(double* stiffness) const { (void)stiffness; }
+  /// Nominal values of the own states (MSL `nominal`; NaN: 1). The absolute tolerance of a
+  /// state is SimulationOptions::absolute_tolerance times its nominal value, so a small signal
+  /// (a housing speed of 1e-5 rad/s) is resolved relative to its own size. `nominal` has
+  /// NumStates() entries, all NaN on entry.
+  virtual void StateNominals(double* nominal) const { (void)nominal; }
 
   // --- initial conditions ---
   /// Equations sum(coef*phi[node]) = value that fix initial angles (and the speed version).
@@ -176,6 +220,20 @@ class Element {
                                 std::vector<InitialEquation>& speed) const {
     (void)position;
     (void)speed;
+  }
+  /// Start values that are guesses (MSL start with fixed = false), as (node, value): the
+  /// initial angles and speeds are the solution of the initial equations nearest to them.
+  virtual void InitialGuesses(std::vector<std::pair<int, double>>& position,
+                              std::vector<std::pair<int, double>>& speed) const {
+    (void)position;
+    (void)speed;
+  }
+  /// The same with the evaluated signals at the start time (a source whose initial angle or
+  /// speed follows its input); by default InitialEquations().
+  virtual void InitialEquationsAt(const Eval& e, std::vector<InitialEquation>& position,
+                                  std::vector<InitialEquation>& speed) const {
+    (void)e;
+    InitialEquations(position, speed);
   }
   /// Holonomic constraints that hold for the angles too (gears).
   virtual void HolonomicRows(std::vector<InitialEquation>& rows) const { (void)rows; }
@@ -192,6 +250,20 @@ class Element {
   }
   /// Values of the outputs of SignalOutputs(), in order; by default the one output Signal().
   virtual void Signals(const Eval& e, double* out) const { out[0] = Signal(e); }
+  /// First and second time derivatives of the outputs (Modelica's differentiation of an input
+  /// for an exact source); NaN (the default) where the block cannot give them.
+  virtual void SignalDerivatives(const Eval& e, double* d1, double* d2) const {
+    (void)e;
+    const std::size_t n = SignalOutputs().size();
+    std::fill(d1, d1 + n, NAN);
+    std::fill(d2, d2 + n, NAN);
+  }
+  /// Whether the element reads Eval::signal_d1 / signal_d2 of its inputs.
+  virtual bool NeedsSignalDerivatives() const { return false; }
+  /// Whether the signal outputs are computed from the solved accelerations or constraint
+  /// torques (torque, power and acceleration sensors): evaluated after the solve; they may feed
+  /// signal blocks and outputs, not a law that acts in the same solve (an algebraic loop).
+  virtual bool SignalsAfterSolve() const { return false; }
   // The defaults do nothing and say so (unused_phases): after the first evaluation the system
   // calls each phase only on the elements that implement it.
   virtual void Forces(Eval& e) {
@@ -333,5 +405,9 @@ std::unique_ptr<Element> MakeGearElement(const NetworkElement& element);
 std::unique_ptr<Element> MakeDriveElement(const NetworkElement& element);
 /// Hydraulics (hydraulic_elements.cc).
 std::unique_ptr<Element> MakeHydraulicElement(const NetworkElement& element);
+/// The further MSL elements (msl_more_elements.cc): Rotational sensors with torque, power and
+/// acceleration, RelativeStates, the motion sources Position, Speed (exact), Accelerate, Move,
+/// ConstantSpeed, and the translational elements a ballscrew or rack needs.
+std::unique_ptr<Element> MakeMoreMslElement(const NetworkElement& element);
 
 }  // namespace highlift::sim::detail

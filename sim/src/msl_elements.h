@@ -62,6 +62,11 @@ class Inertia : public Element {
   explicit Inertia(const NetworkElement& e) : J(Param(e, "J")) {
     if (Given(e, "phi_start")) phi_start = Param(e, "phi_start");
     if (Given(e, "w_start")) w_start = Param(e, "w_start");
+    // phi_fixed / w_fixed = false: the start value is a guess (translational Mass: s_fixed...).
+    phi_guess = Given(e, "phi_fixed") && Param(e, "phi_fixed") == 0;
+    w_guess = Given(e, "w_fixed") && Param(e, "w_fixed") == 0;
+    if (Given(e, "phi_nominal")) phi_nominal = Param(e, "phi_nominal");
+    if (Given(e, "w_nominal")) w_nominal = Param(e, "w_nominal");
   }
   std::vector<std::vector<std::string>> RigidFlanges() const override {
     return {{"flange_a", "flange_b"}};
@@ -71,12 +76,23 @@ class Inertia : public Element {
             const std::function<int(const std::string&)>&) override {
     n = node_of("flange_a");
   }
-  void AddInertia(std::vector<Node>& nodes) const override { nodes[n].J += J; }
+  /// Adds J; the smallest nominal values declared on a node scale its tolerances.
+  void AddInertia(std::vector<Node>& nodes) const override {
+    Node& node = nodes[n];
+    node.J += J;
+    if (!std::isnan(phi_nominal)) node.phi_nominal = std::fmin(node.phi_nominal, phi_nominal);
+    if (!std::isnan(w_nominal)) node.w_nominal = std::fmin(node.w_nominal, w_nominal);
+  }
   std::vector<int> Nodes() const override { return {n}; }
   void InitialEquations(std::vector<InitialEquation>& position,
                         std::vector<InitialEquation>& speed) const override {
-    if (!std::isnan(phi_start)) position.push_back({{{n, 1.0}}, phi_start});
-    if (!std::isnan(w_start)) speed.push_back({{{n, 1.0}}, w_start});
+    if (!std::isnan(phi_start) && !phi_guess) position.push_back({{{n, 1.0}}, phi_start});
+    if (!std::isnan(w_start) && !w_guess) speed.push_back({{{n, 1.0}}, w_start});
+  }
+  void InitialGuesses(std::vector<std::pair<int, double>>& position,
+                      std::vector<std::pair<int, double>>& speed) const override {
+    if (!std::isnan(phi_start) && phi_guess) position.push_back({n, phi_start});
+    if (!std::isnan(w_start) && w_guess) speed.push_back({n, w_start});
   }
   std::vector<std::string> OutputNames() const override { return {"phi", "w", "a"}; }
   void Outputs(const Eval& e, double* out) const override {
@@ -86,6 +102,8 @@ class Inertia : public Element {
   }
   double J;
   double phi_start = NAN, w_start = NAN;
+  double phi_nominal = NAN, w_nominal = NAN;
+  bool phi_guess = false, w_guess = false;  ///< the start values are guesses (fixed = false)
   int n = -1;
 };
 
@@ -116,7 +134,9 @@ class Compliant : public TwoFlange {
   explicit Compliant(const NetworkElement& e) {
     if (Given(e, "phi_rel_start")) phi_rel_start = Param(e, "phi_rel_start");
     if (Given(e, "w_rel_start")) w_rel_start = Param(e, "w_rel_start");
+    if (Given(e, "phi_nominal")) phi_nominal = Param(e, "phi_nominal");
   }
+  void StateNominals(double* nominal) const override { nominal[0] = phi_nominal; }
   /// The law: element torque from relative angle and speed.
   virtual double Tau(double phi_rel, double w_rel) const = 0;
   /// The conservative part: potential energy and its derivative (the spring torque).
@@ -129,6 +149,22 @@ class Compliant : public TwoFlange {
     return 0.0;
   }
   double StoredEnergy(const Eval& e) const override { return Potential(PhiRel(e)); }
+  MasslessRole RoleAt(int) const override { return MasslessRole::kCompliant; }
+  /// +tau on node a, -tau on node b, with w_rel from the node's speed w_node.
+  double WRelAt(const Eval& e, int node, double w_node, int& other) const {
+    other = node == a ? b : a;
+    return node == a ? e.w[b] - w_node : w_node - e.w[a];
+  }
+  double BalanceTorque(const Eval& e, int node, double w_node, int& other) const override {
+    const double t = Tau(PhiRel(e), WRelAt(e, node, w_node, other));
+    return node == a ? t : -t;
+  }
+  double BalanceRate(const Eval& e, int node, double w_node, int& other) const override {
+    const double w_rel = WRelAt(e, node, w_node, other);
+    const double phi = PhiRel(e), h = 1e-7 * (1e-3 + std::abs(phi));
+    const double k = (Tau(phi + h, w_rel) - Tau(phi - h, w_rel)) / (2 * h);
+    return (node == a ? k : -k) * w_rel;
+  }
   /// Power taken from the flanges, tau * w_rel, less the rate of the potential energy.
   double LossPower(const Eval& e) const override {
     return (tau - SpringTorque(PhiRel(e))) * WRel(e);
@@ -166,6 +202,7 @@ class Compliant : public TwoFlange {
   double PeakTorque(const Eval&) const override { return tau; }
 
   double phi_rel_start = NAN, w_rel_start = NAN;
+  double phi_nominal = NAN;  ///< rad, scales the absolute tolerance of phi_rel (NaN: 1)
   mutable double tau = 0.0;
 };
 
@@ -247,6 +284,32 @@ class ElastoBacklash : public Compliant {
     g[1] = delta + b_total / 2;
   }
   double c, d, b_total, phi_rel0;
+};
+
+/// MSL 4.0.0 ElastoBacklash2: in contact tau = tau_c + tau_d (the damping acts in full, so the
+/// torque jumps by d*w_rel when contact begins), clipped to 0 where it would pull. Contact and
+/// release are events that restart the integrator (the torque jumps); the clipping is
+/// continuous (roots 2 and 3 only locate its kinks).
+class ElastoBacklash2 : public ElastoBacklash {
+ public:
+  explicit ElastoBacklash2(const NetworkElement& e) : ElastoBacklash(e) {}
+  double Tau(double phi_rel, double w_rel) const override {
+    const double delta = phi_rel - phi_rel0;
+    if (b_total <= 1e-10) return c * delta + d * w_rel;
+    const double g = b_total / 2;
+    if (delta > g) return std::max(c * (delta - g) + d * w_rel, 0.0);
+    if (delta < -g) return std::min(c * (delta + g) + d * w_rel, 0.0);
+    return 0.0;
+  }
+  int NumRoots() const override { return b_total <= 1e-10 ? 0 : 4; }
+  void Roots(const Eval& e, double* g) const override {
+    ElastoBacklash::Roots(e, g);
+    const double delta = PhiRel(e) - phi_rel0, w_rel = WRel(e), half = b_total / 2;
+    g[2] = delta > half ? c * (delta - half) + d * w_rel : 1.0;
+    g[3] = delta < -half ? c * (delta + half) + d * w_rel : -1.0;
+  }
+  /// The torque jumps at contact (roots 0 and 1) unless d = 0.
+  bool RootRestarts(int k) const override { return k < 2 && d > 0; }
 };
 
 // ------------------------------------------------------------------------------------------
@@ -415,10 +478,13 @@ class Friction : public Element {
     } else {
       g[1] = 1.0;
     }
-    // A normal force that sits at exactly 0 (brake released) is reported as just below 0, so
-    // that CVODE does not see a root function that is identically zero.
+    // A normal force that sits at exactly 0 is reported just below 0 while the element is free
+    // (so that its rise from 0, e.g. a ramp starting at t = 0, is a root) and just above 0 once
+    // engaged (so that the engagement at that very instant is not located again); CVODE then
+    // never sees a root function that is identically zero.
     const double fn = can_be_free ? Fn(e) : 1.0;
-    g[2] = fn == 0.0 ? -std::numeric_limits<double>::min() : fn;
+    const bool free = mode == kFree || mode == kUnknown;
+    g[2] = fn == 0.0 ? (free ? -1.0 : 1.0) * std::numeric_limits<double>::min() : fn;
   }
   void RootDirections(int* d) const override {
     d[0] = mode == kForward ? -1 : (mode == kBackward ? 1 : 0);
@@ -430,7 +496,10 @@ class Friction : public Element {
     start_forward = start_backward = false;
     const double w = WF(e);
     const double w_eps = 1e-9 * (1.0 + std::abs(e.w[p]) + std::abs(e.w[m]));
-    if (can_be_free && !one_way && Fn(e) <= 0) {
+    // Root 2 located the rise of the normal force: engaged from this instant on (the right
+    // limit), even where the force evaluates to exactly 0 at the located time.
+    const bool rising = Fired(2) && (mode == kFree || mode == kUnknown) && Fn(e) >= 0;
+    if (can_be_free && !one_way && Fn(e) <= 0 && !rising) {
       mode = kFree;
       return;
     }
@@ -593,7 +662,9 @@ class Clutch : public SurfaceFriction {
     one_way = one_way_clutch;
     if (Given(e, "phi_rel_start")) phi_rel_start = Param(e, "phi_rel_start");
     if (Given(e, "w_rel_start")) w_rel_start = Param(e, "w_rel_start");
+    if (Given(e, "phi_nominal")) phi_nominal = Param(e, "phi_nominal");
   }
+  void StateNominals(double* nominal) const override { nominal[0] = phi_nominal; }
   std::vector<std::string> Flanges() const override { return {"flange_a", "flange_b"}; }
   void Bind(const std::function<int(const std::string&)>& node_of,
             const std::function<int(const std::string&)>& signal_of) override {
@@ -642,6 +713,7 @@ class Clutch : public SurfaceFriction {
     }
   }
   double phi_rel_start = NAN, w_rel_start = NAN;
+  double phi_nominal = NAN;
 };
 
 // ------------------------------------------------------------------------------------------
@@ -1022,52 +1094,6 @@ class EddyCurrentTorque : public TorqueSource {
   double T_fixed, C, T_start;
 };
 
-/// Speed source (MSL exact=false): the flange acceleration is (w_ref - w) * 2*pi*f_crit.
-class Speed : public Element {
- public:
-  explicit Speed(const NetworkElement& e) : w_crit(2 * kPi * Param(e, "f_crit")) {
-    if (Param(e, "exact") != 0)
-      throw InputError("element '" + e.id + "' (Speed): exact = true is not supported; set "
-                       "exact = false and choose f_crit well above the dynamics of interest");
-    if (Given(e, "phi_start")) phi_start = Param(e, "phi_start");
-  }
-  std::vector<std::string> Flanges() const override { return {"flange", "support"}; }
-  std::vector<std::string> SignalInputs() const override { return {"w_ref"}; }
-  void Bind(const std::function<int(const std::string&)>& node_of,
-            const std::function<int(const std::string&)>& signal_of) override {
-    n = node_of("flange");
-    s = node_of("support");
-    u = signal_of("w_ref");
-  }
-  std::vector<int> Nodes() const override { return {n, s}; }
-  std::vector<int> CoupledNodes() const override { return {n, s}; }
-  void InitialEquations(std::vector<InitialEquation>& position,
-                        std::vector<InitialEquation>&) const override {
-    if (!std::isnan(phi_start)) position.push_back({{{n, 1.0}, {s, -1.0}}, phi_start});
-  }
-  void Constraints(Eval& e) override {
-    Constraint& c = e.NewConstraint(index);
-    c.row = {{n, 1.0}, {s, -1.0}};
-    c.column = {{n, 1.0}, {s, -1.0}};  // multiplier = torque driving the flange
-    c.rhs = (e.signal[u] - (e.w[n] - e.w[s])) * w_crit;
-    c.velocity_level = false;
-    constraint = e.n_constraints - 1;
-  }
-  void AfterSolve(Eval& e) override { tau = e.constraints[constraint].lambda; }
-  std::vector<std::string> OutputNames() const override { return {"tau", "w", "w_ref"}; }
-  void Outputs(const Eval& e, double* out) const override {
-    out[0] = tau;
-    out[1] = e.w[n] - e.w[s];
-    out[2] = e.signal[u];
-  }
-  double PeakTorque(const Eval&) const override { return tau; }
-  double SourcePower(const Eval& e) const override { return tau * (e.w[n] - e.w[s]); }
-  double w_crit;
-  double phi_start = NAN;
-  int n = -1, s = -1, u = -1, constraint = -1;
-  double tau = 0.0;
-};
-
 // ------------------------------------------------------------------------------------------
 // Signal blocks (Modelica.Blocks). Branches (before/after startTime, ramp phases, pulse
 // states) are chosen from e.t_segment, the right limit of the last event, so that a branch
@@ -1084,6 +1110,7 @@ class Constant : public SignalBlock {
  public:
   explicit Constant(const NetworkElement& e) : k(Param(e, "k")) {}
   double Signal(const Eval&) const override { return k; }
+  void SignalDerivatives(const Eval&, double* d1, double* d2) const override { *d1 = *d2 = 0.0; }
   double k;
 };
 
@@ -1094,6 +1121,7 @@ class Step : public SignalBlock {
   double Signal(const Eval& e) const override {
     return offset + (e.t_segment < t0 ? 0.0 : height);
   }
+  void SignalDerivatives(const Eval&, double* d1, double* d2) const override { *d1 = *d2 = 0.0; }
   double NextTimeEvent(double t) const override { return t < t0 ? t0 : INFINITY; }
   double height, offset, t0;
 };
@@ -1109,6 +1137,10 @@ class Ramp : public SignalBlock {
     if (e.t_segment < t0) return offset;
     if (e.t_segment < t0 + duration) return offset + height * (e.t - t0) / duration;
     return offset + height;
+  }
+  void SignalDerivatives(const Eval& e, double* d1, double* d2) const override {
+    *d1 = e.t_segment >= t0 && e.t_segment < t0 + duration ? height / duration : 0.0;
+    *d2 = 0.0;
   }
   double NextTimeEvent(double t) const override {
     if (t < t0) return t0;
@@ -1129,6 +1161,15 @@ class Sine : public SignalBlock {
   double Signal(const Eval& e) const override {
     if (e.t_segment < t0) return offset;
     return offset + amplitude * std::sin(2 * kPi * f * (e.t - t0) + phase);
+  }
+  void SignalDerivatives(const Eval& e, double* d1, double* d2) const override {
+    if (e.t_segment < t0) {
+      *d1 = *d2 = 0.0;
+      return;
+    }
+    const double w = 2 * kPi * f, x = w * (e.t - t0) + phase;
+    *d1 = amplitude * w * std::cos(x);
+    *d2 = -amplitude * w * w * std::sin(x);
   }
   double NextTimeEvent(double t) const override { return t < t0 ? t0 : INFINITY; }
   double amplitude, f, phase, offset, t0;
@@ -1156,6 +1197,7 @@ class Pulse : public SignalBlock {
     const double in_period = t - (t0 + k * period);
     return offset + (in_period < width / 100 * period * (1 - 1e-12) ? amplitude : 0.0);
   }
+  void SignalDerivatives(const Eval&, double* d1, double* d2) const override { *d1 = *d2 = 0.0; }
   double NextTimeEvent(double t) const override {
     if (t < t0) return t0;
     const long k = PeriodIndex(t);
@@ -1204,12 +1246,22 @@ class Product : public SignalBlock {
     u2 = signal_of("u2");
   }
   double Signal(const Eval& e) const override { return e.signal[u1] * e.signal[u2]; }
+  void SignalDerivatives(const Eval& e, double* d1, double* d2) const override {
+    const double a = e.signal[u1], b = e.signal[u2];
+    const double a1 = e.signal_d1[u1], b1 = e.signal_d1[u2], a2 = e.signal_d2[u1], b2 = e.signal_d2[u2];
+    *d1 = a1 * b + a * b1;
+    *d2 = a2 * b + 2 * a1 * b1 + a * b2;
+  }
   int u1 = -1, u2 = -1;
 };
 
 class Feedback : public Product {
  public:
   double Signal(const Eval& e) const override { return e.signal[u1] - e.signal[u2]; }
+  void SignalDerivatives(const Eval& e, double* d1, double* d2) const override {
+    *d1 = e.signal_d1[u1] - e.signal_d1[u2];
+    *d2 = e.signal_d2[u1] - e.signal_d2[u2];
+  }
 };
 
 }  // namespace highlift::sim::detail::msl

@@ -99,6 +99,16 @@ std::vector<double> MemorySink::Series(const std::string& name) const {
   return v;
 }
 
+std::string CheckStructure(const Network& network, double start_time) {
+  try {
+    System system(network);
+    system.InitialState(start_time);
+    return "";
+  } catch (const InputError& e) {
+    return e.what();
+  }
+}
+
 struct Simulator::Impl {
   explicit Impl(const Network& network) : system(network) {}
   System system;
@@ -668,6 +678,11 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
       record_failure_state();
       break;
     }
+    // CVODE locates a root that sits at the restart itself (a normal force rising from exactly
+    // 0 at the start) within its root tolerance, which may put it before the restart time
+    // (t = -1e-35 at a start at 0): such a root is at the restart, and no event may lie before
+    // it (the time events of the sources would otherwise be scheduled in the past).
+    if (flag == CV_ROOT_RETURN && t_ret < t) t_ret = t;
     // The output points the step passed (those at t_ret itself are written below). The root
     // functions are checked there too, as CVODE does at output times in its normal mode: a
     // sign change that a long step hides (a friction element that sticks and breaks away

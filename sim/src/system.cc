@@ -35,13 +35,17 @@ std::string Join(const std::vector<std::string>& v, const std::string& sep = ", 
   return s;
 }
 
-// Minimum-norm solution of E x = d (normal equations with a tiny regularization, sparse).
+// The solution of E x = d nearest to the start values that are guesses: x = guess + D y with
+// D = 1 for the values without a guess (guess 0) and 1e-3 for the guessed ones, y of minimum
+// norm (normal equations with a tiny regularization, sparse). A guessed value therefore moves
+// only where the equations determine it (as a Modelica tool prefers the explicit start values).
 Eigen::VectorXd MinimumNorm(const std::vector<Element::InitialEquation>& rows,
                             const std::vector<int>& unknown, const std::vector<double>& known,
-                            int n_unknown, Eigen::VectorXd& d) {
+                            int n_unknown, const Eigen::VectorXd& guess, const std::vector<char>& guessed,
+                            Eigen::VectorXd& d) {
   const int m = static_cast<int>(rows.size());
   d.resize(m);
-  Eigen::VectorXd x = Eigen::VectorXd::Zero(n_unknown);
+  Eigen::VectorXd x = guess;
   if (m == 0 || n_unknown == 0) {
     for (int i = 0; i < m; ++i) {
       double r = rows[i].value;
@@ -50,6 +54,9 @@ Eigen::VectorXd MinimumNorm(const std::vector<Element::InitialEquation>& rows,
     }
     return x;
   }
+  Eigen::VectorXd D = Eigen::VectorXd::Ones(n_unknown);
+  for (int k = 0; k < n_unknown; ++k)
+    if (guessed[k]) D[k] = 1e-3;
   std::vector<Eigen::Triplet<double>> triplets;
   for (int i = 0; i < m; ++i) {
     double r = rows[i].value;
@@ -61,7 +68,8 @@ Eigen::VectorXd MinimumNorm(const std::vector<Element::InitialEquation>& rows,
   }
   Eigen::SparseMatrix<double> E(m, n_unknown);
   E.setFromTriplets(triplets.begin(), triplets.end());
-  Eigen::SparseMatrix<double> EEt = E * E.transpose();
+  const Eigen::SparseMatrix<double> ED = E * D.asDiagonal();
+  Eigen::SparseMatrix<double> EEt = ED * ED.transpose();
   double scale = 0.0;
   for (int k = 0; k < EEt.outerSize(); ++k)
     for (Eigen::SparseMatrix<double>::InnerIterator it(EEt, k); it; ++it)
@@ -73,13 +81,14 @@ Eigen::VectorXd MinimumNorm(const std::vector<Element::InitialEquation>& rows,
   if (ldlt.info() != Eigen::Success) return x;
   // Iterative refinement removes the bias of the regularization (long chains of relative
   // initial angles make E*E^T ill-conditioned).
-  x.setZero();
-  for (int pass = 0; pass < 5; ++pass) {
-    const Eigen::VectorXd r = d - E * x;
+  const Eigen::VectorXd rhs = d - E * guess;
+  Eigen::VectorXd y = Eigen::VectorXd::Zero(n_unknown);
+  for (int pass = 0; pass < 30; ++pass) {
+    const Eigen::VectorXd r = rhs - ED * y;
     if (r.norm() <= 1e-14 * (1.0 + d.norm())) break;
-    x += E.transpose() * ldlt.solve(r);
+    y += ED.transpose() * ldlt.solve(r);
   }
-  return x;
+  return guess + D.cwiseProduct(y);
 }
 
 }  // namespace
@@ -117,7 +126,7 @@ System::System(const Network& original) {
     for (const auto& f : el->Flanges()) {
       port_index[el->id + "." + f] = static_cast<int>(port_name.size());
       port_name.push_back(el->id + "." + f);
-      port_is_support.push_back(f == "support");
+      port_is_support.push_back(f.rfind("support", 0) == 0);  // support, supportR, supportT
     }
   UnionFind ports(static_cast<int>(port_name.size()));
   std::vector<int> degree(port_name.size(), 0);
@@ -175,7 +184,7 @@ System::System(const Network& original) {
     if (port_is_support[p] && root_size[r] == 1 && degree[p] == 0) nodes_[it->second].ground = true;
   }
   for (const auto& el : elements_)
-    if (el->type == "Fixed") {
+    if (el->type == "Fixed" || el->type == "Translational.Fixed") {
       Node& n = nodes_[port_node[port_index.at(el->id + ".flange")]];
       n.ground = true;
       n.phi0 = FixedAngle(*el);
@@ -215,21 +224,45 @@ System::System(const Network& original) {
     for (std::size_t i = 0; i < elements_.size(); ++i)
       if (elements_[i]->signal_offset >= 0) visit(static_cast<int>(i));
   }
+  // Signals computed from the solve (torque, power and acceleration sensors) and the blocks
+  // they feed are evaluated after the solve; a law acting in the solve must not read them.
+  {
+    std::vector<std::vector<int>> consumers(elements_.size());
+    for (const auto& el : elements_)
+      for (const auto& in : el->SignalInputs()) {
+        auto it = signal_source.find(el->id + "." + in);
+        if (it != signal_source.end()) consumers[slot_owner[it->second]].push_back(el->index);
+      }
+    std::vector<char> after(elements_.size(), 0);
+    std::function<void(int, int)> mark = [&](int i, int origin) {
+      for (int c : consumers[i]) {
+        if (after[c]) continue;
+        const Element& consumer = *elements_[c];
+        if (!consumer.IsSignalBlock() && !consumer.SignalsAfterSolve())
+          throw InputError("element '" + consumer.id + "' (" + consumer.type + ") reads a signal of '" +
+                           elements_[origin]->id + "' (" + elements_[origin]->type +
+                           "), which is computed from the solved torques or accelerations: a law "
+                           "acting in the same solve cannot use it (an algebraic loop); feed it "
+                           "to signal blocks or outputs only, or measure a speed or angle instead");
+        after[c] = 1;
+        mark(c, origin);
+      }
+    };
+    for (const auto& el : elements_)
+      if (el->SignalsAfterSolve()) {
+        after[el->index] = 1;
+        mark(el->index, el->index);
+      }
+    for (int i : signal_order_) (after[i] ? signal_order_after_ : signal_order_before_).push_back(i);
+    for (const auto& el : elements_) needs_signal_derivatives_ = needs_signal_derivatives_ || el->NeedsSignalDerivatives();
+  }
   // Roots.
   for (auto& el : elements_) {
     el->root_offset = n_roots_;
     n_roots_ += el->NumRoots();
   }
+  ClassifyMasslessNodes();
   AssignStates(signal_source, slot_owner);
-  // Nodes whose acceleration nothing determines.
-  std::vector<bool> coupled(nodes_.size(), false);
-  for (const auto& el : elements_)
-    for (int n : el->CoupledNodes()) coupled[n] = true;
-  for (const auto& n : nodes_)
-    if (!n.ground && n.J <= 0 && !coupled[&n - nodes_.data()])
-      throw InputError("flange '" + n.name +
-                       "' has no inertia and no kinematic coupling, so its acceleration is "
-                       "undetermined; connect an Inertia there (a small one suffices) or fix it");
   // Outputs.
   for (const auto& el : elements_) {
     output_offset_.push_back(static_cast<int>(output_names_.size()));
@@ -249,6 +282,8 @@ System::System(const Network& original) {
   eval_.acc.assign(nodes_.size(), 0.0);
   eval_.force.assign(nodes_.size(), 0.0);
   eval_.signal.assign(n_signal_slots_, 0.0);
+  eval_.signal_d1.assign(n_signal_slots_, NAN);
+  eval_.signal_d2.assign(n_signal_slots_, NAN);
   eval_.p.assign(hnodes_.size(), 0.0);
   eval_.q.assign(hnodes_.size(), 0.0);
   eval_.cap.assign(hnodes_.size(), 0.0);
@@ -358,6 +393,24 @@ void System::AssignStates(const std::map<std::string, int>& signal_source, const
         c.push_back(hydraulic_block(h));
       }
     if (block_size[element_block(i)] > 0) cliques.push_back(std::move(element_clique));
+  }
+  // A massless node's speed follows from the balance of every compliant element on it (and on
+  // the massless nodes next to it): their states form one clique.
+  if (!massless_.empty()) {
+    UnionFind chain(n_nodes);
+    for (const auto& el : elements_) {
+      int first = -1;
+      for (int n : el->Nodes())
+        if (nodes_[n].massless) first < 0 ? void(first = n) : chain.Unite(first, n);
+    }
+    std::map<int, std::vector<int>> clique_of_chain;
+    for (int i = 0; i < n_elements; ++i)
+      for (int n : elements_[i]->Nodes())
+        if (nodes_[n].massless) {
+          auto& c = clique_of_chain[chain.Find(n)];
+          c.insert(c.end(), footprint[i].begin(), footprint[i].end());
+        }
+    for (auto& [root, c] : clique_of_chain) cliques.push_back(std::move(c));
   }
   for (auto& c : hydraulic_clique)
     if (!c.empty()) cliques.push_back(std::move(c));
@@ -479,17 +532,151 @@ void System::AssignStates(const std::map<std::string, int>& signal_source, const
   }
 }
 
+void System::ClassifyMasslessNodes() {
+  std::vector<bool> coupled(nodes_.size(), false);
+  for (const auto& el : elements_)
+    for (int n : el->CoupledNodes()) coupled[n] = true;
+  std::vector<std::vector<int>> acting(nodes_.size());
+  for (const auto& el : elements_)
+    for (int n : el->Nodes()) acting[n].push_back(el->index);
+  for (std::size_t n = 0; n < nodes_.size(); ++n) {
+    Node& node = nodes_[n];
+    if (node.ground || node.J > 0 || coupled[n]) continue;
+    // A node without inertia: the static balance of the compliant elements on it.
+    std::vector<int> compliant;
+    for (int i : acting[n]) {
+      const Element& el = *elements_[i];
+      const auto role = el.RoleAt(static_cast<int>(n));
+      if (role == Element::MasslessRole::kCompliant) {
+        compliant.push_back(i);
+      } else if (role == Element::MasslessRole::kOther) {
+        throw InputError("flange '" + node.name + "' has no inertia and no kinematic coupling, and element '" +
+                         el.id + "' (" + el.type +
+                         ") acts on it with a torque that does not depend on the flange's motion, so its "
+                         "acceleration is undetermined; connect an Inertia there or fix it");
+      }
+    }
+    if (compliant.empty())
+      throw InputError("flange '" + node.name +
+                       "' has no inertia, no kinematic coupling and no spring or damper, so its motion is "
+                       "undetermined; connect an Inertia there, a compliant element, or fix it");
+    node.massless = true;
+    massless_.push_back(static_cast<int>(n));
+    massless_elements_.push_back(std::move(compliant));
+  }
+  massless_local_.assign(nodes_.size(), -1);
+  for (std::size_t i = 0; i < massless_.size(); ++i) massless_local_[massless_[i]] = static_cast<int>(i);
+}
+
+// The speeds of the massless nodes: the torque balance sum(T_k) = 0 of the compliant elements
+// on each (T_k = Element::BalanceTorque), solved for the node speeds (Newton, a few iterations
+// for piecewise-linear laws). A node whose elements have no damping is the balance of springs,
+// which holds at all times: its time derivative sum(dT_k/dt) = 0 (Element::BalanceRate) gives
+// the speed (index reduction; the initial twists satisfy the balance, InitialState).
+void System::SolveMasslessSpeeds() {
+  Eval& e = eval_;
+  const int k = static_cast<int>(massless_.size());
+  Eigen::MatrixXd A(k, k);
+  Eigen::VectorXd r(k);
+  for (int iteration = 0; iteration < 8; ++iteration) {
+    A.setZero();
+    r.setZero();
+    for (int i = 0; i < k; ++i) {
+      const int n = massless_[i];
+      const double w = e.w[n], h = 1e-6 * (1.0 + std::abs(w));
+      auto slope = [&](const Element& x, bool rate) {
+        int other = -1;
+        const double up = rate ? x.BalanceRate(e, n, w + h, other) : x.BalanceTorque(e, n, w + h, other);
+        const double down = rate ? x.BalanceRate(e, n, w - h, other) : x.BalanceTorque(e, n, w - h, other);
+        return (up - down) / (2 * h);
+      };
+      bool damped = false;
+      for (int el : massless_elements_[i]) damped = damped || slope(*elements_[el], false) != 0.0;
+      for (int el : massless_elements_[i]) {
+        const Element& x = *elements_[el];
+        int other = -1;
+        r[i] += damped ? x.BalanceTorque(e, n, w, other) : x.BalanceRate(e, n, w, other);
+        const double d = slope(x, !damped);
+        A(i, i) += d;  // the torque depends on w_rel: -d with respect to the other flange
+        if (other >= 0 && nodes_[other].massless) A(i, massless_local_[other]) -= d;
+      }
+    }
+    // A node in the free play of every element (no stiffness, no damping) moves with the mean
+    // of its neighbours.
+    for (int i = 0; i < k; ++i)
+      if (A.row(i).cwiseAbs().maxCoeff() == 0.0) {
+        const int n = massless_[i];
+        double sum = 0.0;
+        int count = 0;
+        for (int el : massless_elements_[i])
+          for (int m : elements_[el]->Nodes())
+            if (m != n && !nodes_[m].massless) sum += e.w[m], ++count;
+        A(i, i) = 1.0;
+        r[i] = e.w[n] - (count > 0 ? sum / count : 0.0);
+      }
+    const Eigen::VectorXd step = A.fullPivLu().solve(-r);
+    double largest = 0.0, scale = 0.0;
+    for (int i = 0; i < k; ++i) {
+      if (!std::isfinite(step[i])) continue;
+      e.w[massless_[i]] += step[i];
+      largest = std::max(largest, std::abs(step[i]));
+      scale = std::max(scale, std::abs(e.w[massless_[i]]));
+    }
+    if (!(largest > 1e-13 * (1.0 + scale))) break;
+  }
+}
+
+// Springs without damping at a massless node must balance from the start: the node angle (and
+// with it the twists of the elements on it whose start value is not given) is moved until the
+// torques balance (Newton on each node in turn, a few sweeps for chains of massless nodes).
+void System::BalanceMasslessTwists(double* y) {
+  Eval& e = eval_;
+  e.y = y;
+  for (int sweep = 0; sweep < 20; ++sweep) {
+    double largest = 0.0;
+    for (std::size_t i = 0; i < massless_.size(); ++i) {
+      const int n = massless_[i];
+      auto balance = [&] {
+        double sum = 0.0;
+        int other = -1;
+        for (int el : massless_elements_[i]) sum += elements_[el]->BalanceTorque(e, n, e.w[n], other);
+        return sum;
+      };
+      auto shift = [&](double delta) {  // the node angle by delta: the twists of free elements
+        e.phi[n] += delta;
+        if (nodes_[n].s_phi >= 0) y[nodes_[n].s_phi] += delta;
+        for (int el : massless_elements_[i]) {
+          const Element& x = *elements_[el];
+          if (x.TwistStates().empty()) continue;
+          const auto nodes = x.Nodes();
+          y[x.state_offset] += nodes.size() > 1 && nodes[1] == n ? delta : -delta;
+        }
+      };
+      const double f = balance();
+      const double h = 1e-7 * (1e-3 + std::abs(e.phi[n]));
+      shift(h);
+      const double slope = (balance() - f) / h;
+      shift(-h);
+      if (!(std::abs(slope) > 0)) continue;
+      const double delta = -f / slope;
+      shift(delta);
+      largest = std::max(largest, std::abs(delta));
+    }
+    if (largest <= 1e-14) break;
+  }
+}
+
 std::vector<double> System::InitialState(double t0) {
   cache_valid_ = false;  // discrete state or start values change
   t_segment_ = t0;
   eval_.t = t0;
   eval_.t_segment = t0;
   eval_.initial = true;
-  EvaluateSignals();
+  EvaluateSignals(signal_order_);
   std::vector<Element::InitialEquation> position, speed, holonomic;
   std::vector<int> position_owner, speed_owner, holonomic_owner;
   for (const auto& el : elements_) {
-    el->InitialEquations(position, speed);
+    el->InitialEquationsAt(eval_, position, speed);
     el->HolonomicRows(holonomic);
     position_owner.resize(position.size(), el->index);
     speed_owner.resize(speed.size(), el->index);
@@ -502,22 +689,49 @@ std::vector<double> System::InitialState(double t0) {
     if (nodes_[n].ground) known_phi[n] = nodes_[n].phi0;
     else unknown[n] = n_unknown++;
   }
+  // Start values that are guesses (MSL fixed = false): the solution nearest to them.
+  std::vector<std::pair<int, double>> position_guess, speed_guess;
+  for (const auto& el : elements_) el->InitialGuesses(position_guess, speed_guess);
   auto solve = [&](std::vector<Element::InitialEquation> rows, std::vector<int> owner,
-                   const std::vector<double>& known, const char* what) {
+                   const std::vector<double>& known, const std::vector<std::pair<int, double>>& guesses,
+                   const char* what) {
+    Eigen::VectorXd guess = Eigen::VectorXd::Zero(n_unknown);
+    std::vector<char> guessed(n_unknown, 0);
+    for (auto [node, value] : guesses)
+      if (unknown[node] >= 0) guess[unknown[node]] = value, guessed[unknown[node]] = 1;
     for (std::size_t k = 0; k < holonomic.size(); ++k) {
       rows.push_back(holonomic[k]);
       owner.push_back(holonomic_owner[k]);
     }
     Eigen::VectorXd d;
-    Eigen::VectorXd x = MinimumNorm(rows, unknown, known, n_unknown, d);
-    for (std::size_t i = 0; i < rows.size(); ++i) {
-      double r = -d[static_cast<int>(i)], scale = std::abs(d[static_cast<int>(i)]);
-      for (auto [node, coef] : rows[i].row)
+    // The residual of row i at x, and whether it is within the tolerance.
+    auto residual = [&](const std::vector<Element::InitialEquation>& r_rows, const Eigen::VectorXd& x, std::size_t i,
+                        double& r) {
+      r = -d[static_cast<int>(i)];
+      double scale = std::abs(d[static_cast<int>(i)]);
+      for (auto [node, coef] : r_rows[i].row)
         if (unknown[node] >= 0) {
           r += coef * x[unknown[node]];
           scale += std::abs(coef * x[unknown[node]]);
         }
-      if (std::abs(r) > 1e-8 * (1.0 + scale)) {
+      return std::abs(r) <= 1e-8 * (1.0 + scale);
+    };
+    // Guesses consistent with the equations are taken as they are (the equations with the
+    // guesses added have a solution); otherwise the solution nearest to them.
+    if (!guesses.empty()) {
+      std::vector<Element::InitialEquation> with = rows;
+      for (auto [node, value] : guesses) with.push_back({{{node, 1.0}}, value});
+      const Eigen::VectorXd none = Eigen::VectorXd::Zero(n_unknown);
+      const Eigen::VectorXd x = MinimumNorm(with, unknown, known, n_unknown, none, std::vector<char>(n_unknown, 0), d);
+      bool consistent = true;
+      double r = 0.0;
+      for (std::size_t i = 0; i < with.size() && consistent; ++i) consistent = residual(with, x, i, r);
+      if (consistent) return x;
+    }
+    Eigen::VectorXd x = MinimumNorm(rows, unknown, known, n_unknown, guess, guessed, d);
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+      double r = 0.0;
+      if (!residual(rows, x, i, r)) {
         const Element& el = *elements_[owner[i]];
         throw InputError("element '" + el.id + "' (" + el.type + "): the initial " + what +
                          " contradict the other initial values or the kinematic constraints "
@@ -527,8 +741,8 @@ std::vector<double> System::InitialState(double t0) {
     }
     return x;
   };
-  Eigen::VectorXd phi = solve(position, position_owner, known_phi, "angles");
-  Eigen::VectorXd w = solve(speed, speed_owner, known_w, "speeds");
+  Eigen::VectorXd phi = solve(position, position_owner, known_phi, position_guess, "angles");
+  Eigen::VectorXd w = solve(speed, speed_owner, known_w, speed_guess, "speeds");
   std::vector<double> y(n_states_, 0.0);
   for (std::size_t n = 0; n < nodes_.size(); ++n) {
     if (nodes_[n].ground) continue;
@@ -545,6 +759,7 @@ std::vector<double> System::InitialState(double t0) {
       eval_.p[&h - hnodes_.data()] = h.p_fixed;
     }
   for (const auto& el : elements_) el->InitStates(eval_, y.data());
+  if (!massless_.empty()) BalanceMasslessTwists(y.data());
   return y;
 }
 
@@ -619,11 +834,20 @@ double System::SolveEquilibrium(double t, double* y, bool& found) {
 
 std::vector<double> System::AbsoluteTolerances(double absolute, double torque_tolerance) const {
   std::vector<double> tolerance(n_states_, absolute);
-  if (!(torque_tolerance > 0)) return tolerance;
-  std::vector<double> stiffness;
+  auto scaled = [&](double nominal) { return std::isnan(nominal) ? absolute : absolute * std::abs(nominal); };
+  for (const Node& node : nodes_) {
+    if (node.ground) continue;
+    tolerance[node.s_phi] = scaled(node.phi_nominal);
+    tolerance[node.s_w] = scaled(node.w_nominal);
+  }
+  std::vector<double> stiffness, nominal;
   for (const auto& el : elements_) {
     const int n = el->NumStates();
     if (n == 0) continue;
+    nominal.assign(n, NAN);
+    el->StateNominals(nominal.data());
+    for (int k = 0; k < n; ++k) tolerance[el->state_offset + k] = scaled(nominal[k]);
+    if (!(torque_tolerance > 0)) continue;
     stiffness.assign(n, 0.0);
     el->StateStiffness(stiffness.data());
     for (int k = 0; k < n; ++k)
@@ -647,8 +871,13 @@ void System::PrunePhases() {
   phases_pruned_ = true;
 }
 
-void System::EvaluateSignals() {
-  for (int i : signal_order_) elements_[i]->Signals(eval_, &eval_.signal[elements_[i]->signal_offset]);
+void System::EvaluateSignals(const std::vector<int>& order) {
+  for (int i : order) {
+    const Element& el = *elements_[i];
+    el.Signals(eval_, &eval_.signal[el.signal_offset]);
+    if (needs_signal_derivatives_)
+      el.SignalDerivatives(eval_, &eval_.signal_d1[el.signal_offset], &eval_.signal_d2[el.signal_offset]);
+  }
 }
 
 bool System::Evaluate(double t, const double* y, double* ydot) {
@@ -677,12 +906,13 @@ bool System::Evaluate(double t, const double* y, double* ydot) {
     e.force[n] = 0.0;
     e.acc[n] = 0.0;
   }
+  if (!massless_.empty()) SolveMasslessSpeeds();
   for (std::size_t n = 0; n < hnodes_.size(); ++n) {
     e.p[n] = hnodes_[n].fixed ? hnodes_[n].p_fixed : y[hnodes_[n].s_p];
     e.q[n] = 0.0;
     e.cap[n] = 0.0;
   }
-  EvaluateSignals();
+  EvaluateSignals(signal_order_before_);
   // Elements with assumed branches (HasAssumptions) may ask for the solve to be redone with
   // the consistent branch; each pass settles at least one of them.
   constexpr int kMaxPasses = 16;
@@ -697,6 +927,7 @@ bool System::Evaluate(double t, const double* y, double* ydot) {
     for (Element* el : constraints_) el->Constraints(e);
     if (!Solve()) return false;
     for (Element* el : after_solve_) el->AfterSolve(e);
+    if (!signal_order_after_.empty()) EvaluateSignals(signal_order_after_);
     if (pass + 1 >= kMaxPasses) break;
     bool again = false;
     for (Element* el : assuming_) again = el->Reassume(e) || again;
@@ -705,8 +936,10 @@ bool System::Evaluate(double t, const double* y, double* ydot) {
   if (ydot != nullptr) {
     for (const Node& node : nodes_) {
       if (node.ground) continue;
-      ydot[node.s_phi] = y[node.s_w];
-      ydot[node.s_w] = e.acc[&node - nodes_.data()];
+      const std::size_t n = &node - nodes_.data();
+      // A massless node's speed is the solved one; its speed state is not used (held).
+      ydot[node.s_phi] = node.massless ? e.w[n] : y[node.s_w];
+      ydot[node.s_w] = node.massless ? 0.0 : e.acc[n];
     }
     for (Element* el : derivatives_) el->Derivatives(e);
     if (!hnodes_.empty() && !HydraulicDerivatives(ydot)) return false;
@@ -906,14 +1139,15 @@ bool System::Solve() {
   const int n_nodes = static_cast<int>(nodes_.size());
   if (e.n_constraints == 0) {
     for (int n = 0; n < n_nodes; ++n)
-      if (!nodes_[n].ground) e.acc[n] = e.force[n] / nodes_[n].J;
+      if (!nodes_[n].ground && !nodes_[n].massless) e.acc[n] = e.force[n] / nodes_[n].J;
     return true;
   }
   if (!SignatureMatches()) {
     ConstraintSignature(signature_);
     BuildGroups();
   }
-  for (int n : unconstrained_) e.acc[n] = e.force[n] / nodes_[n].J;
+  for (int n : unconstrained_)
+    if (!nodes_[n].massless) e.acc[n] = e.force[n] / nodes_[n].J;
   for (int k : grounded_rows_) e.constraints[k].lambda = 0.0;
   for (Group& g : groups_) {
     const int nn = static_cast<int>(g.nodes.size()), m = static_cast<int>(g.rows.size());
@@ -1015,12 +1249,14 @@ bool System::ProjectSpeeds(double* y) {
     K(i, i) = weight;
     b[i] = weight * y[nodes_[node_list[i]].s_w];
   }
-  for (int j = 0; j < m; ++j)
+  for (int j = 0; j < m; ++j) {
+    b[nn + j] = e.constraints[rows[j]].velocity_rhs;
     for (auto [n, coef] : e.constraints[rows[j]].row)
       if (!nodes_[n].ground) {
         K(nn + j, local_[n]) += coef;
         K(local_[n], nn + j) += coef;
       }
+  }
   Eigen::VectorXd x = K.completeOrthogonalDecomposition().solve(b);
   double kinetic_change = 0.0;
   for (int i = 0; i < nn; ++i) {

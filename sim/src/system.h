@@ -21,8 +21,9 @@ class System {
   const std::vector<std::string>& OutputNames() const { return output_names_; }
   const std::vector<std::string>& StateNames() const { return state_names_; }
   const std::vector<std::unique_ptr<Element>>& elements() const { return elements_; }
-  /// Absolute tolerances per state: `absolute` for angles, speeds and other states; for a
-  /// spring twist torque_tolerance / stiffness when torque_tolerance > 0.
+  /// Absolute tolerances per state: `absolute` times the state's nominal value (Node and
+  /// Element::StateNominals; 1 when none is declared); for a spring twist
+  /// torque_tolerance / stiffness when torque_tolerance > 0.
   std::vector<double> AbsoluteTolerances(double absolute, double torque_tolerance) const;
   /// Upper and lower half-bandwidth of the Jacobian (from the element footprints).
   int upper_bandwidth() const { return bandwidth_; }
@@ -93,7 +94,15 @@ class System {
   /// Jacobian that order gives.
   void AssignStates(const std::map<std::string, int>& signal_source, const std::vector<int>& slot_owner);
   bool Solve();
-  void EvaluateSignals();
+  /// Nodes without inertia or coupling: massless (Node::massless) when only compliant elements
+  /// and sensors act on them; throws InputError naming the flange otherwise.
+  void ClassifyMasslessNodes();
+  /// The speeds of the massless nodes from their torque balance (into eval_.w).
+  void SolveMasslessSpeeds();
+  /// The initial twists of springs at massless nodes balanced (the node angle moved).
+  void BalanceMasslessTwists(double* y);
+  /// The signal outputs of the elements in `order` (and their derivatives when needed).
+  void EvaluateSignals(const std::vector<int>& order);
   /// Hydraulic nodes from the hydraulic ports and their connections (see HydraulicNode).
   void BuildHydraulicNodes(const Network& network);
   /// Pressure derivatives of the hydraulic nodes, after the elements' Forces().
@@ -107,9 +116,16 @@ class System {
   bool phases_pruned_ = false;
   void PrunePhases();
   std::vector<Node> nodes_;
+  std::vector<int> massless_;                        ///< massless nodes
+  std::vector<std::vector<int>> massless_elements_;  ///< the compliant elements on each
+  std::vector<int> massless_local_;                  ///< node -> index in massless_ (-1)
   std::vector<HydraulicNode> hnodes_;
   std::vector<std::string> hydraulic_ports_;  ///< "element.port" of every hydraulic port
   std::vector<int> signal_order_;
+  /// signal_order_ split: before the solve, and after it (Element::SignalsAfterSolve and the
+  /// blocks they feed).
+  std::vector<int> signal_order_before_, signal_order_after_;
+  bool needs_signal_derivatives_ = false;
   int n_signal_slots_ = 0;
   int n_states_ = 0;
   int n_roots_ = 0;

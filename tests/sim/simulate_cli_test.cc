@@ -118,3 +118,48 @@ TEST(PeakTransientCli, ElementsWithoutTransientIsAUsageError) {
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("give --transient as well"), std::string::npos) << r.err;
 }
+
+namespace {
+
+// An element network's experiment block sets the run as a Modelica experiment annotation does;
+// --rtol and --atol override the tolerances.
+TEST(SimulateCli, ExperimentBlockAndToleranceOptions) {
+  auto r = highlift::testing::RunCli({"simulate", "tests/sim/msl/SeriesSprings.json", "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["scenario"], "experiment");
+  EXPECT_DOUBLE_EQ(j["stop_time"].get<double>(), 1.0);
+  EXPECT_DOUBLE_EQ(j["relative_tolerance"].get<double>(), 1e-8);
+  EXPECT_GE(j["output"]["rows"].get<long>(), 501);  // 0 .. 1 s every 2 ms
+  EXPECT_LE(j["output"]["rows"].get<long>(), 502);
+  r = highlift::testing::RunCli(
+      {"simulate", "tests/sim/msl/SeriesSprings.json", "--rtol", "1e-5", "--atol", "1e-9", "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  j = nlohmann::json::parse(r.out);
+  EXPECT_DOUBLE_EQ(j["relative_tolerance"].get<double>(), 1e-5);
+  EXPECT_DOUBLE_EQ(j["absolute_tolerance"].get<double>(), 1e-9);
+  r = highlift::testing::RunCli({"simulate", "tests/sim/msl/SeriesSprings.json", "--rtol", "2"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("relative_tolerance"), std::string::npos) << r.err;
+}
+
+// validate and simulate apply one structural check: they accept and reject the same networks
+// (a massless node between springs and an IdealPlanetary with an open ring are valid; a torque
+// on a massless node is not), with the same message.
+TEST(ValidateAndSimulate, AgreeOnEveryStructureExample) {
+  for (const std::string file : {"tests/sim/msl/SeriesSprings.json", "tests/sim/structure/PlanetaryOpenRing.json",
+                                 "tests/sim/structure/MasslessDrivenNode.json"}) {
+    const auto v = highlift::testing::RunCli({"validate", file});
+    const auto s = highlift::testing::RunCli({"simulate", file});
+    EXPECT_EQ(v.exit_code, s.exit_code) << file << "\nvalidate: " << v.err << "\nsimulate: " << s.err;
+    const bool valid = file.find("MasslessDriven") == std::string::npos;
+    EXPECT_EQ(v.exit_code, valid ? 0 : 2) << file << ": " << v.err;
+    if (!valid) {
+      const std::string m = "element 'torque' (ConstantTorque) acts on it";
+      EXPECT_NE(v.err.find(m), std::string::npos) << v.err;
+      EXPECT_NE(s.err.find(m), std::string::npos) << s.err;
+    }
+  }
+}
+
+}  // namespace

@@ -101,10 +101,23 @@ struct Scenario {
   SourceLocation where;
 };
 
+/// The run of an element network, as a Modelica `experiment` annotation (StartTime,
+/// StopTime, Interval, Tolerance); a scenario, when one is chosen, takes precedence.
+struct Experiment {
+  double start_time = 0.0;                ///< s
+  double stop_time = 1.0;                 ///< s
+  std::optional<double> interval;         ///< s, output interval (absent: settings)
+  std::optional<double> tolerance;        ///< relative tolerance (absent: settings)
+  SourceLocation where;
+};
+
 /// Project-wide settings with documented defaults.
 struct Settings {
   int shaft_elements = 4;             ///< sub-elements per shaft segment in full-resolution models
   double relative_tolerance = 1e-6;   ///< simulator
+  /// Simulator absolute tolerance per unit nominal value (a state's absolute tolerance is this
+  /// times its nominal value); absent: the simulator's default (SimulationOptions).
+  std::optional<double> absolute_tolerance;
   double output_interval = 1e-3;      ///< s, simulator output step
   /// s, stiffness-proportional structural damping beta of the elastic elements of a
   /// transmission that give no damping of their own (d = beta*c): the damping ratio of a mode at
@@ -124,6 +137,7 @@ struct Project {
   std::vector<Requirement> requirements;
   std::vector<LoadCase> load_cases;
   std::vector<Scenario> scenarios;
+  std::optional<Experiment> experiment;  ///< element networks: the Modelica experiment
   Settings settings;
   std::string file;                   ///< path it was loaded from, if any
 

@@ -176,6 +176,13 @@ struct SimulationReport {
   std::string FullReport() const;
 };
 
+/// The structural check of an element network: everything the simulator checks when it
+/// assembles the model (ports and signal connections, flanges whose motion nothing determines,
+/// massless nodes, algebraic loops) and the consistency of the initial values at `start_time`.
+/// Returns "" when the network can be simulated, else the message naming the element and the
+/// remedy. `highlift validate` and `highlift simulate` use this one check, so they agree.
+std::string CheckStructure(const Network& network, double start_time = 0.0);
+
 /// Progress callback: fraction of the time span done in [0, 1].
 using ProgressCallback = void (*)(double fraction, void* user);
 
