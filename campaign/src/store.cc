@@ -136,6 +136,15 @@ ResultStore::ResultStore(const std::filesystem::path& file, const Project& proje
   identity_ = detail::ReadIdentity(*connection_);
 }
 
+ResultStore::~ResultStore() {
+  if (!connection_) return;
+  try {
+    connection_->Execute("PRAGMA journal_mode = DELETE");
+  } catch (const std::exception&) {
+    // Another reader holds the file open: it stays in WAL mode, which loses nothing.
+  }
+}
+
 std::set<int> ResultStore::DoneRuns() {
   std::set<int> done;
   sqlite::Statement s(*connection_, "SELECT run FROM runs");

@@ -46,6 +46,11 @@ class ResultStore {
   ResultStore(const std::filesystem::path& file, const Project& project, const Plan& plan, const Shard& shard);
   /// Opens an existing file for reading.
   explicit ResultStore(const std::filesystem::path& file);
+  /// Leaves the file in rollback-journal mode: one self-contained file (no -wal, -shm beside it)
+  /// to copy or merge; the next session switches to WAL again.
+  ~ResultStore();
+  ResultStore(const ResultStore&) = delete;
+  ResultStore& operator=(const ResultStore&) = delete;
 
   const FileIdentity& identity() const { return identity_; }
   std::set<int> DoneRuns();

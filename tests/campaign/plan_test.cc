@@ -35,9 +35,15 @@ TEST(CampaignCases, EveryJamAndRuptureOfTheA380ExampleAndItsOwnScenarios) {
   EXPECT_TRUE(names.count("rupture_wtb"));
   EXPECT_TRUE(names.count("extension"));
   for (const auto& c : cases) {
-    if (c.kind == "jam") EXPECT_EQ(c.scenario.load_case, "extend_opposing") << c.name;
-    if (c.kind == "rupture" && c.name != "rupture_wtb") EXPECT_EQ(c.scenario.load_case, "retract_aiding") << c.name;
-    if (c.kind == "jam" || c.kind == "rupture") EXPECT_FALSE(c.peak_case.empty()) << c.name;
+    if (c.kind == "jam") {
+      EXPECT_EQ(c.scenario.load_case, "extend_opposing") << c.name;
+    }
+    if (c.kind == "rupture" && c.name != "rupture_wtb") {
+      EXPECT_EQ(c.scenario.load_case, "retract_aiding") << c.name;
+    }
+    if (c.kind == "jam" || c.kind == "rupture") {
+      EXPECT_FALSE(c.peak_case.empty()) << c.name;
+    }
   }
 }
 

@@ -20,9 +20,9 @@ for tool in slurmctld slurmd sbatch squeue scontrol munged munge; do
     skip "Slurm is not installed ('$tool' not found): scripts/install-deps.sh installs the Debian packages slurmctld slurmd slurm-client munge"
 done
 
-# Campaign of the test: reduced model, 6 jams x (nominal + 3 Sobol points) = 24 runs.
+# Campaign of the test: reduced model, 3 jams x (nominal + 3 Sobol points) = 12 runs.
 PROJECT=$SOURCE/examples/a380_class_flaps.json
-OPTIONS="--cases jam_l* --samples 3 --seed 11 --model reduced"
+OPTIONS="--cases jam_l1,jam_l2,jam_r3 --samples 3 --seed 11 --model reduced"
 
 rm -rf "$WORK"
 mkdir -p "$WORK"/{etc,state,spool,log,out,local}
@@ -128,7 +128,7 @@ set -e
 [ $local_rc -le 1 ] || fail "the local run exited with $local_rc"
 grep -v '"file":' "$WORK/merged.json" > "$WORK/merged.cmp"
 grep -v '"file":' "$WORK/local.json" > "$WORK/local.cmp"
-grep -q '"runs_done": 24' "$WORK/merged.cmp" || fail "the merged campaign does not hold 24 runs"
+grep -q '"runs_done": 12' "$WORK/merged.cmp" || fail "the merged campaign does not hold 12 runs"
 grep -q '"envelope": \[' "$WORK/merged.cmp" || fail "no envelope in the merged summary"
 diff "$WORK/local.cmp" "$WORK/merged.cmp" || fail "the merged envelope differs from the local run's"
 echo "PASSED: the merged envelope of the 4-task job array equals the local run's"
