@@ -64,12 +64,6 @@ FileIdentity ReadIdentity(sqlite::Connection& connection) {
   return id;
 }
 
-ResultStore::ResultStore(const std::filesystem::path& file) {
-  if (!std::filesystem::is_regular_file(file)) throw InputError("campaign result file '" + file.string() + "' does not exist");
-  connection_ = std::make_unique<sqlite::Connection>(file, sqlite::Connection::Mode::kReadWrite);
-  identity_ = detail::ReadIdentity(*connection_);
-}
-
 ResultStore::ResultStore(const std::filesystem::path& file, const Project& project, const Plan& plan, const Shard& shard) {
   if (std::filesystem::exists(file)) {
     connection_ = std::make_unique<sqlite::Connection>(file, sqlite::Connection::Mode::kReadWrite);

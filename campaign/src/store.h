@@ -44,8 +44,6 @@ class ResultStore {
   /// Opens `file` for the plan's shard, creating it (schema, metadata, cases, parameters,
   /// capacities) when absent. Throws InputError when it holds another campaign or shard.
   ResultStore(const std::filesystem::path& file, const Project& project, const Plan& plan, const Shard& shard);
-  /// Opens an existing file for reading.
-  explicit ResultStore(const std::filesystem::path& file);
   /// Leaves the file in rollback-journal mode: one self-contained file (no -wal, -shm beside it)
   /// to copy or merge; the next session switches to WAL again.
   ~ResultStore();

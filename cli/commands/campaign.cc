@@ -30,7 +30,7 @@ class CampaignCommand : public Command {
   void Setup(CLI::App& app) override {
     app.add_option("project", project_, "JSON project file (drive system)");
     app.add_flag("--json", json_, "Print the summary as one JSON document on stdout");
-    app.add_option("--out", out_, "directory of the result file campaign.sqlite (default: <project name>.campaign)");
+    app.add_option("--out", out_, "directory of the result file campaign.sqlite (default: <project file name>.campaign, e.g. a380_class_flaps.campaign)");
     app.add_option("--cases", options_.case_patterns,
                    "only the cases matching these glob patterns, comma-separated (e.g. 'jam_*,rupture_shaft_l1')")
         ->delimiter(',');
@@ -90,8 +90,7 @@ class CampaignCommand : public Command {
     if (!model_.empty()) options_.model = sim::ParseDriveResolution(model_);
     const Project project = LoadProject(project_);
     const campaign::Plan plan = campaign::MakePlan(project, options_);
-    run.directory = out_.empty() ? std::filesystem::path(project.name.empty() ? "highlift" : project.name).concat(".campaign")
-                                 : std::filesystem::path(out_);
+    run.directory = out_.empty() ? std::filesystem::path(project_).stem().concat(".campaign") : std::filesystem::path(out_);
     run.progress = &std::cerr;
     run.progress_is_terminal = isatty(STDERR_FILENO) != 0;
     std::cerr << "highlift campaign: " << plan.cases.size() << " case(s) x " << plan.samples_per_case << " sample(s) = "

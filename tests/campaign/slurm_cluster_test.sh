@@ -132,3 +132,16 @@ grep -q '"runs_done": 12' "$WORK/merged.cmp" || fail "the merged campaign does n
 grep -q '"envelope": \[' "$WORK/merged.cmp" || fail "no envelope in the merged summary"
 diff "$WORK/local.cmp" "$WORK/merged.cmp" || fail "the merged envelope differs from the local run's"
 echo "PASSED: the merged envelope of the 4-task job array equals the local run's"
+
+# Measurement, not part of the test: HIGHLIFT_SLURM_SCALING="1 2 4" runs a larger campaign
+# (HIGHLIFT_SLURM_SCALING_OPTIONS) as job arrays of that many 1-CPU tasks and prints the times
+# (docs/performance.md).
+for tasks in ${HIGHLIFT_SLURM_SCALING:-}; do
+  scaling_options=${HIGHLIFT_SLURM_SCALING_OPTIONS:-"--cases jam_*,rupture_shaft_l* --samples 3 --model reduced"}
+  start=$(date +%s%N)
+  timeout 3000 sbatch --wait --array=0-$((tasks - 1)) --cpus-per-task=1 --output="$WORK/log/scaling-$tasks-%a.log" \
+    --export=ALL,HIGHLIFT="$HIGHLIFT",PROJECT="$PROJECT",OUT="$WORK/scaling-$tasks",CAMPAIGN_OPTIONS="$scaling_options" \
+    "$SOURCE/scripts/slurm/campaign.sbatch" > /dev/null || fail "the scaling array of $tasks tasks failed"
+  end=$(date +%s%N)
+  echo "scaling: $tasks task(s) x 1 CPU: $(((end - start) / 1000000)) ms for '$scaling_options' (load $(cut -d' ' -f1-3 /proc/loadavg))"
+done
