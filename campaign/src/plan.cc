@@ -77,6 +77,9 @@ void CampaignOptions::Validate() const {
                      " corners per case); sample the others with --samples");
   if (shaft_elements < 0)
     throw InputError("--elements " + std::to_string(shaft_elements) + ": give 1 or more spring-dampers per shaft");
+  if (max_steps_per_output < 1 || max_events < 1)
+    throw InputError("the run limits must be >= 1 (max_steps_per_output " + std::to_string(max_steps_per_output) +
+                     ", max_events " + std::to_string(max_events) + ")");
   for (const auto& p : case_patterns)
     if (p.empty()) throw InputError("--cases holds an empty pattern; give patterns such as 'jam_*,rupture_shaft_l1'");
 }
@@ -350,7 +353,8 @@ Plan MakePlan(const Project& project, const CampaignOptions& options) {
   plan.project_hash = detail::Hex(detail::Hash64(ProjectToJson(project).dump()));
   std::string identity = plan.project_hash + "\nmodel " + sim::ToString(options.model) + "\nelements " +
                          std::to_string(options.shaft_elements) + "\nsamples " + std::to_string(options.samples) +
-                         "\nseed " + std::to_string(options.seed) + "\nsampling " + ToString(options.sampling);
+                         "\nseed " + std::to_string(options.seed) + "\nsampling " + ToString(options.sampling) +
+                         "\nlimits " + std::to_string(options.max_steps_per_output) + " " + std::to_string(options.max_events);
   for (const auto& c : plan.cases) identity += "\ncase " + c.name;
   for (const auto& p : plan.parameters) identity += "\nparameter " + p.Name();
   identity += "\ncorners " + std::to_string(plan.corner_count);

@@ -32,12 +32,17 @@ class NullSink : public sim::OutputSink {
 }  // namespace
 
 CaseSimulation SimulateCase(const Project& project, const Scenario& scenario, const std::vector<std::string>& load_path,
-                            const sim::DriveNetworkOptions& options) {
+                            const sim::DriveNetworkOptions& options, const CampaignOptions* limits) {
   const auto start = std::chrono::steady_clock::now();
   const sim::DriveModel model = sim::BuildDriveNetwork(project, &scenario, options);
   sim::Simulator simulator(model.network);
   sim::SimulationOptions run = model.Options(project);
   run.output_interval = std::min(run.output_interval, kPeakOutputInterval);
+  if (limits) {
+    run.output_interval = (run.stop_time - run.start_time) / CampaignOptions::kRowsPerRun;
+    run.max_steps_per_output = limits->max_steps_per_output;
+    run.max_events = limits->max_events;
+  }
   CaseSimulation out;
   out.build_seconds = Seconds(start);
   NullSink sink;
@@ -110,7 +115,7 @@ RunResult ExecuteRun(const Project& project, const Plan& plan, int run) {
     sim::DriveNetworkOptions network;
     network.resolution = plan.options.model;
     network.shaft_elements = plan.options.shaft_elements;
-    CaseSimulation simulation = SimulateCase(p, c.scenario, c.load_path, network);
+    CaseSimulation simulation = SimulateCase(p, c.scenario, c.load_path, network, &plan.options);
     r.build_seconds = simulation.build_seconds;
     r.simulate_seconds = simulation.report.wall_seconds;
     r.steps = simulation.report.statistics.steps;

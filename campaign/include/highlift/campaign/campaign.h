@@ -77,6 +77,14 @@ struct CampaignOptions {
   sim::DriveResolution model = sim::DriveResolution::kFull;
   /// Spring-dampers per torque shaft in the full model; 0: the project's setting (at least 4).
   int shaft_elements = 0;
+  /// Guards of every run, so that a sample that makes the model chatter or stiff becomes a failed
+  /// run instead of a run that never ends. A sizing case of the A380-class example takes 4000 to
+  /// 6000 steps and a few hundred events in all. The rows of a campaign run are kRowsPerRun
+  /// equidistant points (the peaks follow every step, not the rows), so the step limit is per
+  /// 1/kRowsPerRun of the simulated time.
+  long max_steps_per_output = 10000;  ///< solver steps between two rows
+  int max_events = 20000;             ///< discrete events of one run
+  static constexpr int kRowsPerRun = 20;
 
   static constexpr int kMaxCorners = 12;  ///< 4096 corners per case
 
@@ -173,8 +181,10 @@ struct CaseSimulation {
 /// Builds the drive model of `scenario` (its load case, failure and stop time) and simulates it
 /// with output rows every 1 ms at most (the peaks follow every step). Throws InputError when the
 /// model cannot be built; a failing simulation is reported, not thrown.
+/// `limits` (optional): a campaign run, kRowsPerRun rows and its max_steps_per_output and
+/// max_events; otherwise rows every 1 ms and the simulator's limits.
 CaseSimulation SimulateCase(const Project& project, const Scenario& scenario, const std::vector<std::string>& load_path,
-                            const sim::DriveNetworkOptions& options);
+                            const sim::DriveNetworkOptions& options, const CampaignOptions* limits = nullptr);
 
 /// Runs one simulation of the plan (thread-safe: no shared mutable state). Never throws for a
 /// failing run: the result says what went wrong.
