@@ -3,33 +3,24 @@
 // actuator, wing-tip brake after the rupture of each shaft segment) with tau_max, where it acts,
 // interval enclosures and the parameters ranked by their share of the width; and the worst case
 // per component with its margin. With --transient each case also runs as a full-resolution
-// simulation (sim/include/highlift/sim/drive_network.h) and the transient peak shaft torque on
-// the case's load path is printed beside the single-DOF estimate, with the ratio. Exit 0 when
-// every margin is >= 0 (and every simulation succeeded), 1 otherwise, 2 on invalid input (an
-// unknown --case lists the cases).
+// simulation (campaign::SimulateCase, as every run of `highlift campaign`) and the transient
+// peak shaft torque on the case's load path is printed beside the single-DOF estimate, with the
+// ratio. Exit 0 when every margin is >= 0 (and every simulation succeeded), 1 otherwise, 2 on
+// invalid input (an unknown --case lists the cases).
 #include <algorithm>
 #include <cmath>
 #include <iostream>
 
 #include "command.h"
+#include "highlift/campaign/campaign.h"
 #include "highlift/core/error.h"
 #include "highlift/core/project_io.h"
 #include "highlift/core/text_table.h"
 #include "highlift/reduced_models/analyses.h"
 #include "highlift/sim/drive_network.h"
-#include "highlift/sim/simulator.h"
 
 namespace highlift::cli {
 namespace {
-
-constexpr double kPeakOutputInterval = 1e-3;  // s: output rows (the peaks follow every step)
-
-/// Discards the rows: the peaks are in the report.
-class NullSink : public sim::OutputSink {
- public:
-  void Begin(const std::vector<std::string>&) override {}
-  void Row(double, const std::vector<double>&) override {}
-};
 
 struct TransientPeak {
   std::string name;       ///< the case
@@ -56,28 +47,14 @@ TransientPeak RunCase(const Project& project, const reduced_models::PeakCase& pc
   t.load_case = scenario.load_case;
   sim::DriveNetworkOptions options;
   options.shaft_elements = elements;
-  const sim::DriveModel model = sim::BuildDriveNetwork(project, &scenario, options);
-  sim::Simulator simulator(model.network);
-  sim::SimulationOptions run = model.Options(project);
-  run.output_interval = std::min(run.output_interval, kPeakOutputInterval);
-  NullSink sink;
-  const sim::SimulationReport report = simulator.Run(run, sink);
-  t.ok = report.ok();
-  t.message = report.message;
-  t.wall_seconds = report.wall_seconds;
   // The largest shaft (or brake) torque on the load path, referred to the shaft speed.
-  for (const sim::PeakTorque& p : sim::ComponentPeakTorques(model, project, report)) {
-    const Component* c = project.FindComponent(p.element);
-    if (!c || (c->type != "torque_shaft" && c->type != "wing_tip_brake")) continue;
-    if (std::find(pc.load_path.begin(), pc.load_path.end(), p.element) == pc.load_path.end()) continue;
-    auto k = model.speed_factor.find(p.element);
-    const double at_shaft_speed = std::abs(p.tau) * (k == model.speed_factor.end() ? 1.0 : k->second);
-    if (at_shaft_speed > t.transient) {
-      t.transient = at_shaft_speed;
-      t.at = p.element;
-      t.time = p.time;
-    }
-  }
+  const campaign::CaseSimulation simulation = campaign::SimulateCase(project, scenario, pc.load_path, options);
+  t.ok = simulation.report.ok();
+  t.message = simulation.report.message;
+  t.wall_seconds = simulation.report.wall_seconds;
+  t.transient = simulation.load_path_peak.tau;
+  t.at = simulation.load_path_peak.element;
+  t.time = simulation.load_path_peak.time;
   return t;
 }
 

@@ -11,7 +11,7 @@
 #include "highlift/core/error.h"
 #include "highlift/core/units.h"
 #include "schema.h"
-#include "sqlite.h"
+#include "highlift/componentdb/sqlite.h"
 
 namespace highlift::componentdb {
 

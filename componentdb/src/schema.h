@@ -1,7 +1,7 @@
 // Schema migrations of the component database.
 #pragma once
 
-#include "sqlite.h"
+#include "highlift/componentdb/sqlite.h"
 
 namespace highlift::componentdb {
 

@@ -1,4 +1,4 @@
-#include "sqlite.h"
+#include "highlift/componentdb/sqlite.h"
 
 #include <limits>
 

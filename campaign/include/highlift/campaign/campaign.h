@@ -1,0 +1,291 @@
+// Design-load campaigns: every failure case of a drive-system project (a jam at each actuator, a
+// rupture of each shaft segment and disconnector, the project's own scenarios) simulated over
+// samples of the parameter domains (the nominal point, corners of chosen parameters, quasi-random
+// points), with the single-DOF estimate beside each run. The result is the design-load envelope:
+// per component the largest |torque| any run put into it, the case, sample and time, against its
+// capacity.
+//
+//   const Project project = LoadProject("examples/a380_class_flaps.json");
+//   campaign::CampaignOptions options;
+//   options.case_patterns = {"jam_*"};
+//   options.samples = 16;
+//   const campaign::Plan plan = campaign::MakePlan(project, options);    // throws InputError
+//   campaign::ExecutionOptions run;
+//   run.directory = "out";                                               // out/campaign.sqlite
+//   const campaign::CampaignReport report = campaign::RunCampaign(project, plan, run);
+//   std::cout << campaign::LoadSummary("out").FullReport();
+//
+// Storage: one SQLite file per campaign (or per shard), every finished run committed in its own
+// transaction (WAL), so a killed campaign loses nothing and the same command resumes it. Runs are
+// deterministic functions of (case, sample): the envelope is the same whatever the number of
+// threads, shards or interruptions. Schema and file names: docs/campaign.md.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <iosfwd>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "highlift/core/project.h"
+#include "highlift/sim/drive_network.h"
+
+namespace highlift::campaign {
+
+/// How the quasi-random points of `--samples` are drawn.
+enum class SamplingMethod {
+  kSobol,           ///< Sobol sequence (Joe-Kuo directions), digitally shifted per case
+  kLatinHypercube,  ///< one point per stratum of every parameter, strata permuted per case
+};
+std::string ToString(SamplingMethod method);
+/// "sobol" or "lhs"; throws InputError naming the value and the choices otherwise.
+SamplingMethod ParseSamplingMethod(const std::string& text);
+
+/// A deterministic part of a campaign: run r belongs to shard r mod count.
+struct Shard {
+  int index = 0;  ///< 0 .. count-1
+  int count = 1;  ///< 1: the whole campaign
+  bool whole() const { return count == 1; }
+  std::string ToString() const;  ///< "I/N"
+  /// "I/N" with 0 <= I < N; throws InputError naming the text and the form otherwise.
+  static Shard Parse(const std::string& text);
+  /// From SLURM_ARRAY_TASK_ID (minus SLURM_ARRAY_TASK_MIN) and SLURM_ARRAY_TASK_COUNT when set;
+  /// nullopt when not inside a Slurm job array. Throws InputError for inconsistent values.
+  static std::optional<Shard> FromSlurmEnvironment();
+};
+
+struct CampaignOptions {
+  /// Glob patterns (`*`, `?`) over the case names; empty: every case. A pattern that matches no
+  /// case is an InputError listing the cases.
+  std::vector<std::string> case_patterns;
+  /// "component.parameter": every combination of the lower and upper bound of these parameters
+  /// (2^k samples per case, the others at their nominal values). At most kMaxCorners.
+  std::vector<std::string> corners;
+  /// Quasi-random points per case over the domains of `vary`.
+  int samples = 0;
+  /// Seed of the quasi-random points (with the case name: each run's point depends only on the
+  /// case, the sample index and this seed).
+  std::uint64_t seed = 1;
+  SamplingMethod sampling = SamplingMethod::kSobol;
+  /// "component.parameter" sampled by `samples`; empty: every parameter the project gives (not a
+  /// catalogue default) with a bounded domain of non-zero width (booleans excepted).
+  std::vector<std::string> vary;
+  /// Model of every run: full (split shafts) or reduced (lumped chains).
+  sim::DriveResolution model = sim::DriveResolution::kFull;
+  /// Spring-dampers per torque shaft in the full model; 0: the project's setting (at least 4).
+  int shaft_elements = 0;
+  /// Guards of every run, so that a sample that makes the model chatter or stiff becomes a failed
+  /// run instead of a run that never ends. A sizing case of the A380-class example takes 4000 to
+  /// 6000 steps and a few hundred events in all. The rows of a campaign run are kRowsPerRun
+  /// equidistant points (the peaks follow every step, not the rows), so the step limit is per
+  /// 1/kRowsPerRun of the simulated time.
+  long max_steps_per_output = 10000;  ///< solver steps between two rows
+  int max_events = 20000;             ///< discrete events of one run
+  static constexpr int kRowsPerRun = 20;
+
+  static constexpr int kMaxCorners = 12;  ///< 4096 corners per case
+
+  /// Throws InputError naming the option when a value is invalid.
+  void Validate() const;
+};
+
+/// One failure case of the campaign.
+struct CampaignCase {
+  std::string name;        ///< scenario name, e.g. "jam_l3", "rupture_shaft_l2a", "extension"
+  std::string kind;        ///< "jam", "rupture" or the scenario's kind
+  std::string component;   ///< jammed actuator or ruptured shaft/disconnector ("" for others)
+  Scenario scenario;       ///< what is simulated (load case, failure, stop time)
+  std::string peak_case;   ///< the single-DOF case of the same failure ("" none)
+  std::vector<std::string> load_path;  ///< components carrying the case's peak (shaft speed)
+};
+
+/// A parameter the campaign sets (corners or samples), with its domain in SI.
+struct SampledParameter {
+  std::string component;
+  std::string parameter;
+  double nominal = 0.0;
+  Domain domain;
+  bool integer = false;  ///< rounded to whole numbers
+  std::string Name() const { return component + "." + parameter; }
+};
+
+/// One point: the value of every plan parameter.
+struct Sample {
+  int index = 0;
+  std::string label;           ///< "nominal", "corner 3 (min,max)", "sobol 5", "lhs 5"
+  std::vector<double> values;  ///< per Plan::parameters, SI
+};
+
+/// The cases times the samples of a campaign, fixed before anything runs.
+struct Plan {
+  CampaignOptions options;
+  std::vector<CampaignCase> cases;
+  std::vector<SampledParameter> parameters;  ///< corner parameters first, then the sampled ones
+  int corner_count = 0;                      ///< of the first corner_count parameters' corners
+  int samples_per_case = 1;                  ///< 1 (nominal) + 2^corners + samples
+  std::string project_name;
+  std::string project_hash;                  ///< 16 hex digits of the project's JSON text
+  std::string campaign_id;                   ///< 16 hex digits of project hash, cases, samples, model
+
+  int runs() const { return static_cast<int>(cases.size()) * samples_per_case; }
+  int CaseOf(int run) const { return run / samples_per_case; }
+  int SampleIndexOf(int run) const { return run % samples_per_case; }
+  /// The point of a run: a pure function of the case, the sample index and the seed.
+  Sample SampleOf(int run) const;
+  /// The project with the run's parameter values as nominal values.
+  Project Apply(const Project& project, const Sample& sample) const;
+};
+
+/// The cases of a project before filtering (for listing), in campaign order: the jams, the
+/// ruptures, then the project's scenarios not among them.
+std::vector<CampaignCase> AllCases(const Project& project);
+
+/// Checks the options against the project and fixes the plan. Throws InputError (unknown case
+/// filter, unknown parameter, a parameter with no domain to sample, a project without drive
+/// system) before anything is written.
+Plan MakePlan(const Project& project, const CampaignOptions& options);
+
+/// What one run produced.
+struct RunResult {
+  int run = 0;
+  int case_index = 0;
+  int sample = 0;
+  std::string sample_label;
+  std::vector<double> values;       ///< per Plan::parameters
+  bool ok = true;
+  std::string message;              ///< the failure (solver or model) when !ok
+  double peak = 0.0;                ///< N*m at the shaft speed, largest on the case's load path
+  std::string peak_component;
+  double peak_time = 0.0;           ///< s
+  std::optional<double> single_dof; ///< N*m, the single-DOF estimate of the case at this sample
+  std::vector<sim::PeakTorque> components;  ///< per component, its own torque (element = id)
+  long steps = 0;
+  double build_seconds = 0.0;       ///< model building
+  double simulate_seconds = 0.0;    ///< the simulator's run
+  double single_dof_seconds = 0.0;  ///< the single-DOF estimate
+};
+
+/// One transient simulation of a failure case, as `peak --transient` and every campaign run make it.
+struct CaseSimulation {
+  sim::SimulationReport report;               ///< status, message, solver statistics, wall time
+  /// The largest shaft or wing-tip brake torque on the load path (every shaft and brake when the
+  /// path is empty), N*m referred to the shaft (PDU output) speed; element "" when none.
+  sim::PeakTorque load_path_peak;
+  std::vector<sim::PeakTorque> components;    ///< per component, its own torque (element = id)
+  double build_seconds = 0.0;                 ///< model building and assembly
+};
+
+/// Builds the drive model of `scenario` (its load case, failure and stop time) and simulates it
+/// with output rows every 1 ms at most (the peaks follow every step). Throws InputError when the
+/// model cannot be built; a failing simulation is reported, not thrown.
+/// `limits` (optional): a campaign run, kRowsPerRun rows and its max_steps_per_output and
+/// max_events; otherwise rows every 1 ms and the simulator's limits.
+CaseSimulation SimulateCase(const Project& project, const Scenario& scenario, const std::vector<std::string>& load_path,
+                            const sim::DriveNetworkOptions& options, const CampaignOptions* limits = nullptr);
+
+/// Runs one simulation of the plan (thread-safe: no shared mutable state). Never throws for a
+/// failing run: the result says what went wrong.
+RunResult ExecuteRun(const Project& project, const Plan& plan, int run);
+
+struct ExecutionOptions {
+  std::filesystem::path directory = "campaign";  ///< where the result file goes
+  int jobs = 0;          ///< threads; 0: every core this process may use
+  Shard shard;           ///< the part of the campaign to run
+  /// Progress to this stream (nullptr: none): a bar on a terminal, one line per run otherwise.
+  std::ostream* progress = nullptr;
+  bool progress_is_terminal = false;
+};
+
+struct CampaignReport {
+  std::filesystem::path file;  ///< the result file
+  int runs_in_shard = 0;
+  int runs_done_before = 0;    ///< resumed: already in the file
+  int runs_done_now = 0;
+  int failures = 0;            ///< of all runs in the file
+  double wall_seconds = 0.0;
+  double run_seconds = 0.0;    ///< sum over this session's runs of build + single-DOF + simulate
+  double simulate_seconds = 0.0;
+  std::string BriefReport() const;
+};
+
+/// The result file of a shard in `directory`: campaign.sqlite for the whole campaign,
+/// campaign-shard-I-of-N.sqlite otherwise.
+std::filesystem::path ResultFile(const std::filesystem::path& directory, const Shard& shard);
+
+/// Runs (or resumes) the shard of the plan. Throws InputError when the result file holds another
+/// campaign (nothing is written then).
+CampaignReport RunCampaign(const Project& project, const Plan& plan, const ExecutionOptions& options);
+
+/// Merges complete shard files (given as files or directories holding them) into
+/// `out`/campaign.sqlite. Throws InputError, writing nothing, for shards of different campaigns,
+/// a shard given twice, missing or incomplete shards, or an existing output file.
+std::filesystem::path MergeShards(const std::vector<std::filesystem::path>& inputs, const std::filesystem::path& out);
+
+/// Per component: the largest |torque| of the campaign.
+struct EnvelopeRow {
+  std::string component;
+  double torque = 0.0;          ///< N*m, signed, at the component's own speed
+  std::string case_name;
+  int sample = 0;
+  std::string sample_label;
+  double time = 0.0;            ///< s
+  std::string capacity_name;    ///< e.g. "torque capacity" ("" none)
+  double capacity = 0.0;        ///< N*m, nominal design (0: none)
+  std::optional<double> margin; ///< capacity / |torque| - 1
+};
+
+/// Per case: its runs.
+struct CasePeakRow {
+  std::string case_name;
+  std::string kind;
+  std::string load_case;
+  int runs = 0;
+  int failures = 0;
+  double peak = 0.0;            ///< N*m at the shaft speed, largest over the samples
+  std::string peak_component;
+  int peak_sample = 0;
+  double peak_time = 0.0;
+  std::optional<double> single_dof;      ///< at the nominal sample
+  std::optional<double> single_dof_max;  ///< largest over the samples
+};
+
+struct FailureRow {
+  int run = 0;
+  std::string case_name;
+  int sample = 0;
+  std::string message;
+};
+
+struct CampaignSummary {
+  std::filesystem::path file;
+  std::string campaign_id;
+  std::string project_name;
+  std::string project_hash;
+  std::string model;
+  std::string shard;           ///< "0/1" for a whole or merged campaign
+  int runs_total = 0;          ///< in this file's shard
+  int runs_done = 0;
+  int failures = 0;
+  int cases = 0;
+  int samples_per_case = 0;
+  std::vector<std::string> parameters;
+  std::vector<EnvelopeRow> envelope;
+  std::vector<CasePeakRow> case_peaks;
+  std::vector<FailureRow> failed;
+
+  bool complete() const { return runs_done == runs_total; }
+  /// Every margin >= 0 and no failure.
+  bool ok() const;
+  std::string BriefReport() const;
+  std::string FullReport() const;
+  nlohmann::json ToJson() const;
+};
+
+/// Reads a result file, or the campaign.sqlite of a directory. Throws InputError naming the
+/// file when there is none (a directory with only shard files: merge them first).
+CampaignSummary LoadSummary(const std::filesystem::path& file_or_directory);
+
+}  // namespace highlift::campaign

@@ -1,0 +1,186 @@
+// The campaign result file (schema in store.h).
+#include "store.h"
+
+#include "highlift/core/error.h"
+#include "highlift/reduced_models/analyses.h"
+
+namespace highlift::campaign::detail {
+namespace {
+
+constexpr int kFormat = 1;
+
+std::string Get(sqlite::Connection& connection, const std::string& key) {
+  sqlite::Statement s(connection, "SELECT value FROM campaign WHERE key = ?");
+  s.Bind(1, key);
+  if (!s.Step()) throw InputError("'" + connection.file() + "' is not a complete campaign result file: no '" + key + "'");
+  return s.Text(0);
+}
+
+void Put(sqlite::Statement& s, const std::string& key, const std::string& value) {
+  s.Reset();
+  s.Bind(1, key).Bind(2, value).Run();
+}
+
+}  // namespace
+
+int RunsInShard(int runs_total, const Shard& shard) {
+  return runs_total <= shard.index ? 0 : (runs_total - shard.index + shard.count - 1) / shard.count;
+}
+
+void CreateSchema(sqlite::Connection& connection) {
+  connection.Execute(R"sql(
+    CREATE TABLE campaign(key TEXT PRIMARY KEY, value TEXT NOT NULL);
+    CREATE TABLE cases(case_index INTEGER PRIMARY KEY, name TEXT NOT NULL, kind TEXT NOT NULL,
+                       component TEXT NOT NULL, load_case TEXT NOT NULL);
+    CREATE TABLE parameters(parameter_index INTEGER PRIMARY KEY, name TEXT NOT NULL, nominal REAL NOT NULL,
+                            lo REAL NOT NULL, hi REAL NOT NULL);
+    CREATE TABLE capacities(component TEXT PRIMARY KEY, name TEXT NOT NULL, capacity REAL NOT NULL);
+    CREATE TABLE runs(run INTEGER PRIMARY KEY, case_index INTEGER NOT NULL, sample INTEGER NOT NULL,
+                      sample_label TEXT NOT NULL, status TEXT NOT NULL, message TEXT NOT NULL,
+                      peak REAL, peak_component TEXT, peak_time REAL, single_dof REAL,
+                      steps INTEGER NOT NULL, simulate_seconds REAL NOT NULL);
+    CREATE TABLE run_values(run INTEGER NOT NULL, parameter_index INTEGER NOT NULL, value REAL NOT NULL,
+                            PRIMARY KEY(run, parameter_index)) WITHOUT ROWID;
+    CREATE TABLE component_peaks(run INTEGER NOT NULL, position INTEGER NOT NULL, component TEXT NOT NULL,
+                                 torque REAL NOT NULL, time REAL NOT NULL, PRIMARY KEY(run, position)) WITHOUT ROWID;
+  )sql");
+}
+
+FileIdentity ReadIdentity(sqlite::Connection& connection) {
+  if (connection.QueryInteger("SELECT count(*) FROM sqlite_master WHERE type = 'table' AND name = 'campaign'") == 0)
+    throw InputError("'" + connection.file() + "' is not a campaign result file (no table 'campaign')");
+  FileIdentity id;
+  id.campaign_id = Get(connection, "campaign_id");
+  id.project_name = Get(connection, "project_name");
+  id.project_hash = Get(connection, "project_hash");
+  id.model = Get(connection, "model");
+  id.shard = {std::stoi(Get(connection, "shard_index")), std::stoi(Get(connection, "shard_count"))};
+  id.runs_total = std::stoi(Get(connection, "runs_total"));
+  id.samples_per_case = std::stoi(Get(connection, "samples_per_case"));
+  const int format = std::stoi(Get(connection, "format"));
+  if (format != kFormat)
+    throw InputError("'" + connection.file() + "' has result format " + std::to_string(format) + "; this highlift reads format " +
+                     std::to_string(kFormat));
+  return id;
+}
+
+ResultStore::ResultStore(const std::filesystem::path& file, const Project& project, const Plan& plan, const Shard& shard) {
+  if (std::filesystem::exists(file)) {
+    connection_ = std::make_unique<sqlite::Connection>(file, sqlite::Connection::Mode::kReadWrite);
+    identity_ = detail::ReadIdentity(*connection_);
+    if (identity_.campaign_id != plan.campaign_id)
+      throw InputError("'" + file.string() + "' holds campaign " + identity_.campaign_id + " (project '" +
+                       identity_.project_name + "', hash " + identity_.project_hash + "), not this campaign " +
+                       plan.campaign_id + " (project hash " + plan.project_hash +
+                       "): the project or the options differ; give another --out or remove the file");
+    if (identity_.shard.index != shard.index || identity_.shard.count != shard.count)
+      throw InputError("'" + file.string() + "' holds shard " + identity_.shard.ToString() + ", not " + shard.ToString());
+    connection_->Execute("PRAGMA journal_mode = WAL; PRAGMA synchronous = NORMAL");
+    return;
+  }
+  // Everything the summary needs besides the runs, in one transaction: a file either has all of
+  // it or does not exist in a usable form (a crash here leaves a file without 'campaign' rows,
+  // which the next start rejects by name; creating into a temporary name avoids even that).
+  const std::filesystem::path partial = file.string() + ".creating";
+  std::filesystem::remove(partial);
+  {
+    sqlite::Connection c(partial, sqlite::Connection::Mode::kReadWriteCreate);
+    sqlite::Transaction t(c);
+    CreateSchema(c);
+    sqlite::Statement put(c, "INSERT INTO campaign(key, value) VALUES(?, ?)");
+    Put(put, "format", std::to_string(kFormat));
+    Put(put, "campaign_id", plan.campaign_id);
+    Put(put, "project_name", plan.project_name);
+    Put(put, "project_hash", plan.project_hash);
+    Put(put, "model", sim::ToString(plan.options.model));
+    Put(put, "shard_index", std::to_string(shard.index));
+    Put(put, "shard_count", std::to_string(shard.count));
+    Put(put, "runs_total", std::to_string(plan.runs()));
+    Put(put, "samples_per_case", std::to_string(plan.samples_per_case));
+    Put(put, "seed", std::to_string(plan.options.seed));
+    Put(put, "sampling", ToString(plan.options.sampling));
+    sqlite::Statement add_case(c, "INSERT INTO cases VALUES(?, ?, ?, ?, ?)");
+    for (std::size_t i = 0; i < plan.cases.size(); ++i) {
+      const CampaignCase& k = plan.cases[i];
+      add_case.Reset();
+      add_case.Bind(1, static_cast<std::int64_t>(i)).Bind(2, k.name).Bind(3, k.kind).Bind(4, k.component)
+          .Bind(5, k.scenario.load_case).Run();
+    }
+    sqlite::Statement add_parameter(c, "INSERT INTO parameters VALUES(?, ?, ?, ?, ?)");
+    for (std::size_t i = 0; i < plan.parameters.size(); ++i) {
+      const SampledParameter& p = plan.parameters[i];
+      add_parameter.Reset();
+      add_parameter.Bind(1, static_cast<std::int64_t>(i)).Bind(2, p.Name()).Bind(3, p.nominal).Bind(4, p.domain.lo)
+          .Bind(5, p.domain.hi).Run();
+    }
+    reduced_models::PeakOptions nominal;
+    nominal.intervals = false;
+    nominal.rank = false;
+    sqlite::Statement add_capacity(c, "INSERT INTO capacities VALUES(?, ?, ?)");
+    for (const auto& w : reduced_models::AnalysePeaks(project, nominal).worst) {
+      if (w.allowable <= 0) continue;
+      add_capacity.Reset();
+      add_capacity.Bind(1, w.component).Bind(2, w.allowable_name).Bind(3, w.allowable).Run();
+    }
+    t.Commit();
+  }
+  std::filesystem::rename(partial, file);
+  connection_ = std::make_unique<sqlite::Connection>(file, sqlite::Connection::Mode::kReadWrite);
+  connection_->Execute("PRAGMA journal_mode = WAL; PRAGMA synchronous = NORMAL");
+  identity_ = detail::ReadIdentity(*connection_);
+}
+
+ResultStore::~ResultStore() {
+  if (!connection_) return;
+  try {
+    connection_->Execute("PRAGMA journal_mode = DELETE");
+  } catch (const std::exception&) {
+    // Another reader holds the file open: it stays in WAL mode, which loses nothing.
+  }
+}
+
+std::set<int> ResultStore::DoneRuns() {
+  std::set<int> done;
+  sqlite::Statement s(*connection_, "SELECT run FROM runs");
+  while (s.Step()) done.insert(static_cast<int>(s.Integer(0)));
+  return done;
+}
+
+int ResultStore::Failures() {
+  return static_cast<int>(connection_->QueryInteger("SELECT count(*) FROM runs WHERE status != 'ok'"));
+}
+
+void ResultStore::Write(const RunResult& r) {
+  sqlite::Transaction t(*connection_);
+  {
+    sqlite::Statement s(*connection_, "INSERT INTO runs VALUES(?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
+    s.Bind(1, static_cast<std::int64_t>(r.run)).Bind(2, static_cast<std::int64_t>(r.case_index))
+        .Bind(3, static_cast<std::int64_t>(r.sample)).Bind(4, r.sample_label).Bind(5, r.ok ? "ok" : "failed")
+        .Bind(6, r.message);
+    if (r.ok) {
+      s.Bind(7, r.peak).Bind(8, r.peak_component).Bind(9, r.peak_time);
+    } else {
+      s.BindNull(7).BindNull(8).BindNull(9);
+    }
+    s.Bind(10, r.single_dof).Bind(11, static_cast<std::int64_t>(r.steps)).Bind(12, r.simulate_seconds).Run();
+  }
+  {
+    sqlite::Statement s(*connection_, "INSERT INTO run_values VALUES(?, ?, ?)");
+    for (std::size_t i = 0; i < r.values.size(); ++i) {
+      s.Reset();
+      s.Bind(1, static_cast<std::int64_t>(r.run)).Bind(2, static_cast<std::int64_t>(i)).Bind(3, r.values[i]).Run();
+    }
+  }
+  {
+    sqlite::Statement s(*connection_, "INSERT INTO component_peaks VALUES(?, ?, ?, ?, ?)");
+    for (std::size_t i = 0; i < r.components.size(); ++i) {
+      const sim::PeakTorque& p = r.components[i];
+      s.Reset();
+      s.Bind(1, static_cast<std::int64_t>(r.run)).Bind(2, static_cast<std::int64_t>(i)).Bind(3, p.element)
+          .Bind(4, p.tau).Bind(5, p.time).Run();
+    }
+  }
+  t.Commit();
+}
+
+}  // namespace highlift::campaign::detail

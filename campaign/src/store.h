@@ -1,0 +1,70 @@
+// The result file of a campaign (or of one shard): SQLite in WAL mode, one transaction per run.
+//
+//   campaign(key, value)       campaign_id, project_name, project_hash, model, shard_index,
+//                              shard_count, runs_total, samples_per_case, format
+//   cases(case_index, name, kind, component, load_case)
+//   parameters(parameter_index, name, nominal, lo, hi)
+//   capacities(component, name, capacity)            nominal design, from reduced_models
+//   runs(run, case_index, sample, sample_label, status, message, peak, peak_component,
+//        peak_time, single_dof, steps, simulate_seconds)
+//   run_values(run, parameter_index, value)          the sampled values of each run
+//   component_peaks(run, position, component, torque, time)   per run and component (project
+//                              order), its largest |torque|
+#pragma once
+
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <set>
+#include <string>
+
+#include "highlift/campaign/campaign.h"
+#include "highlift/componentdb/sqlite.h"
+
+namespace highlift::campaign::detail {
+
+namespace sqlite = componentdb::sqlite;
+
+/// The metadata of a result file.
+struct FileIdentity {
+  std::string campaign_id;
+  std::string project_name;
+  std::string project_hash;
+  std::string model;
+  Shard shard;
+  int runs_total = 0;  ///< of the whole campaign
+  int samples_per_case = 0;
+};
+
+/// Runs of the whole campaign that fall into `shard`.
+int RunsInShard(int runs_total, const Shard& shard);
+
+class ResultStore {
+ public:
+  /// Opens `file` for the plan's shard, creating it (schema, metadata, cases, parameters,
+  /// capacities) when absent. Throws InputError when it holds another campaign or shard.
+  ResultStore(const std::filesystem::path& file, const Project& project, const Plan& plan, const Shard& shard);
+  /// Leaves the file in rollback-journal mode: one self-contained file (no -wal, -shm beside it)
+  /// to copy or merge; the next session switches to WAL again.
+  ~ResultStore();
+  ResultStore(const ResultStore&) = delete;
+  ResultStore& operator=(const ResultStore&) = delete;
+
+  const FileIdentity& identity() const { return identity_; }
+  std::set<int> DoneRuns();
+  int Failures();
+  /// Commits one finished run.
+  void Write(const RunResult& result);
+  sqlite::Connection& connection() { return *connection_; }
+
+ private:
+  std::unique_ptr<sqlite::Connection> connection_;
+  FileIdentity identity_;
+};
+
+/// Creates the tables of a result file (empty).
+void CreateSchema(sqlite::Connection& connection);
+/// Reads the identity of a result file; throws InputError when it is no campaign result file.
+FileIdentity ReadIdentity(sqlite::Connection& connection);
+
+}  // namespace highlift::campaign::detail

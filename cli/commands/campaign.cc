@@ -1,0 +1,128 @@
+// `highlift campaign PROJECT [--out DIR] [--cases PATTERNS] [--corners PARAMS] [--samples N
+// [--seed S] [--sampling sobol|lhs] [--vary PARAMS]] [--model full|reduced] [--jobs N]
+// [--shard I/N] [--json]`: the design-load campaign (every jam, rupture and scenario of the
+// project over samples of the parameter domains), results in DIR/campaign.sqlite, committed run
+// by run (the same command resumes a killed campaign).
+// `highlift campaign summary DIR [--json]`: the envelope of a result file.
+// `highlift campaign merge DIR... [--out DIR]`: merges the shard files of a Slurm job array.
+// Exit 0 when the campaign is complete with every margin >= 0 and no failed run, 1 otherwise,
+// 2 on invalid input (nothing is written then). docs/campaign.md.
+#include <unistd.h>
+
+#include <iostream>
+
+#include "command.h"
+#include "highlift/campaign/campaign.h"
+#include "highlift/core/error.h"
+#include "highlift/core/project_io.h"
+
+namespace highlift::cli {
+namespace {
+
+int PrintSummary(const campaign::CampaignSummary& summary, bool json) {
+  if (json) std::cout << summary.ToJson().dump(2) << "\n";
+  else std::cout << summary.FullReport() << "\n";
+  return summary.complete() && summary.ok() ? kSuccess : kViolated;
+}
+
+class CampaignCommand : public Command {
+ public:
+  void Setup(CLI::App& app) override {
+    app.add_option("project", project_, "JSON project file (drive system)");
+    app.add_flag("--json", json_, "Print the summary as one JSON document on stdout");
+    app.add_option("--out", out_, "directory of the result file campaign.sqlite (default: <project file name>.campaign, e.g. a380_class_flaps.campaign)");
+    app.add_option("--cases", options_.case_patterns,
+                   "only the cases matching these glob patterns, comma-separated (e.g. 'jam_*,rupture_shaft_l1')")
+        ->delimiter(',');
+    app.add_option("--corners", options_.corners,
+                   "every combination of the min and max of these parameters, comma-separated "
+                   "(e.g. pdu.motor_inertia,wtb_left.engagement_latency)")
+        ->delimiter(',');
+    app.add_option("--samples", options_.samples, "quasi-random points per case over the parameter domains (default 0)");
+    app.add_option("--seed", options_.seed, "seed of the quasi-random points (default 1)");
+    app.add_option("--sampling", sampling_, "sobol (default) or lhs (Latin hypercube)");
+    app.add_option("--vary", options_.vary,
+                   "the parameters --samples varies, comma-separated (default: every parameter with a min and max)")
+        ->delimiter(',');
+    app.add_option("--model", model_, "full (default: split shafts) or reduced (lumped chains)");
+    app.add_option("--elements", options_.shaft_elements,
+                   "spring-dampers per torque shaft in the full model (default: the project's, at least 4)");
+    app.add_option("--jobs", jobs_, "threads (default: every core)");
+    app.add_option("--shard", shard_,
+                   "run part I of N (0 <= I < N) into DIR/campaign-shard-I-of-N.sqlite (default inside a Slurm job "
+                   "array: SLURM_ARRAY_TASK_ID of SLURM_ARRAY_TASK_COUNT)");
+
+    summary_ = app.add_subcommand("summary", "print the envelope of a campaign result (DIR or file)");
+    summary_->add_option("directory", summary_path_, "the --out directory of the campaign, or a result file")->required();
+    summary_->add_flag("--json", summary_json_, "Print one JSON document on stdout");
+
+    merge_ = app.add_subcommand("merge", "merge the shard files of a campaign into campaign.sqlite");
+    merge_->add_option("inputs", merge_inputs_, "directories (or files) holding the shard files")->required();
+    merge_->add_option("--out", merge_out_, "directory of the merged campaign.sqlite (default: the first input directory)");
+    merge_->add_flag("--json", summary_json_, "Print the merged summary as one JSON document on stdout");
+    app.require_subcommand(0, 1);
+  }
+
+  int Run() override {
+    if (summary_->parsed()) return PrintSummary(campaign::LoadSummary(summary_path_), summary_json_);
+    if (merge_->parsed()) {
+      std::filesystem::path out = merge_out_;
+      if (out.empty()) {
+        const std::filesystem::path& first = merge_inputs_.front();
+        out = std::filesystem::is_directory(first) ? first : first.parent_path();
+        if (out.empty()) out = ".";
+      }
+      const std::filesystem::path merged = campaign::MergeShards(merge_inputs_, out);
+      std::cerr << "highlift campaign merge: " << merge_inputs_.size() << " input(s) merged into " << merged.string() << "\n";
+      return PrintSummary(campaign::LoadSummary(merged), summary_json_);
+    }
+    if (project_.empty())
+      throw InputError("give the project file: highlift campaign PROJECT [--out DIR] (or `campaign summary DIR`, "
+                       "`campaign merge DIR...`)");
+
+    // Everything is checked before anything is written.
+    campaign::ExecutionOptions run;
+    if (!shard_.empty()) run.shard = campaign::Shard::Parse(shard_);
+    else if (auto slurm = campaign::Shard::FromSlurmEnvironment()) run.shard = *slurm;
+    if (jobs_ < 0) throw InputError("--jobs " + std::to_string(jobs_) + ": give 1 or more threads (0: every core)");
+    run.jobs = jobs_;
+    if (!sampling_.empty()) options_.sampling = campaign::ParseSamplingMethod(sampling_);
+    if (!model_.empty()) options_.model = sim::ParseDriveResolution(model_);
+    const Project project = LoadProject(project_);
+    const campaign::Plan plan = campaign::MakePlan(project, options_);
+    run.directory = out_.empty() ? std::filesystem::path(project_).stem().concat(".campaign") : std::filesystem::path(out_);
+    run.progress = &std::cerr;
+    run.progress_is_terminal = isatty(STDERR_FILENO) != 0;
+    std::cerr << "highlift campaign: " << plan.cases.size() << " case(s) x " << plan.samples_per_case << " sample(s) = "
+              << plan.runs() << " runs (" << sim::ToString(options_.model) << " model, campaign " << plan.campaign_id
+              << ")" << (run.shard.whole() ? "" : ", shard " + run.shard.ToString()) << " -> "
+              << campaign::ResultFile(run.directory, run.shard).string() << "\n";
+    const campaign::CampaignReport report = campaign::RunCampaign(project, plan, run);
+    std::cerr << report.BriefReport() << "\n";
+    return PrintSummary(campaign::LoadSummary(report.file), json_);
+  }
+
+ private:
+  std::string project_;
+  bool json_ = false;
+  std::string out_;
+  campaign::CampaignOptions options_;
+  std::string sampling_;
+  std::string model_;
+  int jobs_ = 0;
+  std::string shard_;
+  CLI::App* summary_ = nullptr;
+  std::string summary_path_;
+  bool summary_json_ = false;
+  CLI::App* merge_ = nullptr;
+  std::vector<std::filesystem::path> merge_inputs_;
+  std::string merge_out_;
+};
+
+}  // namespace
+
+HIGHLIFT_REGISTER_COMMAND(CampaignCommand, "campaign",
+                          "design-load campaign: every failure case over samples of the parameter domains, on all "
+                          "cores or as Slurm shards (summary, merge)")
+
+}  // namespace highlift::cli

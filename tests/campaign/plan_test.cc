@@ -1,0 +1,198 @@
+// The plan of a campaign: its cases, its samples, its id, and the bad input it refuses.
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include "highlift/campaign/campaign.h"
+#include "highlift/core/error.h"
+#include "highlift/core/project_io.h"
+#include "test_util.h"
+
+namespace highlift::campaign {
+namespace {
+
+using testing::A380;
+using testing::MessageOf;
+
+TEST(CampaignOptions, DefaultsAreValid) { EXPECT_NO_THROW(CampaignOptions().Validate()); }
+
+TEST(CampaignCases, EveryJamAndRuptureOfTheA380ExampleAndItsOwnScenarios) {
+  const std::vector<CampaignCase> cases = AllCases(A380());
+  std::set<std::string> names;
+  int jams = 0, ruptures = 0;
+  for (const auto& c : cases) {
+    EXPECT_TRUE(names.insert(c.name).second) << "duplicate " << c.name;
+    jams += c.kind == "jam";
+    ruptures += c.kind == "rupture";
+  }
+  // 12 jams (one per actuator, while extending: one load case of that direction), 24 shaft
+  // ruptures (while retracting), and the project's extension and rupture_wtb (extending).
+  EXPECT_EQ(jams, 12);
+  EXPECT_EQ(ruptures, 25);
+  EXPECT_EQ(cases.size(), 38u);
+  EXPECT_TRUE(names.count("jam_l3"));
+  EXPECT_TRUE(names.count("rupture_shaft_l1"));
+  EXPECT_TRUE(names.count("rupture_wtb"));
+  EXPECT_TRUE(names.count("extension"));
+  for (const auto& c : cases) {
+    if (c.kind == "jam") {
+      EXPECT_EQ(c.scenario.load_case, "extend_opposing") << c.name;
+    }
+    if (c.kind == "rupture" && c.name != "rupture_wtb") {
+      EXPECT_EQ(c.scenario.load_case, "retract_aiding") << c.name;
+    }
+    if (c.kind == "jam" || c.kind == "rupture") {
+      EXPECT_FALSE(c.peak_case.empty()) << c.name;
+    }
+  }
+}
+
+TEST(CampaignCases, AFailureRunsUnderEveryLoadCaseOfItsDirection) {
+  Project p = A380();
+  LoadCase second = *p.FindLoadCase("extend_opposing");
+  second.name = "extend_gust";
+  p.load_cases.push_back(second);
+  int jams = 0;
+  bool found = false;
+  for (const auto& c : AllCases(p)) {
+    jams += c.kind == "jam";
+    if (c.name == "jam_l3@extend_gust") {
+      found = true;
+      EXPECT_EQ(c.scenario.load_case, "extend_gust");
+      EXPECT_EQ(c.scenario.jam_component.value_or(""), "gra_l3");
+    }
+  }
+  EXPECT_TRUE(found);
+  EXPECT_EQ(jams, 24);
+}
+
+TEST(CampaignPlan, FiltersCasesByGlobPatterns) {
+  CampaignOptions o;
+  o.case_patterns = {"jam_l*", "rupture_shaft_l1"};
+  const Plan plan = MakePlan(A380(), o);
+  ASSERT_EQ(plan.cases.size(), 7u);
+  EXPECT_EQ(plan.cases.front().name, "jam_l1");
+  EXPECT_EQ(plan.cases.back().name, "rupture_shaft_l1");
+  EXPECT_EQ(plan.samples_per_case, 1);
+  EXPECT_EQ(plan.runs(), 7);
+}
+
+TEST(CampaignPlan, UnknownCaseFilterListsTheCases) {
+  CampaignOptions o;
+  o.case_patterns = {"jam_x*"};
+  const std::string m = MessageOf([&] { MakePlan(A380(), o); });
+  EXPECT_NE(m.find("--cases 'jam_x*' matches no case; the cases are: jam_l1, jam_l2"), std::string::npos) << m;
+}
+
+TEST(CampaignPlan, ACornerParameterWithoutDomainIsRefused) {
+  CampaignOptions o;
+  o.corners = {"pdu.ratio"};
+  std::string m = MessageOf([&] { MakePlan(A380(), o); });
+  EXPECT_NE(m.find("--corners 'pdu.ratio': the parameter has no domain to sample (its domain is the point 20)"),
+            std::string::npos)
+      << m;
+  EXPECT_NE(m.find("give it \"min\" and \"max\""), std::string::npos) << m;
+  o.corners = {"pdu.no_such"};
+  m = MessageOf([&] { MakePlan(A380(), o); });
+  EXPECT_NE(m.find("component 'pdu' (pdu) has no parameter 'no_such'"), std::string::npos) << m;
+  o.corners = {"nothing.ratio"};
+  m = MessageOf([&] { MakePlan(A380(), o); });
+  EXPECT_NE(m.find("the project has no component 'nothing'; the components are: pdu,"), std::string::npos) << m;
+}
+
+TEST(CampaignPlan, CornersAreEveryCombinationOfMinAndMax) {
+  CampaignOptions o;
+  o.case_patterns = {"jam_l3"};
+  o.corners = {"pdu.motor_inertia", "pdu.efficiency"};
+  const Plan plan = MakePlan(A380(), o);
+  ASSERT_EQ(plan.samples_per_case, 5);
+  EXPECT_EQ(plan.SampleOf(0).label, "nominal");
+  EXPECT_DOUBLE_EQ(plan.SampleOf(0).values[0], 3e-4);
+  std::set<std::pair<double, double>> corners;
+  for (int s = 1; s < 5; ++s) {
+    const Sample x = plan.SampleOf(s);
+    corners.insert({x.values[0], x.values[1]});
+  }
+  EXPECT_EQ(corners, (std::set<std::pair<double, double>>{{2e-4, 0.85}, {2e-4, 0.95}, {4e-4, 0.85}, {4e-4, 0.95}}));
+  EXPECT_EQ(plan.SampleOf(4).label, "corner 3 (max,max)");
+}
+
+TEST(CampaignPlan, SobolPointsAreInTheDomainsAndDependOnCaseSampleAndSeedOnly) {
+  CampaignOptions o;
+  o.case_patterns = {"jam_l3", "jam_l4"};
+  o.samples = 8;
+  const Plan plan = MakePlan(A380(), o);
+  ASSERT_GT(plan.parameters.size(), 100u);  // every parameter with a min and max
+  EXPECT_EQ(plan.samples_per_case, 9);
+  for (int run = 0; run < plan.runs(); ++run) {
+    const Sample s = plan.SampleOf(run);
+    for (std::size_t k = 0; k < s.values.size(); ++k)
+      EXPECT_TRUE(plan.parameters[k].domain.contains(s.values[k])) << plan.parameters[k].Name();
+  }
+  // Same point when asked twice (no state), another point in another case, another seed.
+  EXPECT_EQ(plan.SampleOf(3).values, plan.SampleOf(3).values);
+  EXPECT_NE(plan.SampleOf(3).values, plan.SampleOf(9 + 3).values);
+  CampaignOptions other = o;
+  other.seed = 2;
+  const Plan reseeded = MakePlan(A380(), other);
+  EXPECT_NE(plan.SampleOf(3).values, reseeded.SampleOf(3).values);
+  EXPECT_NE(plan.campaign_id, reseeded.campaign_id);
+  EXPECT_EQ(plan.campaign_id, MakePlan(A380(), o).campaign_id);
+  EXPECT_EQ(plan.project_hash, reseeded.project_hash);
+}
+
+TEST(CampaignPlan, LatinHypercubePutsOnePointInEveryStratumOfEveryParameter) {
+  CampaignOptions o;
+  o.case_patterns = {"jam_l3"};
+  o.samples = 10;
+  o.sampling = SamplingMethod::kLatinHypercube;
+  o.vary = {"pdu.motor_inertia", "pdu.speed_ramp_time", "pdu.efficiency"};
+  const Plan plan = MakePlan(A380(), o);
+  ASSERT_EQ(plan.parameters.size(), 3u);
+  for (std::size_t k = 0; k < 3; ++k) {
+    std::set<int> strata;
+    for (int s = 1; s <= 10; ++s) {
+      const Domain& d = plan.parameters[k].domain;
+      const double u = (plan.SampleOf(s).values[k] - d.lo) / d.width();
+      strata.insert(std::min(9, static_cast<int>(u * 10)));
+    }
+    EXPECT_EQ(strata.size(), 10u) << plan.parameters[k].Name();
+  }
+}
+
+TEST(CampaignPlan, AppliesTheSampleAsNominalValues) {
+  CampaignOptions o;
+  o.case_patterns = {"jam_l3"};
+  o.corners = {"pdu.motor_inertia"};
+  const Plan plan = MakePlan(A380(), o);
+  const Project p = plan.Apply(A380(), plan.SampleOf(2));
+  EXPECT_DOUBLE_EQ(*p.FindComponent("pdu")->parameters.at("motor_inertia").nominal, 4e-4);
+  EXPECT_DOUBLE_EQ(*A380().FindComponent("pdu")->parameters.at("motor_inertia").nominal, 3e-4);
+}
+
+TEST(Shard, ParsesIOfNAndRefusesEverythingElse) {
+  EXPECT_EQ(Shard::Parse("2/4").index, 2);
+  EXPECT_EQ(Shard::Parse("2/4").count, 4);
+  for (const std::string bad : {"4/4", "1", "a/b", "-1/3", "1/0", "/3", "1/", "1/2/3"}) {
+    const std::string m = MessageOf([&] { Shard::Parse(bad); });
+    EXPECT_NE(m.find("--shard '" + bad + "' is invalid: give I/N with 0 <= I < N"), std::string::npos) << m;
+  }
+}
+
+TEST(Shard, ReadsTheSlurmArrayEnvironment) {
+  ::setenv("SLURM_ARRAY_TASK_ID", "5", 1);
+  ::setenv("SLURM_ARRAY_TASK_MIN", "4", 1);
+  ::setenv("SLURM_ARRAY_TASK_COUNT", "3", 1);
+  const std::optional<Shard> s = Shard::FromSlurmEnvironment();
+  ASSERT_TRUE(s);
+  EXPECT_EQ(s->ToString(), "1/3");
+  ::setenv("SLURM_ARRAY_TASK_ID", "9", 1);
+  EXPECT_NE(MessageOf([] { Shard::FromSlurmEnvironment(); }).find("submit the array as --array=0-2"), std::string::npos);
+  ::unsetenv("SLURM_ARRAY_TASK_ID");
+  ::unsetenv("SLURM_ARRAY_TASK_MIN");
+  ::unsetenv("SLURM_ARRAY_TASK_COUNT");
+  EXPECT_FALSE(Shard::FromSlurmEnvironment());
+}
+
+}  // namespace
+}  // namespace highlift::campaign
