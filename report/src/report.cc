@@ -349,7 +349,6 @@ DesignReport BuildDesignReport(const Project& project, const Project& estimated,
   // Peaks, single-DOF
   t = Clock::now();
   const reduced_models::PeakReport peaks = reduced_models::AnalysePeaks(project, {});
-  data["peaks"] = peaks.ToJson();
   out.timings.peaks = Since(t);
 
   // Simulations: every sizing case (transient peaks) and every project scenario (time
@@ -392,6 +391,10 @@ DesignReport BuildDesignReport(const Project& project, const Project& estimated,
                         {"single_dof", {{"nominal", Number(pc.tau_total.nominal)},
                                         {"min", Number(pc.tau_total.bounds.lo)},
                                         {"max", Number(pc.tau_total.bounds.hi)}}}};
+    nlohmann::json ranking = nlohmann::json::array();  // the parameters that widen the enclosure most
+    for (std::size_t k = 0; k < pc.ranking.size() && k < 3; ++k)
+      ranking.push_back({{"parameter", pc.ranking[k].parameter}, {"share", Round(pc.ranking[k].share)}});
+    c["ranking"] = ranking;
     const Capacity capacity = CaseCapacity(project, pc, peaks);
     if (!capacity.component.empty())
       c["capacity"] = {{"value", Number(capacity.value)}, {"component", capacity.component}, {"name", capacity.name}};

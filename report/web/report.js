@@ -337,16 +337,17 @@
              { label: "N*m", size: 70 }],
     });
     document.getElementById("peaks-table").append(table(
-      ["case", "kind", "acts at", "single-DOF [N*m]", "enclosure", "transient [N*m]", "at", "t [s]", "transient / single-DOF", "capacity [N*m]", "weakest", "status"],
+      ["case", "kind", "acts at", "single-DOF [N*m]", "enclosure", "widened most by", "transient [N*m]", "at", "t [s]", "transient / single-DOF", "capacity [N*m]", "weakest", "status"],
       cases.map((c) => {
         const t = c.transient;
         const ratio = t && t.ok && c.single_dof.nominal ? t.value / c.single_dof.nominal : null;
         const over = c.capacity && t && t.value > c.capacity.value;
-        return [c.name, c.kind, componentLink(c.acts_at), fmt(c.single_dof.nominal), "[" + fmt(c.single_dof.min) + ", " + fmt(c.single_dof.max) + "]",
+        const widest = (c.ranking || []).map((r) => r.parameter + " " + Math.round(r.share * 100) + " %").join(", ");
+        return [c.name, c.kind, componentLink(c.acts_at), fmt(c.single_dof.nominal), "[" + fmt(c.single_dof.min) + ", " + fmt(c.single_dof.max) + "]", widest,
           t ? el("span", { class: over ? "bad" : "", text: fmt(t.value) }) : "not simulated", t ? componentLink(t.at) : "\u2013", t ? fmt(t.time) : "\u2013",
           fmt(ratio, 3), c.capacity ? fmt(c.capacity.value) : "\u2013", c.capacity ? componentLink(c.capacity.component) : "\u2013",
           t ? (t.ok ? "ok" : el("span", { class: "bad", text: "failed: " + t.message })) : "\u2013"];
-      }), [3, 5, 7, 8, 9]));
+      }), [3, 6, 8, 9, 10]));
   }
 
   // ---------------------------------------------------------------------------------------- scenarios
