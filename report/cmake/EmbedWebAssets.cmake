@@ -3,6 +3,7 @@
 # (report/web/node_modules/uplot, installed by scripts/install-deps.sh with npm ci).
 #   cmake -DWEB_DIR=report/web -DOUTPUT=... -P EmbedWebAssets.cmake
 # The report inlines them, so they must not close the <script>/<style> element they go into.
+include(${CMAKE_CURRENT_LIST_DIR}/../../cmake/RawStringLiteral.cmake)
 set(uplot ${WEB_DIR}/node_modules/uplot)
 if(NOT EXISTS ${uplot}/dist/uPlot.iife.min.js)
   message(FATAL_ERROR
@@ -25,23 +26,13 @@ foreach(asset IN LISTS assets)
   file(READ ${file} content)
   # uPlot's banner names its home page; the report holds no address outside itself.
   string(REPLACE "/*! https://github.com/leeoniya/uPlot" "/*! uPlot, MIT licence, github.com/leeoniya/uPlot" content "${content}")
-  foreach(forbidden ")hlrp\"" "</script" "</style" "-->")
+  foreach(forbidden "</script" "</style" "-->")
     string(FIND "${content}" "${forbidden}" found)
     if(NOT found EQUAL -1 AND NOT name STREQUAL "page_html")
       message(FATAL_ERROR "${file} contains '${forbidden}', which would end the element it is inlined into")
     endif()
   endforeach()
-  string(LENGTH "${content}" length)
-  set(pieces "")
-  set(offset 0)
-  while(offset LESS length)
-    string(SUBSTRING "${content}" ${offset} 8000 piece)
-    string(APPEND pieces "R\"hlrp(${piece})hlrp\"\n")
-    math(EXPR offset "${offset} + 8000")
-  endwhile()
-  if(pieces STREQUAL "")
-    set(pieces "\"\"")
-  endif()
+  highlift_raw_string_literal("${content}" hlrp pieces ${file})
   string(APPEND body "  if (name == \"${name}\") {\n    static const char text[] =\n${pieces};\n    return {text, sizeof(text) - 1};\n  }\n")
 endforeach()
 file(WRITE ${OUTPUT}.tmp
