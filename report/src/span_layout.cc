@@ -96,8 +96,9 @@ std::optional<double> SpanLayout::NodePosition(const Project& project, const std
   }
   if (const std::size_t hash = node.find('#'); hash != std::string::npos) {
     const Component* c = at(node.substr(0, hash));
-    if (!c || elements <= 0) return std::nullopt;
-    return end(c, std::stod(node.substr(hash + 1)) / elements);
+    const std::string k = node.substr(hash + 1);
+    if (!c || elements <= 0 || k.empty() || k.find_first_not_of("0123456789") != std::string::npos) return std::nullopt;
+    return end(c, std::stod(k) / elements);
   }
   if (const std::size_t slash = node.find('/'); slash != std::string::npos) {
     const Component* c = at(node.substr(0, slash));

@@ -113,12 +113,25 @@
     const explanation = check.explanation || (check.nominal_design && check.nominal_design.explanation) || "";
     document.getElementById("explanation").textContent = explanation;
     if (!explanation) document.getElementById("explanation-box").hidden = true;
-    const worst = data.margins.slice(0, 10);
+    // The ten smallest, components with the same margin of the same kind in one row.
+    const groups = [];
+    for (const m of data.margins) {
+      const kind = m.what.split(",")[0];
+      const key = [fmt(m.margin, 3), fmt(m.load), fmt(m.allowable), m.allowable_name, kind].join("|");
+      const g = groups.find((x) => x.key === key);
+      if (g) { g.members.push(m); continue; }
+      if (groups.length === 10) break;
+      groups.push({ key: key, members: [m] });
+    }
     document.getElementById("worst-margins").append(table(
       ["margin", "component", "load [N*m]", "allowable [N*m]", "allowable", "from"],
-      worst.map((m) => {
+      groups.map((g) => {
+        const m = g.members[0];
         const cell = el("span", { class: m.margin != null && m.margin < 0 ? "bad" : "", text: percent(m.margin) });
-        return [cell, componentLink(m.component), fmt(m.load), fmt(m.allowable), m.allowable_name, m.what];
+        const who = el("span");
+        g.members.forEach((x, i) => { if (i) who.append(", "); who.append(componentLink(x.component)); });
+        const cases = g.members.length > 1 ? m.what.split(",")[0] + " (" + g.members.map((x) => x.what.split(", ")[1] || "").filter(Boolean).join(", ") + ")" : m.what;
+        return [cell, who, fmt(m.load), fmt(m.allowable), m.allowable_name, cases];
       }), [0, 2, 3]));
   }
 

@@ -106,6 +106,7 @@ TEST(SpanLayout, TakesTheSpanPositionsOfTheProject) {
   EXPECT_NEAR(*layout.NodePosition(p, "shaft_l1#1", 4), -4.75, 1e-9);
   EXPECT_FALSE(layout.NodePosition(p, "gra_l1", 4));  // off the drive line
   EXPECT_FALSE(layout.NodePosition(p, "no_such_node", 4));
+  EXPECT_FALSE(layout.NodePosition(p, "shaft_l1#x", 4));
 }
 
 TEST(SpanLayout, ComputesPositionsFromShaftLengthsWhereNoneAreGiven) {
@@ -193,6 +194,27 @@ TEST(DesignReport, TimeHistoriesKeepThePeaksOfTheThinnedRows) {
   EXPECT_GT(command, 0.5);
   // Time ascending (an event gives two rows at one time: before and after).
   for (std::size_t i = 1; i < s["time"].size(); ++i) EXPECT_LE(s["time"][i - 1].get<double>(), s["time"][i].get<double>());
+}
+
+TEST(DesignReport, SimulationsSideBySideGiveTheSameHistoriesAsOneAfterAnother) {
+  Project p = LoadProject(kExample);
+  std::erase_if(p.scenarios, [](const Scenario& s) { return s.name != "rupture_wtb" && s.name != "jam_l6"; });
+  p.requirements.clear();
+  ReportOptions o;
+  o.transient = false;
+  o.max_points = 200;
+  o.threads = 1;
+  const DesignReport one = BuildDesignReport(p, p, "", o);
+  o.threads = 2;
+  const DesignReport two = BuildDesignReport(p, p, "", o);
+  ASSERT_EQ(one.data["scenarios"].size(), 2u);
+  EXPECT_EQ(two.timings.simulation_count, 2);
+  for (std::size_t k = 0; k < 2; ++k) {
+    nlohmann::json a = one.data["scenarios"][k], b = two.data["scenarios"][k];
+    a.erase("wall_seconds");
+    b.erase("wall_seconds");
+    EXPECT_EQ(a, b) << k;
+  }
 }
 
 TEST(RenderHtml, IsSelfContainedAndEscapesTheData) {
