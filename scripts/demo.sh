@@ -2,7 +2,8 @@
 # Installs what is missing, builds highlift and runs the main job on the bundled A380-class
 # flap transmission (both wings; the embedded component database is the default):
 #   validate -> info -> estimate -> check -> size -> modes -> peak (single-DOF and transient)
-#   -> simulate (the rupture with wing-tip brakes, full resolution) -> export (Modelica).
+#   -> simulate (the rupture with wing-tip brakes, full resolution) -> export (Modelica)
+#   -> report (all of it in one HTML file: build/demo-report.html).
 # Exit code 1 of an analysis means it found violated requirements or negative margins: the demo
 # reports it and goes on. Anything else (invalid input, a crash) stops the demo with that code.
 # Usage: scripts/demo.sh [PROJECT.json]      (from anywhere; default the A380-class example)
@@ -44,6 +45,7 @@ if grep -q '"rupture_wtb"' "$example"; then
     --signals pdu.w,appu_left.w,appu_right.w,wtb_left.tau,shaft_l7.tau,stl_left.tau,monitor.wtb
 fi
 run export "$example" --modelica build/demo-modelica --model reduced --scenario rupture_wtb
+run report "$example" --out build/demo-report.html
 
 echo
 echo "== main job done on $example"

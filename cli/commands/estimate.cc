@@ -37,7 +37,8 @@ class EstimateCommand : public Command {
       if (!write_.empty()) j["written"] = write_;
       std::cout << j.dump(2) << "\n";
     } else {
-      std::cout << "project " << common_.project << ", database "
+      std::cout << report.BriefReport() << "\n"
+                << "project " << common_.project << ", database "
                 << (database ? database->file().string() : std::string("(none)")) << "\n\n"
                 << report.FullReport(all_);
       if (!write_.empty()) std::cout << "wrote " << write_ << "\n";

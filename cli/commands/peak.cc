@@ -115,7 +115,19 @@ class PeakCommand : public Command {
       }
       std::cout << j.dump(2) << "\n";
     } else {
-      std::cout << report.FullReport() << "\n";
+      // Headline first: the worst case, the negative margins, and how the simulations went.
+      std::cout << report.BriefReport();
+      if (transient_) {
+        int failed = 0;
+        const TransientPeak* worst = nullptr;
+        for (const auto& t : transient) {
+          failed += !t.ok;
+          if (t.ok && (!worst || t.transient > worst->transient)) worst = &t;
+        }
+        if (worst) std::cout << "; transient worst " << worst->name << ": " << FormatNumber(worst->transient, 4) << " N*m at " << worst->at;
+        if (failed) std::cout << "; " << failed << " simulation(s) failed";
+      }
+      std::cout << "\n\n" << report.FullReport() << "\n";
       if (transient_) {
         std::cout << "Transient peaks (full-resolution simulation) beside the single-DOF estimate, N*m at the "
                      "shaft speed\n(jams while extending, ruptures while retracting with the airload aiding the motion,\nfailure at "
@@ -127,9 +139,8 @@ class PeakCommand : public Command {
                         FormatNumber(t.single_dof, 4), FormatNumber(t.transient, 4),
                         std::isfinite(t.Ratio()) ? FormatNumber(t.Ratio(), 3) : "-", t.at.empty() ? "-" : t.at,
                         FormatNumber(t.time, 4), t.ok ? "ok" : "failed: " + t.message});
-        std::cout << table.ToString() << "\n";
+        std::cout << table.ToString();
       }
-      std::cout << report.BriefReport() << "\n";
     }
     return report.ok() && all_ok ? kSuccess : kViolated;
   }

@@ -30,7 +30,7 @@ class SizeCommand : public Command {
     if (options_.json)
       std::cout << report.ToJson().dump(2) << "\n";
     else
-      std::cout << report.FullReport() << "\n" << report.BriefReport() << "\n";
+      std::cout << report.BriefReport() << "\n\n" << report.FullReport() << "\n";
     return report.ok() ? kSuccess : kViolated;
   }
 

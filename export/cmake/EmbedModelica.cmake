@@ -1,27 +1,12 @@
 # Writes OUTPUT, a C++ source that defines highlift::modelica_detail::EmbeddedLibrary(): every
 # file of FILES (absolute paths under ROOT) as {relative path, content}, in sorted order.
 # Contents become raw string literals; a file that contains the delimiter is an error.
-set(delimiter "hlmo(")
+include(${CMAKE_CURRENT_LIST_DIR}/../../cmake/RawStringLiteral.cmake)
 set(body "")
 foreach(file IN LISTS FILES)
   file(RELATIVE_PATH rel ${ROOT} ${file})
   file(READ ${file} content)
-  string(FIND "${content}" ")hlmo\"" found)
-  if(NOT found EQUAL -1)
-    message(FATAL_ERROR "${file} contains the raw-string delimiter )hlmo\"")
-  endif()
-  # Long literals are split into pieces below the compilers' per-literal limits.
-  string(LENGTH "${content}" length)
-  set(pieces "")
-  set(offset 0)
-  while(offset LESS length)
-    string(SUBSTRING "${content}" ${offset} 8000 piece)
-    string(APPEND pieces "R\"${delimiter}${piece})hlmo\"\n")
-    math(EXPR offset "${offset} + 8000")
-  endwhile()
-  if(pieces STREQUAL "")
-    set(pieces "\"\"")
-  endif()
+  highlift_raw_string_literal("${content}" hlmo pieces ${file})
   string(APPEND body "    {\"${rel}\",\n${pieces}    },\n")
 endforeach()
 file(WRITE ${OUTPUT}.tmp

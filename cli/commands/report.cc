@@ -1,0 +1,85 @@
+// `highlift report PROJECT.json [--out report.html] [--no-transient] [--no-scenarios]
+// [--elements N] [--threads N] [--json]`: the design report, one self-contained HTML file
+// (report/include/highlift/report/report.h, docs/report.md): the verdict of the interval check
+// first, the architecture along the span, the torque flow, the modes, the peak loads (single-DOF
+// beside transient beside capacity) and the time histories of the scenarios. Prints one headline
+// line (with --json a JSON document: file, size, verdict, timings). Exit 0 when the report was
+// written and the domains can meet the requirements, 1 when the check found them infeasible or a
+// simulation failed (the report is written all the same), 2 on invalid input.
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
+#include "command.h"
+#include "estimated_project.h"
+#include "highlift/core/error.h"
+#include "highlift/core/project_io.h"
+#include "highlift/core/text_table.h"
+#include "highlift/report/report.h"
+
+namespace highlift::cli {
+namespace {
+
+class ReportCommand : public Command {
+ public:
+  void Setup(CLI::App& app) override {
+    options_.AddTo(app);
+    app.add_option("--out,--output", out_, "HTML file to write (default: report.html)");
+    app.add_flag("--no-transient", no_transient_,
+                 "skip the transient simulation of every sizing case (single-DOF peaks and capacities only)");
+    app.add_flag("--no-scenarios", no_scenarios_, "skip the simulation of the project's scenarios (no time histories)");
+    app.add_option("--elements", report_.shaft_elements,
+                   "spring-dampers per torque shaft in the simulations (default: the project's shaft_elements, at least 4)")
+        ->check(CLI::PositiveNumber);
+    app.add_option("--threads", report_.threads, "simulations run side by side (default: all hardware threads)")
+        ->check(CLI::PositiveNumber);
+  }
+
+  int Run() override {
+    const Project project = LoadProject(options_.project);
+    const EstimatedProject estimated = LoadEstimatedProject(options_, true);
+    report_.transient = !no_transient_;
+    report_.scenarios = !no_scenarios_;
+    const report::DesignReport report =
+        report::BuildDesignReport(project, estimated.project, estimated.estimation_brief, report_);
+    const std::string html = report::RenderHtml(report);
+    {
+      std::ofstream file(out_, std::ios::binary);
+      if (!file) throw InputError("cannot write the report to '" + out_ + "': check that the folder exists and is writable");
+      file << html;
+      if (!file.flush()) throw InputError("writing the report to '" + out_ + "' failed (disk full?)");
+    }
+    const auto& t = report.timings;
+    if (options_.json) {
+      nlohmann::json j = {{"file", out_},
+                          {"bytes", html.size()},
+                          {"verdict", report.data["verdict"]},
+                          {"all_requirements_met", report.data["check"]["all_requirements_met"]},
+                          {"simulations_ok", report.simulations_ok},
+                          {"timings", report.data["timings"]}};
+      std::cout << j.dump(2) << "\n";
+    } else {
+      std::cout << report.data["verdict"].value("headline", "") << "\n"
+                << "wrote " << out_ << " (" << FormatNumber(html.size() / 1e6, 3) << " MB): open it in a browser, e.g. "
+                << "xdg-open " << out_ << "\n"
+                << "analyses " << FormatNumber(t.Tool(), 3) << " s, " << t.simulation_count << " simulations "
+                << FormatNumber(t.simulations, 3) << " s" << (report.simulations_ok ? "" : " (some failed)") << "\n";
+    }
+    return report.feasible && report.simulations_ok ? kSuccess : kViolated;
+  }
+
+ private:
+  CommonOptions options_;
+  report::ReportOptions report_;
+  std::string out_ = "report.html";
+  bool no_transient_ = false;
+  bool no_scenarios_ = false;
+};
+
+}  // namespace
+
+HIGHLIFT_REGISTER_COMMAND(ReportCommand, "report",
+                          "design report: one self-contained HTML file with the verdict, architecture, sizing, "
+                          "modes, peak loads and scenario time histories")
+
+}  // namespace highlift::cli

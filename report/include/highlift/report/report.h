@@ -1,0 +1,104 @@
+// The design report of a drive-system project (`highlift report`): one self-contained HTML file
+// with the verdict of the interval check first, the architecture drawn along the span, the
+// steady-state torque flow, the modes, the peak loads (single-DOF beside transient simulation
+// beside capacity) and the time histories of the project's scenarios. Scripts (the uPlot
+// plotting library, the page's own code), styles and data are inlined: the file opens offline
+// and refers to nothing outside itself (docs/report.md).
+//
+//   const Project project = LoadProject("examples/a380_class_flaps.json");
+//   Project estimated = project;  // the interval check runs on the estimated domains
+//   estimation::EstimateProject(estimated, &database, {});
+//   const DesignReport report = BuildDesignReport(project, estimated, "estimated 40 parameters", {});
+//   std::ofstream("report.html") << RenderHtml(report);
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "highlift/core/project.h"
+#include "highlift/icsp/drive_system.h"
+
+namespace highlift::report {
+
+struct ReportOptions {
+  /// Simulate every sizing case of the peak analysis at full resolution (the transient peak
+  /// beside the single-DOF estimate). false: single-DOF estimates and capacities only.
+  bool transient = true;
+  /// Spring-dampers per torque shaft in the simulations; 0: the project's shaft_elements, at
+  /// least sim::DriveNetworkOptions::kMinShaftElements.
+  int shaft_elements = 0;
+  /// Simulate the project's scenarios for the time histories (a scenario that is also a sizing
+  /// case is simulated once).
+  bool scenarios = true;
+  /// Points per signal in a time history at most: longer runs keep, per bucket of rows, the
+  /// rows of the smallest and the largest value (peaks survive the thinning).
+  int max_points = 1500;
+  /// Simulations run side by side on this many threads; 0: the hardware's threads.
+  int threads = 0;
+  /// The interval check (the summary), as `highlift check`.
+  icsp::PropagationOptions propagation;
+
+  /// Throws InputError naming the option when a value is invalid.
+  void Validate() const;
+};
+
+/// Wall-clock seconds of the parts of a report.
+struct ReportTimings {
+  double check = 0.0;         ///< interval propagation (and the nominal design)
+  double sizing = 0.0;
+  double modes = 0.0;
+  double peaks = 0.0;         ///< single-DOF peak analysis
+  double simulations = 0.0;   ///< wall time of all simulations (side by side)
+  double simulated = 0.0;     ///< sum of the simulations' own wall times
+  int simulation_count = 0;
+  double total = 0.0;         ///< BuildDesignReport, all of it
+  double Tool() const { return total - simulations; }  ///< everything but the simulations
+};
+
+struct DesignReport {
+  nlohmann::json data;        ///< everything the page shows (docs/report.md lists the keys)
+  bool feasible = true;       ///< the check's verdict on the domains (false also for failed simulations: no)
+  bool nominal_feasible = true;
+  bool simulations_ok = true; ///< every simulation reached its stop time
+  ReportTimings timings;
+  /// "report of NAME: feasible domains, nominal design violates X; 36 cases simulated in 12 s".
+  std::string BriefReport() const;
+};
+
+/// Runs the analyses and collects what the page shows. `project` as loaded (sizing, modes,
+/// peaks and simulations read it, as `highlift size/modes/peak/simulate` do); `estimated` the
+/// same with the estimator's domains (the interval check reads it, as `highlift check` does;
+/// pass `project` again to check the project's own domains), `estimation_brief` the estimator's
+/// one-line report ("" when not estimated). Throws InputError when the project is no drive
+/// system or an analysis cannot read it.
+DesignReport BuildDesignReport(const Project& project, const Project& estimated, const std::string& estimation_brief,
+                               const ReportOptions& options = {});
+
+/// The self-contained HTML page of the report.
+std::string RenderHtml(const DesignReport& report);
+
+/// The `highlift check --json` document of a check result: the verdict on the domains
+/// ("all_requirements_met", null when propagation stopped at a limit), the violated requirements
+/// and the explanation of the conflict, the nominal design's verdict, and every parameter
+/// (initial and final domain, narrowing, provenance).
+nlohmann::json CheckDocument(const Project& project, const icsp::DriveSystemNetwork& net,
+                             const icsp::CheckResult& result, const std::string& estimation_brief);
+
+/// The verdict of a check document in words, answer first: `highlift check` prints these lines
+/// before anything else and the report's summary shows them. Each statement says what it is
+/// about: the parameter domains (some values within them meet the requirements, or none do) or
+/// the nominal design (every parameter at its nominal value).
+struct Verdict {
+  std::string status;    ///< "feasible", "feasible_domains_nominal_violates", "infeasible", "undecided"
+  std::string headline;  ///< one line, e.g. "infeasible: no values within the parameter domains meet extension_time and jam_l1_fitting together"
+  std::string domains;   ///< the statement about the parameter domains
+  std::string nominal;   ///< the statement about the nominal design ("" when it was not checked)
+};
+Verdict DescribeVerdict(const nlohmann::json& check_document);
+
+/// Requirement labels of the constraints of an explanation's conflict.
+std::vector<std::string> ConflictLabels(const icsp::DriveSystemNetwork& net, const icsp::Explanation& explanation);
+
+}  // namespace highlift::report

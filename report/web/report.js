@@ -1,0 +1,409 @@
+// highlift design report: renders the data island #report-data with uPlot (plots) and inline SVG
+// (the architecture). Every plot registers itself in window.highliftReport.plots with the series
+// and points it was given and the marks uPlot drew, for the browser test (tests/report).
+(function () {
+  "use strict";
+  const state = { ready: false, plots: [], errors: [], drawing: null };
+  window.highliftReport = state;
+  window.addEventListener("error", (e) => state.errors.push(String(e.message)));
+
+  const data = JSON.parse(document.getElementById("report-data").textContent);
+  const COLORS = ["#0b5cad", "#d1462f", "#1a7f37", "#9a6700", "#6f42c1", "#00838f", "#c2185b", "#5d4037", "#455a64"];
+
+  // ---------------------------------------------------------------------------------------- helpers
+  function el(tag, attrs, ...children) {
+    const e = document.createElement(tag);
+    for (const [k, v] of Object.entries(attrs || {})) {
+      if (k === "class") e.className = v;
+      else if (k === "text") e.textContent = v;
+      else e.setAttribute(k, v);
+    }
+    for (const c of children) if (c != null) e.append(c);
+    return e;
+  }
+  function fmt(v, digits) {
+    if (v == null) return "\u2013";
+    if (typeof v === "string") return v;
+    if (!isFinite(v)) return v > 0 ? "inf" : "-inf";
+    if (v === 0) return "0";
+    const a = Math.abs(v);
+    if (a >= 1e6 || a < 1e-3) return v.toExponential((digits || 4) - 1);
+    return String(Number(v.toPrecision(digits || 4)));
+  }
+  function percent(m) { return m == null ? "\u2013" : (m * 100).toFixed(1) + " %"; }
+  function table(headers, rows, numeric) {
+    const t = el("table");
+    t.append(el("thead", {}, el("tr", {}, ...headers.map((h) => el("th", { text: h })))));
+    const body = el("tbody");
+    for (const r of rows) {
+      const tr = el("tr");
+      r.forEach((cell, i) => {
+        const td = el("td", { class: numeric && numeric.includes(i) ? "num" : "" });
+        if (cell instanceof Node) td.append(cell); else td.textContent = cell == null ? "\u2013" : String(cell);
+        tr.append(td);
+      });
+      body.append(tr);
+    }
+    t.append(body);
+    return t;
+  }
+  function escapeXml(s) {
+    return String(s).replace(/[&<>"']/g, (c) => ({ "&": "&amp;", "<": "&lt;", ">": "&gt;", '"': "&quot;", "'": "&#39;" }[c]));
+  }
+  const plotWidth = () => Math.max(600, Math.min(1400, document.getElementById("summary").clientWidth - 10));
+
+  // A uPlot chart that records what it drew. `series` are uPlot series options (without the x
+  // series); `columns` the data, x first.
+  function plot(container, id, title, columns, series, options) {
+    const box = el("div", { class: "plot", id: id });
+    box.append(el("div", { class: "plot-title", text: title }));
+    container.append(box);
+    const record = { id: id, title: title, series: series.length, points: [], drawnSeries: {}, bars: {} };
+    for (let s = 1; s < columns.length; s++) record.points.push(columns[s].filter((v) => v != null).length);
+    const opts = Object.assign({
+      width: plotWidth(),
+      height: 300,
+      series: [{ label: "x" }].concat(series),
+      hooks: {},
+    }, options || {});
+    opts.hooks.drawClear = [(u) => { record.drawnSeries = {}; record.bars = {}; }];
+    opts.hooks.drawSeries = [(u, si) => {
+      // Points of the series inside the visible x range.
+      const xs = u.data[0], ys = u.data[si], min = u.scales.x.min, max = u.scales.x.max;
+      let n = 0;
+      for (let i = 0; i < xs.length; i++) if (ys[i] != null && xs[i] >= min && xs[i] <= max) n++;
+      record.drawnSeries[si] = n;
+    }];
+    const u = new uPlot(opts, columns, box);
+    record.uplot = u;
+    record.canvas = box.querySelector("canvas");
+    state.plots.push(record);
+    return u;
+  }
+  // Bars that count themselves as they are drawn.
+  function bars(recordId, align, size) {
+    return uPlot.paths.bars({ size: [size, 40], align: align,
+      each: (u, si) => { const r = state.plots.find((p) => p.id === recordId); if (r) r.bars[si] = (r.bars[si] || 0) + 1; } });
+  }
+
+  // ---------------------------------------------------------------------------------------- summary
+  function renderSummary() {
+    const v = data.verdict, check = data.check;
+    const verdict = document.getElementById("verdict");
+    verdict.textContent = v.headline;
+    verdict.classList.add(v.status);
+    verdict.dataset.status = v.status;
+    document.getElementById("domains-statement").textContent = v.domains;
+    document.getElementById("nominal-statement").textContent = v.nominal;
+    const reqs = new Map(data.requirements.map((r) => [r.id, r]));
+    const violatedBox = document.getElementById("violated");
+    const listOf = (names, heading, cls) => {
+      if (!names || !names.length) return;
+      violatedBox.append(el("h3", { text: heading }));
+      const ul = el("ul", { class: "violated-list " + cls });
+      for (const n of names) {
+        const r = reqs.get(n);
+        ul.append(el("li", { "data-requirement": n }, el("strong", { text: n }), r ? ": " : "",
+          r ? el("code", { text: r.expression }) : null, r && r.description ? " \u2014 " + r.description : ""));
+      }
+      violatedBox.append(ul);
+    };
+    listOf(check.violated_requirements, "Requirements no values within the domains can meet", "domains");
+    if (check.nominal_design) listOf(check.nominal_design.violated_requirements, "Requirements the nominal design violates", "nominal");
+    const explanation = check.explanation || (check.nominal_design && check.nominal_design.explanation) || "";
+    document.getElementById("explanation").textContent = explanation;
+    if (!explanation) document.getElementById("explanation-box").hidden = true;
+    // The ten smallest, components with the same margin of the same kind in one row.
+    const groups = [];
+    for (const m of data.margins) {
+      const kind = m.what.split(",")[0];
+      const key = [fmt(m.margin, 3), fmt(m.load), fmt(m.allowable), m.allowable_name, kind].join("|");
+      const g = groups.find((x) => x.key === key);
+      if (g) { g.members.push(m); continue; }
+      if (groups.length === 10) break;
+      groups.push({ key: key, members: [m] });
+    }
+    document.getElementById("worst-margins").append(table(
+      ["margin", "component", "load [N*m]", "allowable [N*m]", "allowable", "from"],
+      groups.map((g) => {
+        const m = g.members[0];
+        const cell = el("span", { class: m.margin != null && m.margin < 0 ? "bad" : "", text: percent(m.margin) });
+        const who = el("span");
+        g.members.forEach((x, i) => { if (i) who.append(", "); who.append(componentLink(x.component)); });
+        const cases = g.members.length > 1 ? m.what.split(",")[0] + " (" + g.members.map((x) => x.what.split(", ")[1] || "").filter(Boolean).join(", ") + ")" : m.what;
+        return [cell, who, fmt(m.load), fmt(m.allowable), m.allowable_name, cases];
+      }), [0, 2, 3]));
+  }
+
+  function componentLink(id) {
+    if (!id) return "\u2013";
+    const a = el("a", { href: "#c-" + id, text: id });
+    return a;
+  }
+
+  // ---------------------------------------------------------------------------------------- architecture
+  const GLYPHS = {
+    pdu: (x, y) => `<rect class="glyph" x="${x - 14}" y="${y - 14}" width="28" height="28" rx="3" fill="#0b5cad" stroke="#083d73"/>`,
+    system_torque_limiter: (x, y) => `<path class="glyph" d="M${x} ${y - 9}L${x + 9} ${y}L${x} ${y + 9}L${x - 9} ${y}Z" fill="#d1462f" stroke="#7a2318"/>`,
+    station_torque_limiter: (x, y) => `<path class="glyph" d="M${x} ${y - 7}L${x + 7} ${y}L${x} ${y + 7}L${x - 7} ${y}Z" fill="#f08c78" stroke="#7a2318"/>`,
+    torque_shaft: null,
+    steady_bearing: (x, y) => `<circle class="glyph" cx="${x}" cy="${y}" r="4" fill="#fff" stroke="#455a64"/>`,
+    universal_joint: (x, y) => `<circle class="glyph" cx="${x}" cy="${y}" r="5" fill="#b0bec5" stroke="#455a64"/>`,
+    angle_gearbox: (x, y) => `<rect class="glyph" x="${x - 8}" y="${y - 8}" width="16" height="16" fill="#9a6700" stroke="#5c3d00"/>`,
+    branch_gearbox: (x, y) => `<rect class="glyph" x="${x - 7}" y="${y - 7}" width="14" height="14" fill="#e0b44c" stroke="#5c3d00"/>`,
+    geared_rotary_actuator: (x, y) => `<circle class="glyph" cx="${x}" cy="${y}" r="8" fill="#1a7f37" stroke="#0d4a1f"/>`,
+    ballscrew_actuator: (x, y) => `<rect class="glyph" x="${x - 5}" y="${y - 10}" width="10" height="20" fill="#1a7f37" stroke="#0d4a1f"/>`,
+    wing_tip_brake: (x, y) => `<g class="glyph"><rect x="${x - 8}" y="${y - 10}" width="16" height="20" fill="#6f42c1" stroke="#3d2270"/><path d="M${x - 8} ${y - 10}L${x + 8} ${y + 10}M${x + 8} ${y - 10}L${x - 8} ${y + 10}" stroke="#fff"/></g>`,
+    position_sensor: (x, y) => `<path class="glyph" d="M${x} ${y + 7}L${x + 7} ${y - 6}L${x - 7} ${y - 6}Z" fill="#00838f" stroke="#004d54"/>`,
+    disconnector: (x, y) => `<rect class="glyph" x="${x - 4}" y="${y - 9}" width="8" height="18" fill="#c2185b" stroke="#6d0d33"/>`,
+  };
+  const fallbackGlyph = (x, y) => `<rect class="glyph" x="${x - 6}" y="${y - 6}" width="12" height="12" fill="#90a4ae" stroke="#455a64"/>`;
+
+  function renderArchitecture() {
+    const comps = data.components;
+    const placed = comps.filter((c) => c.x != null);
+    const xs = placed.map((c) => c.x);
+    const xmin = Math.min(...xs, 0), xmax = Math.max(...xs, 0);
+    const box = document.getElementById("architecture-drawing");
+    const width = Math.max(1000, box.clientWidth - 2), margin = 40;
+    const lanes = placed.map((c) => c.lane);
+    const laneMin = Math.min(-1, ...lanes), laneMax = Math.max(2, ...lanes);
+    const laneGap = 56, top = 36;
+    const height = top + (laneMax - laneMin + 1) * laneGap + 40;
+    const X = (x) => margin + (x - xmin) / Math.max(1e-9, xmax - xmin) * (width - 2 * margin);
+    const Y = (lane) => top + (lane - laneMin) * laneGap + 10;
+    let svg = `<svg id="architecture-svg" width="${width}" height="${height}" viewBox="0 0 ${width} ${height}" role="img" aria-label="drive system along the span">`;
+    // Span axis with a tick every 5 m.
+    const axisY = height - 22;
+    svg += `<line x1="${X(xmin)}" y1="${axisY}" x2="${X(xmax)}" y2="${axisY}" stroke="#90a4ae"/>`;
+    for (let t = Math.ceil(xmin / 5) * 5; t <= xmax; t += 5)
+      svg += `<line x1="${X(t)}" y1="${axisY}" x2="${X(t)}" y2="${axisY + 4}" stroke="#90a4ae"/><text x="${X(t)}" y="${axisY + 15}" text-anchor="middle">${t} m</text>`;
+    // Connections: shafts as thick lines, the rest thin.
+    let edges = 0;
+    const pos = (i) => { const c = comps[i]; return c.x == null ? null : [X(c.x), Y(c.lane)]; };
+    for (const [a, b] of data.edges) {
+      const pa = pos(a), pb = pos(b);
+      if (!pa || !pb) continue;
+      const shaft = comps[a].type === "torque_shaft" || comps[b].type === "torque_shaft";
+      svg += `<line class="edge" x1="${pa[0]}" y1="${pa[1]}" x2="${pb[0]}" y2="${pb[1]}" stroke="${shaft ? "#37474f" : "#90a4ae"}" stroke-width="${shaft ? 4 : 1.5}"/>`;
+      edges++;
+    }
+    // Components: glyphs (shafts: a marker at their midpoint), each a link to its parameters.
+    let marks = 0;
+    // Labels of neighbours closer than a label's width go on alternate rows.
+    const labelRow = new Map(), lastLabel = new Map();
+    const labelled = (c) => c.type !== "torque_shaft" && c.type !== "steady_bearing";
+    comps.map((c, i) => i).filter((i) => pos(i) && labelled(comps[i])).sort((a, b) => pos(a)[0] - pos(b)[0]).forEach((i) => {
+      const c = comps[i], x = pos(i)[0], last = lastLabel.get(c.lane);
+      const row = last && x - last.x < 46 ? (last.row + 1) % 3 : 0;
+      labelRow.set(i, row);
+      lastLabel.set(c.lane, { x: x, row: row });
+    });
+    comps.forEach((c, i) => {
+      const p = pos(i);
+      if (!p) return;
+      const glyph = c.type === "torque_shaft"
+        ? `<rect class="glyph" x="${p[0] - 3}" y="${p[1] - 3}" width="6" height="6" fill="#37474f"/>`
+        : (GLYPHS[c.type] || fallbackGlyph)(p[0], p[1]);
+      const label = !labelled(c) ? "" :
+        `<text x="${p[0]}" y="${p[1] + (c.lane < 0 ? -12 - 10 * labelRow.get(i) : 22 + 10 * labelRow.get(i))}" text-anchor="middle">${escapeXml(c.id)}</text>`;
+      svg += `<a class="component" href="#c-${escapeXml(c.id)}" data-id="${escapeXml(c.id)}"><title>${escapeXml(c.id + " (" + c.type_name + ") at x = " + fmt(c.x) + " m")}</title>${glyph}${label}</a>`;
+      marks++;
+    });
+    svg += `</svg>`;
+    box.innerHTML = svg;
+    state.drawing = { components: marks, edges: edges, unplaced: comps.length - marks };
+    if (data.span_from_lengths) box.after(el("p", { class: "hint", text: "Span positions not given in the project were computed from the shaft lengths along the drive line." }));
+    const legend = document.getElementById("architecture-legend");
+    const types = [...new Set(comps.map((c) => c.type))];
+    for (const t of types) {
+      const g = t === "torque_shaft" ? `<line x1="0" y1="9" x2="18" y2="9" stroke="#37474f" stroke-width="4"/>` : (GLYPHS[t] || fallbackGlyph)(9, 9);
+      const span = el("span");
+      span.innerHTML = `<svg width="18" height="18">${g}</svg>`;
+      span.append(comps.find((c) => c.type === t).type_name);
+      legend.append(span);
+    }
+  }
+
+  function renderComponents() {
+    const finals = new Map(data.check.parameters.map((p) => [p.name, p]));
+    const box = document.getElementById("components");
+    for (const c of data.components) {
+      const d = el("details", { class: "component", id: "c-" + c.id });
+      d.append(el("summary", {}, el("strong", { text: c.id }), " \u2014 " + c.type_name + (c.x != null ? ", x = " + fmt(c.x) + " m" : "") + (c.description ? ": " + c.description : "")));
+      const rows = c.parameters.map((p) => {
+        if (p.text != null) return [p.name, p.text, "", "", "", "", ""];
+        const f = finals.get(c.id + "." + p.name);
+        const domain = p.min == null && p.max == null ? "\u2013" : "[" + fmt(p.min) + ", " + fmt(p.max) + "]";
+        const narrowed = f && f.final ? "[" + fmt(f.final[0]) + ", " + fmt(f.final[1]) + "]" + (f.unit && f.unit !== p.unit ? " " + f.unit : "") : (f ? "empty" : "\u2013");
+        return [p.name, fmt(p.value), domain, narrowed, p.unit, el("span", { class: "prov-" + p.provenance, text: p.provenance }), p.note];
+      });
+      d.append(table(["parameter", "value", "domain", "after propagation", "unit", "provenance", "source"], rows, [1]));
+      box.append(d);
+    }
+    const open = () => {
+      const id = decodeURIComponent(location.hash.slice(1));
+      const target = id.startsWith("c-") ? document.getElementById(id) : null;
+      if (target) { target.open = true; target.scrollIntoView({ block: "center" }); }
+    };
+    window.addEventListener("hashchange", open);
+    open();
+  }
+
+  // ---------------------------------------------------------------------------------------- sizing
+  function renderSizing() {
+    const comps = new Map(data.components.map((c) => [c.id, c]));
+    const capacity = new Map(data.sizing.margins.map((m) => [m.component, m.allowable_N_m]));
+    const box = document.getElementById("sizing-plots");
+    data.sizing.load_cases.forEach((lc, k) => {
+      const shafts = lc.components.filter((t) => t.type === "torque_shaft" && comps.get(t.component) && comps.get(t.component).x != null)
+        .map((t) => ({ x: comps.get(t.component).x, t: t }))
+        .sort((a, b) => a.x - b.x);
+      if (!shafts.length) return;
+      // A gap at the PDU between the wings.
+      const rows = [];
+      shafts.forEach((s, i) => {
+        if (i > 0 && Math.sign(shafts[i - 1].x) !== Math.sign(s.x)) rows.push([0, null, null, null, null]);
+        const cap = capacity.get(s.t.component);
+        rows.push([s.x, s.t.torque_N_m.nominal, s.t.torque_N_m.min, s.t.torque_N_m.max, cap == null ? null : cap]);
+      });
+      const cols = [0, 1, 2, 3, 4].map((c) => rows.map((r) => r[c]));
+      const color = COLORS[k % COLORS.length];
+      plot(box, "sizing-" + lc.name, "Load case " + lc.name + " (" + lc.direction + "): shaft torque along the span [N*m]", cols, [
+        { label: "nominal", stroke: color, width: 2, points: { show: true, size: 5 } },
+        { label: "enclosure min", stroke: color + "66", dash: [4, 4] },
+        { label: "enclosure max", stroke: color + "66", dash: [4, 4] },
+        { label: "capacity", stroke: "#b3261e", width: 1.5, points: { show: true, size: 4 } },
+      ], { bands: [{ series: [3, 2], fill: color + "22" }], axes: [{ label: "span position x [m]" }, { label: "N*m", size: 70 }],
+           scales: { x: { time: false } } });
+    });
+    const tables = document.getElementById("sizing-tables");
+    tables.append(el("h3", { text: "PDU per load case" }));
+    tables.append(table(["load case", "direction", "PDU speed [rad/s]", "PDU torque [N*m]", "enclosure", "output power [W]", "input power [W]"],
+      data.sizing.load_cases.map((lc) => [lc.name, lc.direction, fmt(lc.pdu_speed_rad_s), fmt(lc.pdu_torque_N_m.nominal),
+        "[" + fmt(lc.pdu_torque_N_m.min) + ", " + fmt(lc.pdu_torque_N_m.max) + "]", fmt(lc.pdu_power_W.nominal), fmt(lc.pdu_input_power_W.nominal)]), [2, 3, 5, 6]));
+    tables.append(el("h3", { text: "Limiter and brake settings" }));
+    tables.append(table(["component", "parameter", "rule", "operating [N*m]", "recommended [N*m]", "current [N*m]", "factor", "within rule"],
+      data.sizing.settings.map((s) => [componentLink(s.component), s.parameter, s.rule, fmt(s.operating_N_m.nominal), fmt(s.recommended_N_m),
+        fmt(s.current_N_m), fmt(s.current_factor, 3), el("span", { class: s.ok ? "" : "bad", text: s.ok ? (s.robust ? "yes" : "yes (not over the whole enclosure)") : "no" })]), [3, 4, 5, 6]));
+  }
+
+  // ---------------------------------------------------------------------------------------- modes
+  function renderModes() {
+    const models = data.modes.models;
+    const n = Math.max(...models.map((m) => m.clamped_hz.length));
+    const rows = [];
+    for (const m of models) {
+      rows.push([m.reduction, m.degrees_of_freedom, "clamped", ...Array.from({ length: n }, (_, i) => fmt(m.clamped_hz[i])), percent(m.first_clamped_error)]);
+      rows.push([m.reduction, m.degrees_of_freedom, "free", ...Array.from({ length: n }, (_, i) => fmt(m.free_hz[i])), percent(m.first_free_error)]);
+    }
+    const headers = ["model", "DOF", "PDU", ...Array.from({ length: n }, (_, i) => "f" + (i + 1) + " [Hz]"), "first-mode error"];
+    document.getElementById("modes-table").append(table(headers, rows, [1, 3, 4, 5, 6, 7, 8, 9]));
+    const box = document.getElementById("modes-plots");
+    // Shapes along the drive line: nodes with a span position, sorted, a gap at the PDU.
+    const along = (m, k) => {
+      const pts = [];
+      m.nodes.forEach((_, i) => { if (m.node_x[i] != null && m.clamped_shapes[k]) pts.push([m.node_x[i], m.clamped_shapes[k][i]]); });
+      pts.sort((a, b) => a[0] - b[0]);
+      return pts;
+    };
+    const merge = (lines) => {
+      const xs = [...new Set(lines.flatMap((l) => l.map((p) => p[0])))].sort((a, b) => a - b);
+      const index = new Map(xs.map((x, i) => [x, i]));
+      const cols = [xs];
+      for (const l of lines) {
+        const c = new Array(xs.length).fill(null);
+        for (const [x, y] of l) if (c[index.get(x)] == null) c[index.get(x)] = y;
+        cols.push(c);
+      }
+      return cols;
+    };
+    const full = models[0];
+    const shapes = full.clamped_shapes.slice(0, 3).map((_, k) => along(full, k));
+    plot(box, "modes-full", "First mode shapes of the " + full.reduction + " model, PDU clamped (twist angle, max |.| = 1) along the span",
+      merge(shapes), shapes.map((_, k) => ({ label: "mode " + (k + 1) + " (" + fmt(full.clamped_hz[k]) + " Hz)", stroke: COLORS[k], width: 2, spanGaps: false })),
+      { axes: [{ label: "span position x [m]" }, { label: "shape" }], scales: { x: { time: false } } });
+    const firsts = models.map((m) => along(m, 0));
+    plot(box, "modes-first", "First mode shape, PDU clamped: full resolution beside the reduced models",
+      merge(firsts), models.map((m, k) => ({ label: m.reduction + " (" + fmt(m.clamped_hz[0]) + " Hz)", stroke: COLORS[k], width: k ? 1.5 : 2.5,
+        spanGaps: true, points: { show: true, size: k ? 6 : 3 } })),
+      { axes: [{ label: "span position x [m]" }, { label: "shape" }], scales: { x: { time: false } } });
+  }
+
+  // ---------------------------------------------------------------------------------------- peaks
+  function renderPeaks() {
+    const cases = data.peak_cases;
+    const idx = cases.map((_, i) => i);
+    const single = cases.map((c) => c.single_dof.nominal);
+    const transient = cases.map((c) => (c.transient && c.transient.ok ? c.transient.value : null));
+    const cap = cases.map((c) => (c.capacity ? c.capacity.value : null));
+    const series = [
+      { label: "single-DOF estimate [N*m]", fill: "#0b5cad99", stroke: "#0b5cad", paths: bars("peaks-plot", -1, 0.34), points: { show: false } },
+      { label: "transient simulation [N*m]", fill: "#d1462f99", stroke: "#d1462f", paths: bars("peaks-plot", 1, 0.34), points: { show: false } },
+      { label: "capacity on the load path [N*m]", stroke: "#1d2329", width: 0, paths: () => null, points: { show: true, size: 9, fill: "#1d2329", stroke: "#1d2329" } },
+    ];
+    const cols = [idx, single, transient, cap];
+    plot(document.getElementById("peaks-plot"), "peaks-plot", "Peak torque per sizing case, at the shaft speed", cols, series, {
+      height: 380,
+      scales: { x: { time: false, range: [-0.7, cases.length - 0.3] }, y: { range: (u, min, max) => [0, max * 1.08] } },
+      axes: [{ rotate: -60, size: 120, space: 10, incrs: [1], values: (u, splits) => splits.map((s) => (Number.isInteger(s) && cases[s] ? cases[s].name : "")) },
+             { label: "N*m", size: 70 }],
+    });
+    document.getElementById("peaks-table").append(table(
+      ["case", "kind", "acts at", "single-DOF [N*m]", "enclosure", "widened most by", "transient [N*m]", "at", "t [s]", "transient / single-DOF", "capacity [N*m]", "weakest", "status"],
+      cases.map((c) => {
+        const t = c.transient;
+        const ratio = t && t.ok && c.single_dof.nominal ? t.value / c.single_dof.nominal : null;
+        const over = c.capacity && t && t.value > c.capacity.value;
+        const widest = (c.ranking || []).map((r) => r.parameter + " " + Math.round(r.share * 100) + " %").join(", ");
+        return [c.name, c.kind, componentLink(c.acts_at), fmt(c.single_dof.nominal), "[" + fmt(c.single_dof.min) + ", " + fmt(c.single_dof.max) + "]", widest,
+          t ? el("span", { class: over ? "bad" : "", text: fmt(t.value) }) : "not simulated", t ? componentLink(t.at) : "\u2013", t ? fmt(t.time) : "\u2013",
+          fmt(ratio, 3), c.capacity ? fmt(c.capacity.value) : "\u2013", c.capacity ? componentLink(c.capacity.component) : "\u2013",
+          t ? (t.ok ? "ok" : el("span", { class: "bad", text: "failed: " + t.message })) : "\u2013"];
+      }), [3, 6, 8, 9, 10]));
+  }
+
+  // ---------------------------------------------------------------------------------------- scenarios
+  function renderScenarios() {
+    const box = document.getElementById("scenario-plots");
+    for (const s of data.scenarios) {
+      const div = el("div", { class: "scenario", id: "scenario-" + s.name });
+      div.append(el("h3", { text: s.name + " (" + s.kind + (s.load_case ? ", load case " + s.load_case : "") + ")" }));
+      div.append(el("p", { class: "hint", text: (s.description || "") + " Simulated " + fmt(s.stop_time) + " s, " + s.states + " states, " +
+        s.events + " events, " + fmt(s.wall_seconds, 2) + " s of computing; " + s.time.length + " of " + s.rows_simulated + " output rows kept (each bucket's extremes)." }));
+      if (!s.ok) div.append(el("p", { class: "bad", text: "The simulation failed: " + s.message }));
+      box.append(div);
+      const group = { plots: [] };
+      const sync = (u) => {
+        for (const other of group.plots) if (other !== u && (other.scales.x.min !== u.scales.x.min || other.scales.x.max !== u.scales.x.max))
+          other.setScale("x", { min: u.scales.x.min, max: u.scales.x.max });
+      };
+      for (const [kind, title, unit] of [["speed", "speeds", "rad/s"], ["torque", "torques", "N*m"], ["state", "monitor: wing-tip brake command", ""]]) {
+        const signals = s.signals.filter((g) => g.group === kind);
+        if (!signals.length) continue;
+        const u = plot(div, "scenario-" + s.name + "-" + kind, s.name + ": " + title + (unit ? " [" + unit + "]" : ""), [s.time, ...signals.map((g) => g.values)],
+          signals.map((g, k) => ({ label: g.name, stroke: COLORS[k % COLORS.length], width: 1.5, paths: kind === "state" ? uPlot.paths.stepped({ align: 1 }) : undefined })),
+          { height: kind === "state" ? 150 : 260, cursor: { sync: { key: "scenario-" + s.name }, drag: { x: true, y: false } },
+            scales: { x: { time: false } }, axes: [{ label: "time [s]" }, { label: unit, size: 70 }],
+            hooks: { setScale: [(u, key) => { if (key === "x") sync(u); }] } });
+        group.plots.push(u);
+      }
+    }
+  }
+
+  function renderFooter() {
+    const t = data.timings;
+    document.getElementById("meta").textContent = (data.project.file || "") + " \u2014 " + data.components.length + " components, " +
+      data.requirements.length + " requirements, " + data.scenarios.length + " scenarios simulated";
+    document.getElementById("description").textContent = data.project.description || "";
+    document.getElementById("footer").textContent = "Generated by " + data.generator + ". Analyses " + fmt(t.total - t.simulations, 3) + " s, " +
+      t.simulation_count + " simulations in " + fmt(t.simulations, 3) + " s of wall time (" + fmt(t.simulated, 3) + " s of computing). " +
+      "Plots: uPlot (MIT licence), inlined; this file refers to nothing outside itself.";
+  }
+
+  const sections = [renderSummary, renderArchitecture, renderComponents, renderSizing, renderModes, renderPeaks, renderScenarios, renderFooter];
+  for (const render of sections) {
+    try { render(); } catch (e) { state.errors.push(render.name + ": " + e.message); console.error(render.name, e); }
+  }
+  state.ready = true;
+})();
