@@ -8,6 +8,7 @@ packages=(
   libboost-dev libeigen3-dev libsqlite3-dev sqlite3 nlohmann-json3-dev
   libsundials-dev libsuitesparse-dev libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev libfmt-dev
   libudunits2-dev libudunits2-data
+  clang libclang-rt-14-dev
 )
 
 missing=()

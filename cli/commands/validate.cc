@@ -59,7 +59,7 @@ class ValidateCommand : public Command {
                                                                   {"location", LocationJson(e.where())}}})}};
         std::cout << doc.dump(2) << "\n";
       }
-      std::cerr << "highlift validate: error: " << e.what() << "\n";
+      std::cerr << "highlift validate: error: " << e.what() << "\n";  // cleaned by InputError
       return kInvalidInput;
     }
 
