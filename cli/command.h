@@ -2,19 +2,65 @@
 // registers itself with HIGHLIFT_REGISTER_COMMAND, so commands are added without touching main.
 //
 // Exit codes for every command: 0 success; 1 the analysis found violated requirements or
-// infeasibility; 2 invalid input or usage. Messages go to stderr; with --json, stdout holds
-// exactly one JSON document.
+// infeasibility; 2 invalid input or usage; 3 internal error; 130 interrupted (SIGINT/SIGTERM).
+// Messages go to stderr; with --json, stdout holds exactly one JSON document for every outcome
+// (main() prints an {"ok": false, "status": ...} document when a command fails before printing
+// its own). See cli/main.cc and docs/cli.md.
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <cmath>
 #include <functional>
+#include <limits>
 #include <memory>
+#include <sstream>
 #include <string>
+#include <string_view>
 #include <vector>
+
+#include "highlift/core/error.h"
 
 namespace highlift::cli {
 
-enum ExitCode : int { kSuccess = 0, kViolated = 1, kInvalidInput = 2 };
+enum ExitCode : int { kSuccess = 0, kViolated = 1, kInvalidInput = 2, kInternalError = 3, kInterruptedExit = 130 };
+
+using highlift::CleanText;  // core/error.h: control characters escaped, long lines cut
+
+/// A numeric option value within [lo, hi] (either may be infinite: no bound), finite, with a
+/// readable message ("--wide: 'nan' is not a finite number; give a number > 0"). Unlike
+/// CLI::PositiveNumber it never prints DBL_MAX.
+inline CLI::Validator NumberIn(double lo, double hi, bool lo_open = false) {
+  auto show = [](double v) {
+    std::ostringstream s;
+    s << v;
+    return s.str();
+  };
+  std::string range;
+  if (std::isfinite(lo) && std::isfinite(hi)) range = "a number from " + show(lo) + " to " + show(hi);
+  else if (std::isfinite(lo)) range = std::string("a number ") + (lo_open ? "> " : ">= ") + show(lo);
+  else if (std::isfinite(hi)) range = "a number <= " + show(hi);
+  else range = "a finite number";
+  return CLI::Validator(
+      [=](std::string& text) -> std::string {
+        double v = 0;
+        if (!CLI::detail::lexical_cast(text, v)) return "'" + text + "' is not a number; give " + range;
+        if (!std::isfinite(v)) return "'" + text + "' is not a finite number; give " + range;
+        if (v < lo || (lo_open && v == lo) || v > hi) return "'" + text + "' is out of range; give " + range;
+        return {};
+      },
+      "", "");
+}
+inline CLI::Validator Positive() { return NumberIn(0.0, std::numeric_limits<double>::infinity(), true); }
+inline CLI::Validator NonNegative() { return NumberIn(0.0, std::numeric_limits<double>::infinity()); }
+
+/// Adds a finiteness check to every floating-point option of `app` and its subcommands, so
+/// nan and inf never reach a command (main() calls it for every command).
+inline void RejectNonFiniteNumbers(CLI::App& app) {
+  for (CLI::Option* opt : app.get_options())
+    if (opt->get_type_name() == "FLOAT") opt->check(NumberIn(-std::numeric_limits<double>::infinity(),
+                                                             std::numeric_limits<double>::infinity()));
+  for (CLI::App* sub : app.get_subcommands(std::function<bool(CLI::App*)>())) RejectNonFiniteNumbers(*sub);
+}
 
 /// Points of the domains `size --json` and `peak --json` sample to report the tightness of
 /// their enclosures (--tightness overrides).
@@ -22,7 +68,7 @@ constexpr int kDefaultTightnessSamples = 32;
 
 /// A command: Setup() declares its options on the subcommand; Run() does the work after
 /// parsing and returns an exit code. Exceptions of type highlift::InputError are reported by
-/// main() with exit code 2.
+/// main() with exit code 2 (and, with --json, an error document when Run() printed none).
 class Command {
  public:
   virtual ~Command() = default;

@@ -13,6 +13,7 @@ packages=(
   libudunits2-dev libudunits2-data
   slurmctld slurmd slurm-client munge
   chromium
+  clang libclang-rt-14-dev
 )
 # Node.js and npm (the report's plotting library, the browser test): Debian's nodejs and npm,
 # unless a node with npm is already installed (a NodeSource nodejs package provides npm itself

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs what is missing, builds highlift and passes all tests: first a release build, then
-# the same tests under AddressSanitizer + UndefinedBehaviorSanitizer.
+# the libFuzzer targets for a bounded time (scripts/fuzz.sh), then the same tests under
+# AddressSanitizer + UndefinedBehaviorSanitizer.
 # Usage: scripts/test.sh            (from the project root; CI runs exactly this)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -12,6 +13,9 @@ echo "== release build and tests"
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release
 cmake --build build -j "$jobs"
 ctest --test-dir build --output-on-failure -j "$jobs" --timeout 900
+
+echo "== libFuzzer targets (clang, ASan + UBSan), bounded time each"
+scripts/fuzz.sh "${HIGHLIFT_FUZZ_SECONDS:-30}"
 
 echo "== AddressSanitizer + UndefinedBehaviorSanitizer build and tests"
 cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-O1 -g0" \

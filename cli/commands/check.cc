@@ -41,7 +41,7 @@ class CheckCommand : public Command {
         ->check(CLI::Range(0.0, 0.999));
     app.add_option("--max-revisions", max_revisions_,
                    "stop propagating after this many constraint revisions (the result then proves nothing)")
-        ->check(CLI::PositiveNumber);
+        ->check(Positive());
   }
 
   int Run() override {

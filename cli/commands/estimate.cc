@@ -20,7 +20,8 @@ class EstimateCommand : public Command {
     app.add_flag("--all", all_, "List every parameter, not only the ones the estimator changed");
     app.add_flag("--no-db", no_db_, "Do not use the component database (physics laws only)");
     app.add_option("--confidence", options_.confidence, "Confidence of the fits' prediction intervals (default 0.9)");
-    app.add_option("--min-fit-parts", options_.min_fit_parts, "Fewest database parts for a fit (default 4)");
+    app.add_option("--min-fit-parts", options_.min_fit_parts, "Fewest database parts for a fit (default 4)")
+        ->check(NumberIn(3, 1e6));  // unsigned: CLI11 would wrap -1 to 2^64-1
   }
 
   int Run() override {

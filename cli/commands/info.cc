@@ -80,7 +80,7 @@ class InfoCommand : public Command {
     app.add_option("--wide", describe_.wide_relative_width,
                    "Relative domain width (hi - lo) / |mid| above which a parameter is listed as wide")
         ->capture_default_str()
-        ->check(CLI::NonNegativeNumber);
+        ->check(NonNegative());
   }
 
   int Run() override {

@@ -73,7 +73,8 @@ class PeakCommand : public Command {
                  "beside the single-DOF estimate");
     app.add_option("--elements", elements_,
                    "with --transient: spring-dampers per torque shaft (default: the project's "
-                   "shaft_elements, at least 4)");
+                   "shaft_elements, at least 4; 1 to 1000)")
+        ->check(NumberIn(1, 1000));
   }
   int Run() override {
     const Project project = LoadProject(options_.project);

@@ -8,9 +8,11 @@
 // integration failed (the report says when, where and why), 2 on invalid input.
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <iomanip>
 #include <iostream>
 #include <sstream>
 
@@ -18,6 +20,7 @@
 
 #include "command.h"
 #include "highlift/core/error.h"
+#include "highlift/core/output_file.h"
 #include "highlift/core/project_io.h"
 #include "highlift/core/text_table.h"
 #include "highlift/sim/drive_network.h"
@@ -91,7 +94,10 @@ class SimulateCommand : public Command {
                    "(inertias lumped at gearboxes and stations)");
     app.add_option("--elements", elements_,
                    "Drive-system projects, full model: spring-dampers per torque shaft (default: the "
-                   "project's shaft_elements, at least 4)");
+                   "project's shaft_elements, at least 4; 1 to 1000)")
+        ->check(NumberIn(1, 1000));
+    app.add_option("--max-rows", max_rows_, "Refuse runs that would write more output rows than this (default 1e7)")
+        ->check(NumberIn(1, 1e12));
     app.add_flag("--energy", energy_, "Energy bookkeeping: energy.* columns and the balance in the report");
     app.add_option("--rtol", rtol_, "Relative tolerance (default: the experiment's Tolerance or settings.relative_tolerance)");
     app.add_option("--atol", atol_,
@@ -164,6 +170,22 @@ class SimulateCommand : public Command {
     if (!std::isnan(atol_)) options.absolute_tolerance = atol_;
     options.energy = energy_;
     options.Validate();
+    // Output rows: a tiny output_interval would write gigabytes (1e-300 s) or never end.
+    const double rows = std::floor((options.stop_time - options.start_time) / options.output_interval) + 1;
+    if (!(rows <= max_rows_)) {
+      const auto count = [](double v) {
+        std::ostringstream s;
+        s << std::setprecision(3) << v;
+        return s.str();
+      };
+      throw InputError("the run would write " + count(rows) + " output rows (stop_time " +
+                       FormatNumber(options.stop_time, 6) + " s / output_interval " +
+                       FormatNumber(options.output_interval, 6) + " s), about " + count(rows * 20) +
+                       " bytes per CSV column; the limit is " + count(max_rows_) +
+                       " rows: raise output_interval (settings or the scenario) to at least " +
+                       FormatNumber((options.stop_time - options.start_time) / std::max(max_rows_ - 1, 1.0), 3) +
+                       " s, or raise --max-rows");
+    }
 
     std::unique_ptr<sim::CsvSink> csv;
     if (!out_.empty()) csv = std::make_unique<sim::CsvSink>(out_, SplitSignals(signals_));
@@ -215,7 +237,9 @@ class SimulateCommand : public Command {
         for (const auto& [name, value] : report.state) state[name] = value;
         j["state"] = state;
       }
-      j["output"] = {{"file", out_},
+      const std::string partial = PartialOutputFile();
+      j["output"] = {{"file", partial.empty() ? out_ : partial},
+                     {"partial", !partial.empty()},
                      {"columns", selected > 0 ? selected : sink.columns()},
                      {"rows", sink.rows()}};
       const auto& s = report.statistics;
@@ -247,7 +271,7 @@ class SimulateCommand : public Command {
       if (!out_.empty())
         std::cout << "wrote " << sink.rows() << " rows x "
                   << (selected > 0 ? selected : sink.columns()) + 1 << " columns to "
-                  << out_ << "\n";
+                  << (PartialOutputFile().empty() ? out_ : PartialOutputFile() + " (partial)") << "\n";
       if (drive)
         std::cout << sim::ToString(drive_model.resolution) << " model of " << project.components.size()
                   << " components: " << drive_model.network.elements().size() << " elements"
@@ -284,6 +308,7 @@ class SimulateCommand : public Command {
   std::string signals_;
   std::string model_;
   int elements_ = -1;
+  double max_rows_ = 1e7;
   bool energy_ = false;
   double rtol_ = NAN, atol_ = NAN;  // NaN: not given
 };

@@ -53,18 +53,16 @@ class TradeoffCommand : public Command {
       std::getline(rest, hi_s, ':');
       std::getline(rest, n_s, ':');
     }
-    double lo = 0, hi = 0;
-    int n = 0;
-    try {
-      lo = std::stod(lo_s);
-      hi = std::stod(hi_s);
-      n = std::stoi(n_s);
-    } catch (const std::exception&) {
+    double lo = 0, hi = 0, count = 0;
+    if (!CLI::detail::lexical_cast(lo_s, lo) || !CLI::detail::lexical_cast(hi_s, hi) ||
+        !CLI::detail::lexical_cast(n_s, count))
       throw InputError("--vary '" + vary_ + "' is not NAME=LO:HI:N; write e.g. --vary pdu.max_output_speed=20:30:5");
+    if (!std::isfinite(lo) || !std::isfinite(hi))
+      throw InputError("--vary '" + vary_ + "': LO and HI must be finite numbers (not inf or nan)");
+    if (!(lo < hi) || !(count >= 1 && count <= 1000) || count != std::floor(count)) {
+      throw InputError("--vary '" + vary_ + "': need LO < HI and a whole N from 1 to 1000");
     }
-    if (!(lo < hi) || n < 1 || n > 1000) {
-      throw InputError("--vary '" + vary_ + "': need LO < HI and 1 <= N <= 1000");
-    }
+    const int n = static_cast<int>(count);
     const EstimatedProject loaded = LoadEstimatedProject(options_, !no_estimate_);
     const Project& project = loaded.project;
     const icsp::DriveSystemNetwork dn = icsp::BuildDriveSystemNetwork(project);

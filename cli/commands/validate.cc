@@ -61,7 +61,7 @@ class ValidateCommand : public Command {
                                                                   {"location", LocationJson(e.where())}}})}};
         std::cout << doc.dump(2) << "\n";
       }
-      std::cerr << "highlift validate: error: " << e.what() << "\n";
+      std::cerr << "highlift validate: error: " << e.what() << "\n";  // cleaned by InputError
       return kInvalidInput;
     }
 

@@ -1,6 +1,9 @@
 #include "csv.h"
 
+#include <algorithm>
+
 #include "highlift/core/error.h"
+#include "highlift/core/utf8.h"
 
 namespace highlift::componentdb::csv {
 
@@ -15,6 +18,16 @@ std::vector<Row> Parse(const std::string& text, const std::string& file_name) {
   std::size_t i = 0;
   const std::size_t n = text.size();
   if (n >= 3 && text.compare(0, 3, "\xEF\xBB\xBF") == 0) i = 3;  // UTF-8 byte order mark
+  // Names, designations and notes must be UTF-8 without control characters: every JSON output
+  // of them (db show --json, db export) needs it.
+  std::size_t bad = 0;
+  if (const auto problem = FindTextProblem(std::string_view(text).substr(i), &bad)) {
+    const auto before = text.begin() + static_cast<std::ptrdiff_t>(i + bad);
+    const auto line = std::count(text.begin(), before, '\n') + 1;
+    const auto line_start = std::string_view(text).substr(0, i + bad).rfind('\n');
+    const std::size_t column = i + bad - (line_start == std::string_view::npos ? 0 : line_start + 1) + 1;
+    throw InputError(file_name + " line " + std::to_string(line) + ", byte " + std::to_string(column) + ": " + *problem);
+  }
   const auto end_field = [&] {
     row.fields.push_back(std::move(field));
     field.clear();

@@ -9,6 +9,7 @@
 #include "highlift/componentdb/io.h"
 #include "highlift/core/catalogue.h"
 #include "highlift/core/error.h"
+#include "highlift/core/output_file.h"
 #include "highlift/core/units.h"
 #include "schema.h"
 #include "highlift/componentdb/sqlite.h"
@@ -116,6 +117,7 @@ ComponentDatabase ComponentDatabase::Open(const std::filesystem::path& file, Mod
   if (!exists && mode != Mode::kCreate)
     throw InputError("component database '" + file.string() +
                      "' does not exist; give an existing database with --db, or leave --db out to use the default");
+  if (exists) RegisterInputFile(file);  // `db export F --db F` must not overwrite the database
   using CMode = sqlite::Connection::Mode;
   std::unique_ptr<Impl> impl;
   try {
@@ -336,6 +338,8 @@ RangeCondition ParseRangeCondition(const std::string& text, const std::string& t
   std::string rest = text.substr(eq + 1);
   const auto colon = rest.find(':');
   if (colon == std::string::npos) throw InputError("range '" + text + "': no ':' between the bounds; " + forms);
+  if (rest.find(':', colon + 1) != std::string::npos)
+    throw InputError("range '" + text + "': more than one ':'; a range has two bounds, LO:HI; " + forms);
   std::string lo_text = rest.substr(0, colon), hi_and_unit = rest.substr(colon + 1);
   // The unit follows the upper bound after a space, or directly after the number.
   const auto trim = [](std::string s) {
@@ -362,6 +366,8 @@ RangeCondition ParseRangeCondition(const std::string& text, const std::string& t
     const auto [end, ec] = std::from_chars(s.data() + (s[0] == '+' ? 1 : 0), s.data() + s.size(), v);
     if (ec != std::errc() || end != s.data() + s.size())
       throw InputError("range '" + text + "': '" + s + "' is not a number; " + forms);
+    if (!std::isfinite(v))
+      throw InputError("range '" + text + "': '" + s + "' is not a finite number; leave a bound out for no bound; " + forms);
     return v;
   };
   double lo = number(lo_text, -HUGE_VAL), hi = number(hi_text, HUGE_VAL);

@@ -7,10 +7,12 @@
 #include <cerrno>
 #include <cstring>
 #include <random>
+#include <vector>
 
 #include "highlift/componentdb/database.h"
 #include "highlift/componentdb/io.h"
 #include "highlift/core/error.h"
+#include "highlift/core/output_file.h"
 
 namespace highlift::componentdb {
 
@@ -56,8 +58,13 @@ void BuildFromSeed(const std::filesystem::path& file) {
   std::random_device random;
   const auto tmp = std::filesystem::path(file.string() + ".tmp-" + std::to_string(::getpid()) + "-" +
                                          std::to_string(random()));
+  // A SIGINT or SIGTERM during the build removes these (the CLI's handler), so an interrupted
+  // first creation leaves no components.sqlite.tmp-* behind.
+  std::vector<int> slots;
+  for (const char* suffix : {"", "-wal", "-shm", "-journal"}) slots.push_back(RegisterTemporaryFile(tmp.string() + suffix));
   const auto remove_tmp = [&] {
     for (const char* suffix : {"", "-wal", "-shm", "-journal"}) std::filesystem::remove(tmp.string() + suffix, ec);
+    for (int slot : slots) UnregisterTemporaryFile(slot);
   };
   try {
     {

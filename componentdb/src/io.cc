@@ -1,5 +1,6 @@
 #include "highlift/componentdb/io.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <fstream>
@@ -11,8 +12,10 @@
 #include "csv.h"
 #include "highlift/core/catalogue.h"
 #include "highlift/core/error.h"
+#include "highlift/core/output_file.h"
 #include "highlift/core/text_table.h"
 #include "highlift/core/units.h"
+#include "highlift/core/utf8.h"
 
 namespace highlift::componentdb {
 namespace {
@@ -266,11 +269,23 @@ std::vector<Quantity> JsonQuantities(const Json& object, const std::string& orig
 }  // namespace
 
 Records ParseJson(const std::string& text, const std::string& file_name) {
+  // UTF-8 without control characters; a BOM at the very start is allowed (nlohmann::json skips it)
+  const std::size_t skip = text.compare(0, 3, "\xEF\xBB\xBF") == 0 ? 3 : 0;
+  std::size_t bad = 0;
+  if (const auto problem = FindTextProblem(std::string_view(text).substr(skip), &bad)) {
+    const auto line = std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(skip + bad), '\n') + 1;
+    throw InputError(file_name + " line " + std::to_string(line) + ": " + *problem);
+  }
   Json doc;
   try {
     doc = Json::parse(text);
   } catch (const Json::parse_error& e) {
-    throw InputError(file_name + ": not valid JSON: " + e.what());
+    // "[json.exception.parse_error.101] parse error at line 3, column 5: syntax error ..." -> the part
+    // after the library's tag
+    std::string what = e.what();
+    if (const auto at = what.find("] "); what.rfind("[json.exception", 0) == 0 && at != std::string::npos)
+      what = what.substr(at + 2);
+    throw InputError(file_name + ": not valid JSON: " + what);
   }
   if (!doc.is_object()) throw InputError(file_name + ": the document must be an object with keys format, materials, parts");
   RejectUnknownKeys(doc, {"format", "materials", "parts"}, file_name);
@@ -318,6 +333,7 @@ Records ParseJson(const std::string& text, const std::string& file_name) {
 Records ReadRecords(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
   if (!in) throw InputError("cannot read '" + file.string() + "': no such file or not readable");
+  RegisterInputFile(file);
   std::stringstream buffer;
   buffer << in.rdbuf();
   const std::string ext = file.extension().string();
@@ -451,20 +467,7 @@ void WriteRecords(const Records& records, const std::filesystem::path& file) {
   if (ext == ".csv") text = ToCsv(records);
   else if (ext == ".json") text = ToJson(records).dump(2) + "\n";
   else throw InputError("'" + file.string() + "': unknown file kind '" + ext + "'; export writes .csv or .json");
-  const auto tmp = file.string() + ".tmp-" + std::to_string(::getpid());
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) throw InputError("cannot write '" + tmp + "': check the directory exists and is writable");
-    out << text;
-    out.flush();
-    if (!out) throw InputError("writing '" + tmp + "' failed (disk full?)");
-  }
-  std::error_code ec;
-  std::filesystem::rename(tmp, file, ec);
-  if (ec) {
-    std::filesystem::remove(tmp);
-    throw InputError("cannot write '" + file.string() + "': " + ec.message());
-  }
+  WriteOutputFile(file, text, "export file");
 }
 
 }  // namespace highlift::componentdb

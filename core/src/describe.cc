@@ -288,7 +288,7 @@ ProjectDescription DescribeProject(const Project& project, const DescribeOptions
         st.speed_ratio = 1.0 / s->second;
         const std::optional<double> ratio = PointValue(c, "ratio");
         if (ratio) st.total_ratio = st.speed_ratio * *ratio;
-        if (const PowerPath* path = graph.PathTo(c.id)) st.path = path->components;
+        st.path = graph.Route(c.id);
       }
       r.stations.push_back(std::move(st));
     }

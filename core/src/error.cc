@@ -19,14 +19,57 @@ std::string SourceLocation::ToString() const {
   return s;
 }
 
+std::string CleanText(std::string_view text, std::size_t max_line) {
+  std::string out;
+  std::size_t line = 0, cut = 0;
+  auto end_line = [&] {
+    if (cut > 0) out += " [... " + std::to_string(cut) + " more bytes]";
+    line = cut = 0;
+  };
+  for (const char c : text) {
+    if (c == '\n') {
+      end_line();
+      out += c;
+      continue;
+    }
+    if (line >= max_line) {
+      ++cut;
+      continue;
+    }
+    const auto u = static_cast<unsigned char>(c);
+    if ((u < 0x20 && c != '\t' && c != '\r') || u == 0x7f) {
+      static const char* const kHex = "0123456789abcdef";
+      out += "\\x";
+      out += kHex[u >> 4];
+      out += kHex[u & 15];
+      line += 4;
+    } else {
+      out += c;
+      ++line;
+    }
+  }
+  end_line();
+  return out;
+}
+
 namespace {
 std::string Compose(const std::string& message, const SourceLocation& where) {
   return where.empty() ? message : where.ToString() + ": " + message;
 }
 }  // namespace
 
+namespace {
+SourceLocation Cleaned(SourceLocation where) {
+  where.file = CleanText(where.file);
+  where.json_pointer = CleanText(where.json_pointer);
+  return where;
+}
+}  // namespace
+
 InputError::InputError(const std::string& message, SourceLocation where)
-    : std::runtime_error(Compose(message, where)), where_(std::move(where)), message_(message) {}
+    : std::runtime_error(Compose(CleanText(message), Cleaned(where))),
+      where_(Cleaned(std::move(where))),
+      message_(CleanText(message)) {}
 
 namespace detail {
 void CheckFailed(const char* condition, const char* file, int line, const std::string& what) {

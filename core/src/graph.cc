@@ -62,36 +62,63 @@ void ComponentGraph::Build(const std::vector<Component>& components, const std::
 
 void ComponentGraph::Walk() {
   if (pdu_.empty()) return;
-  PowerPath root;
-  root.components = {pdu_};
-  root.entry_ports = {""};
-  paths_[pdu_] = root;
+  paths_[pdu_] = PowerPath{};
   order_.push_back(pdu_);
+  // The connection by which each reached component was entered (none for the PDU).
+  std::map<std::string, std::size_t, std::less<>> entered_by;
+  std::set<std::size_t> loops;
   std::deque<std::string> queue = {pdu_};
   while (!queue.empty()) {
     const std::string id = queue.front();
     queue.pop_front();
     const PowerPath& here = paths_.at(id);
     const Component* component = by_id_.at(id);
+    const auto entry = entered_by.find(id);
     for (const GraphEdge& e : Neighbours(id)) {
       const std::string& next = e.neighbour.component;
-      if (paths_.count(next) || !by_id_.count(next)) continue;
-      PowerPath path = here;
+      if (!by_id_.count(next)) continue;
+      if (paths_.count(next)) {
+        // reached before by another connection: this one closes a loop
+        if (entry == entered_by.end() || entry->second != e.connection) {
+          const auto next_entry = entered_by.find(next);
+          if (next_entry == entered_by.end() || next_entry->second != e.connection) loops.insert(e.connection);
+        }
+        continue;
+      }
+      PowerPath path;
       bool known = true;
+      path.speed_ratio = here.speed_ratio;
+      path.ratio_unknown = here.ratio_unknown;
+      path.pdu_port = here.pdu_port;
       // leaving `id` by e.port
       if (id != pdu_) path.speed_ratio *= PortSpeedFactor(*component, here.entry_port, e.port, &known);
       if (!known) path.ratio_unknown = true;
-      path.components.push_back(next);
-      path.entry_ports.push_back(e.neighbour.port);
+      path.previous = id;
+      path.depth = here.depth + 1;
       path.entry_port = e.neighbour.port;
       if (id == pdu_) path.pdu_port = e.port;
       const Component* n = by_id_.at(next);
       path.reversed = IsGearbox(n->type) && e.neighbour.port != "input";
       paths_[next] = std::move(path);
+      entered_by[next] = e.connection;
       order_.push_back(next);
       queue.push_back(next);
     }
   }
+  loop_connections_.assign(loops.begin(), loops.end());
+}
+
+std::vector<std::string> ComponentGraph::Route(std::string_view id) const {
+  std::vector<std::string> route;
+  const PowerPath* p = PathTo(id);
+  if (p == nullptr) return route;
+  route.emplace_back(id);
+  while (!p->previous.empty()) {
+    route.push_back(p->previous);
+    p = PathTo(p->previous);
+  }
+  std::reverse(route.begin(), route.end());
+  return route;
 }
 
 const std::vector<GraphEdge>& ComponentGraph::Neighbours(std::string_view id) const {
@@ -123,33 +150,49 @@ std::optional<double> ComponentGraph::SpeedRatioAtPort(std::string_view id, std:
   return p->speed_ratio * PortSpeedFactor(*by_id_.at(std::string(id)), p->entry_port, port);
 }
 
+std::string DescribeLoop(const ComponentGraph& graph, const Project& project, std::size_t connection) {
+  const Connection& k = project.connections.at(connection);
+  const std::vector<std::string> a = graph.Route(k.a.component), b = graph.Route(k.b.component);
+  std::size_t common = 0;  // shared start of both routes from the PDU
+  while (common < a.size() && common < b.size() && a[common] == b[common]) ++common;
+  std::vector<std::string> loop;
+  if (common > 0) loop.push_back(a[common - 1]);
+  for (std::size_t i = common; i < a.size(); ++i) loop.push_back(a[i]);
+  for (std::size_t i = b.size(); i-- > common;) loop.push_back(b[i]);
+  if (common > 0) loop.push_back(a[common - 1]);
+  std::string route;
+  for (std::size_t i = 0; i < loop.size() && i < 16; ++i) route += (i ? " -> '" : "'") + loop[i] + "'";
+  if (loop.size() > 16) route += " -> ... (" + std::to_string(loop.size()) + " in all)";
+  return "connection " + k.a.ToString() + " - " + k.b.ToString() + " closes a loop in the transmission (" + route +
+         "); a drive system is a tree from the PDU (it branches at gearboxes and never joins again): remove one "
+         "connection of the loop";
+}
+
 std::vector<std::vector<std::string>> ComponentGraph::Islands() const {
-  std::vector<std::vector<std::string>> islands;
-  std::set<std::string> seen;
+  // Flood fill from the PDU, then from each component not yet reached; every island is listed in
+  // project order. O(n log n): one pass to number the islands, one to list them.
+  std::map<std::string, std::size_t, std::less<>> island_of;
+  std::size_t count = 0;
   auto flood = [&](const std::string& start) {
-    std::vector<std::string> island;
     std::deque<std::string> queue = {start};
-    seen.insert(start);
+    island_of.emplace(start, count);
     while (!queue.empty()) {
       const std::string id = queue.front();
       queue.pop_front();
-      island.push_back(id);
       for (const GraphEdge& e : Neighbours(id)) {
         const std::string& next = e.neighbour.component;
-        if (!by_id_.count(next) || seen.count(next)) continue;
-        seen.insert(next);
+        if (!by_id_.count(next) || island_of.count(next)) continue;
+        island_of.emplace(next, count);
         queue.push_back(next);
       }
     }
-    // project order
-    std::vector<std::string> ordered;
-    for (const auto& c : *components_)
-      if (std::find(island.begin(), island.end(), c.id) != island.end()) ordered.push_back(c.id);
-    islands.push_back(std::move(ordered));
+    ++count;
   };
   if (!pdu_.empty()) flood(pdu_);
   for (const auto& c : *components_)
-    if (!seen.count(c.id)) flood(c.id);
+    if (!island_of.count(c.id)) flood(c.id);
+  std::vector<std::vector<std::string>> islands(count);
+  for (const auto& c : *components_) islands[island_of.at(c.id)].push_back(c.id);
   return islands;
 }
 

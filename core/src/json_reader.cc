@@ -1,5 +1,7 @@
 #include "json_reader.h"
 
+#include "highlift/core/utf8.h"
+
 #include <charconv>
 #include <cmath>
 #include <cstdint>
@@ -57,6 +59,9 @@ class Parser {
   Parser(std::string_view text, const std::string& file, LocatedJson& out) : text_(text), file_(file), out_(out) {}
 
   void ParseDocument() {
+    if (text_.substr(0, 3) == "\xEF\xBB\xBF")
+      Fail("the file starts with a UTF-8 byte-order mark (bytes EF BB BF); save it as UTF-8 without BOM "
+           "(most editors call this \"UTF-8\", not \"UTF-8 with BOM\")");
     SkipSpace();
     if (AtEnd()) Fail("the file is empty; a project file is one JSON object");
     out_.value = ParseValue("", 0);
@@ -89,6 +94,9 @@ class Parser {
 
   [[noreturn]] void Fail(const std::string& message) const { FailAt(Here(), message); }
 
+  static std::string Shown(char ch) { return ShowByte(ch); }
+  std::size_t Utf8Length() const { return Utf8SequenceLength(text_, pos_); }
+
   [[noreturn]] void FailAt(TextPosition at, const std::string& message) const {
     SourceLocation where;
     where.file = file_;
@@ -111,7 +119,7 @@ class Parser {
   void Expect(char ch, const char* context) {
     if (Peek() != ch) {
       if (AtEnd()) Fail(std::string("unexpected end of file; expected '") + ch + "' " + context);
-      Fail(std::string("expected '") + ch + "' " + context + ", found '" + Peek() + "'");
+      Fail(std::string("expected '") + ch + "' " + context + ", found " + Shown(Peek()));
     }
     Advance();
   }
@@ -129,7 +137,7 @@ class Parser {
     if (Literal("null")) return nullptr;
     if (AtEnd()) Fail("unexpected end of file; expected a value");
     if (ch == '\'') Fail("strings are written in double quotes (\"...\"), not single quotes");
-    Fail(std::string("unexpected character '") + ch + "'; expected a value (object, array, string, number, true, false or null)");
+    Fail("unexpected character " + Shown(ch) + "; expected a value (object, array, string, number, true, false or null)");
   }
 
   bool Literal(std::string_view word) {
@@ -154,6 +162,9 @@ class Parser {
       }
       const TextPosition key_position = Here();
       std::string key = ParseString();
+      for (const char c : key)
+        if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f)
+          FailAt(key_position, "a member name contains a control character (written as a \\u escape); remove it");
       const std::string member = pointer + "/" + EscapePointerToken(key);
       if (object.contains(key)) FailAt(key_position, "duplicate key '" + key + "' in the same object; give each key once");
       out_.keys[member] = key_position;
@@ -171,7 +182,7 @@ class Parser {
         return object;
       }
       if (AtEnd()) Fail("unexpected end of file; expected ',' or '}' after an object member");
-      Fail(std::string("expected ',' or '}' after an object member, found '") + Peek() + "'");
+      Fail("expected ',' or '}' after an object member, found " + Shown(Peek()));
     }
   }
 
@@ -197,7 +208,7 @@ class Parser {
         return array;
       }
       if (AtEnd()) Fail("unexpected end of file; expected ',' or ']' after an array element");
-      Fail(std::string("expected ',' or ']' after an array element, found '") + Peek() + "'");
+      Fail("expected ',' or ']' after an array element, found " + Shown(Peek()));
     }
   }
 
@@ -251,9 +262,16 @@ class Parser {
       }
       if (static_cast<unsigned char>(ch) < 0x20) Fail("control character in a string; write \\n or \\t");
       if (ch != '\\') {
-        // copy a whole code point
+        // copy a whole code point, which must be UTF-8 (JSON output of it would fail later)
+        const std::size_t n = Utf8Length();
+        if (n == 0)
+          Fail("invalid UTF-8 in a string (" + Shown(ch) +
+               "); save the file as UTF-8 (it may be Latin-1 or another encoding)");
+        if (text_.substr(pos_, n) == "\xEF\xBB\xBF")
+          Fail("a byte-order mark (U+FEFF) inside a string; remove it (an editor may have inserted it)");
         const std::size_t start = pos_;
         Advance();
+        if (pos_ - start != n) Fail("invalid UTF-8 in a string; save the file as UTF-8");
         s.append(text_.substr(start, pos_ - start));
         continue;
       }
@@ -282,6 +300,8 @@ class Parser {
             cp = 0x10000 + ((cp - 0xD800) << 10) + (low - 0xDC00);
           } else if (cp >= 0xDC00 && cp <= 0xDFFF) {
             Fail("invalid \\u escape: low surrogate without a high surrogate");
+          } else if (cp == 0xFEFF) {
+            Fail("a byte-order mark (\\uFEFF) inside a string; remove it");
           }
           AppendUtf8(s, cp);
           break;

@@ -1,5 +1,6 @@
 // Strict reading and writing of project files (docs/project-format.md).
 #include "highlift/core/project_io.h"
+#include "highlift/core/output_file.h"
 
 #include <unistd.h>
 
@@ -12,6 +13,7 @@
 #include <set>
 #include <sstream>
 
+#include "highlift/core/graph.h"
 #include "highlift/core/text_table.h"
 #include "json_reader.h"
 
@@ -953,16 +955,26 @@ json TableToJson(const Table& t) {
 Project ParseProject(const std::string& text, const std::string& file_name) {
   const detail::LocatedJson doc = detail::ParseLocatedJson(text, file_name);
   Reader reader(doc, file_name);
-  return reader.Read();
+  Project project = reader.Read();
+  // A closed loop breaks every analysis (sizing, lumped models, modes, peaks, the simulator's
+  // drive model): rejected here, like a duplicate id, so no command runs on it.
+  const ComponentGraph graph(project);
+  if (!graph.LoopConnections().empty()) {
+    const std::size_t first = graph.LoopConnections().front();
+    throw InputError(DescribeLoop(graph, project, first), project.connections[first].where);
+  }
+  return project;
 }
 
 Project LoadProject(const std::filesystem::path& file) {
+  SourceLocation where;
+  where.file = file.string();
+  std::error_code ec;
+  if (std::filesystem::is_directory(file, ec))
+    throw InputError("the project path is a directory; give the project's .json file", where);
   std::ifstream in(file, std::ios::binary);
-  if (!in) {
-    SourceLocation where;
-    where.file = file.string();
-    throw InputError("cannot open the project file; check the path", where);
-  }
+  if (!in) throw InputError("cannot open the project file; check the path", where);
+  RegisterInputFile(file);
   std::ostringstream text;
   text << in.rdbuf();
   return ParseProject(text.str(), file.string());
@@ -1061,38 +1073,7 @@ nlohmann::json ProjectToJson(const Project& project) {
 }
 
 void SaveProject(const Project& project, const std::filesystem::path& file) {
-  const std::string text = ProjectToJson(project).dump(2) + "\n";
-  std::filesystem::path temporary = file;
-  temporary += ".tmp." + std::to_string(::getpid());
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    if (!out) {
-      SourceLocation where;
-      where.file = file.string();
-      throw InputError("cannot write the project file (cannot create '" + temporary.string() +
-                           "'); check that the folder exists and is writable",
-                       where);
-    }
-    out << text;
-    out.flush();
-    if (!out) {
-      out.close();
-      std::error_code ignored;
-      std::filesystem::remove(temporary, ignored);
-      SourceLocation where;
-      where.file = file.string();
-      throw InputError("cannot write the project file (disk full?)", where);
-    }
-  }
-  std::error_code ec;
-  std::filesystem::rename(temporary, file, ec);
-  if (ec) {
-    std::error_code ignored;
-    std::filesystem::remove(temporary, ignored);
-    SourceLocation where;
-    where.file = file.string();
-    throw InputError("cannot replace the project file: " + ec.message(), where);
-  }
+  WriteOutputFile(file, ProjectToJson(project).dump(2) + "\n", "project file");
 }
 
 }  // namespace highlift

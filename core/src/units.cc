@@ -4,6 +4,7 @@
 
 #include <udunits2.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <memory>
@@ -182,6 +183,10 @@ ut_system* UnitSystem() {
   return system;
 }
 
+// The largest power of a base unit in a unit (m^24); UDUNITS-2 itself stops at 255, and no
+// physical quantity of this tool comes near.
+constexpr int kMaxUnitPower = 24;
+
 // Visitor collecting the base-unit exponents of a unit. Dimensionless basic units (radian,
 // steradian) contribute nothing. Never throws (C callbacks).
 struct DimensionCollector {
@@ -215,7 +220,9 @@ void AddBasic(const ut_unit* unit, int power, DimensionCollector* c) {
   const std::string s = symbol;
   for (std::size_t i = 0; i < kBaseSymbols.size(); ++i) {
     if (s == kBaseSymbols[i]) {
-      c->dimension.exponents[i] += power;
+      // saturate: ParseUnitLocked rejects powers beyond kMaxUnitPower, never overflows an int
+      const long sum = static_cast<long>(c->dimension.exponents[i]) + power;
+      c->dimension.exponents[i] = static_cast<int>(std::clamp(sum, -100000L, 100000L));
       return;
     }
   }
@@ -271,6 +278,13 @@ UnitConversion ParseUnitLocked(const std::string& unit) {
   DimensionCollector collector;
   if (ut_accept_visitor(parsed.get(), &kVisitor, &collector) != UT_SUCCESS || !collector.ok)
     throw InputError("unit '" + unit + "' is not a physical unit highlift can use (a time stamp or a logarithmic unit?)");
+  for (std::size_t i = 0; i < kBaseSymbols.size(); ++i) {
+    const long e = collector.dimension.exponents[i];
+    if (e > kMaxUnitPower || e < -kMaxUnitPower)
+      throw InputError("unit '" + unit + "': the power of " + kBaseSymbols[i] + " is " + std::to_string(e) +
+                       ", beyond what highlift handles (-" + std::to_string(kMaxUnitPower) + " to " +
+                       std::to_string(kMaxUnitPower) + "); check the exponents");
+  }
   UnitPtr si = SiUnit(system, collector.dimension);
   cv_converter* converter = ut_get_converter(parsed.get(), si.get());
   HIGHLIFT_CHECK(converter != nullptr, "UDUNITS-2 cannot convert '" + unit + "' to its SI unit");

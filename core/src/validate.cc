@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <map>
 #include <set>
 
 #include "highlift/core/graph.h"
@@ -61,12 +62,18 @@ bool IsAnchor(const std::string& type) {
 
 class Validator {
  public:
-  explicit Validator(const Project& project) : project_(project) {}
+  explicit Validator(const Project& project) : project_(project) {
+    // One lookup table (the first of duplicate ids): Project::FindComponent is a linear search,
+    // and calling it per component made validation quadratic in the component count.
+    for (const auto& c : project.components) by_id_.emplace(c.id, &c);
+    for (const auto& c : project.elements) by_id_.emplace(c.id, &c);
+  }
 
   ValidationReport Run() {
     CheckNetwork(project_.components, project_.connections, false);
     CheckNetwork(project_.elements, project_.element_connections, true);
     CheckPowerPath();
+    CheckGeometry();
     CheckElementIslands();
     CheckLoadCases();
     CheckScenarios();
@@ -232,23 +239,24 @@ class Validator {
       std::vector<std::string> quoted;
       for (const auto& id : island) quoted.push_back("'" + id + "'");
       for (const auto& id : island) {
-        const Component* c = project_.FindComponent(id);
+        const Component* c = Find(id);
         Add(Severity::kError, id, "",
             Describe(*c) + " is not connected to the PDU '" + graph.pdu() + "' (disconnected sub-system: " +
                 Join(quoted) + "); connect it to the transmission or remove it",
             c->where);
       }
     }
+    CheckLoops(graph);
     for (const auto& id : graph.ReachOrder()) {
       const PowerPath* path = graph.PathTo(id);
-      const Component* c = project_.FindComponent(id);
+      const Component* c = Find(id);
       if ((c->type == "system_torque_limiter" || c->type == "station_torque_limiter") && path->entry_port == "output")
         Add(Severity::kWarning, id, "output",
             Describe(*c) + ": reached from the PDU through its port 'output'; its extend and retract lock-out torques "
                            "refer to power flowing from 'input' to 'output', so swap the connections of its ports",
             c->where);
       if (!path->reversed) continue;
-      const std::string previous = path->components.size() >= 2 ? path->components[path->components.size() - 2] : "";
+      const std::string& previous = path->previous;
       Add(Severity::kError, id, path->entry_port,
           Describe(*c) + ": inconsistent gear-ratio convention: the gearbox is reached from the PDU through its port '" +
               path->entry_port + "' (from '" + previous +
@@ -258,19 +266,45 @@ class Validator {
     }
   }
 
+  // A drive transmission is a tree from the PDU: a connection back to a component already
+  // reached (a PDU output through a branch gearbox to its other output) closes a loop, which no
+  // sizing, lumped model or mode analysis can handle.
+  void CheckLoops(const ComponentGraph& graph) {
+    for (const std::size_t index : graph.LoopConnections()) {
+      const Connection& k = project_.connections[index];
+      Add(Severity::kError, k.a.component, k.a.port, DescribeLoop(graph, project_, index), k.where);
+    }
+  }
+
+  // Geometry a parameter's own range cannot see ------------------------------------------------
+  void CheckGeometry() {
+    for (const auto& c : project_.components) {
+      if (c.type != "torque_shaft") continue;
+      const auto outer = c.parameters.find("outer_diameter"), wall = c.parameters.find("wall_thickness");
+      if (outer == c.parameters.end() || wall == c.parameters.end() || !outer->second.nominal || !wall->second.nominal)
+        continue;
+      const double D = *outer->second.nominal, t = *wall->second.nominal;
+      if (!(2 * t > D)) continue;
+      Add(Severity::kError, c.id, "",
+          Describe(c) + ": wall_thickness " + FormatNumber(t * 1e3, 6) + " mm is more than the radius (outer_diameter " +
+              FormatNumber(D * 1e3, 6) + " mm / 2); give wall_thickness <= outer_diameter / 2 (equal: a solid shaft)",
+          wall->second.where.empty() ? c.where : wall->second.where);
+    }
+  }
+
   void CheckElementIslands() {
     if (project_.elements.empty()) return;
     const ComponentGraph graph = ComponentGraph::Elements(project_);
     for (const auto& island : graph.Islands()) {
       bool anchored = false;
       for (const auto& id : island) {
-        const Component* c = project_.FindComponent(id);
+        const Component* c = Find(id);
         if (c && IsAnchor(c->type)) anchored = true;
       }
       if (anchored) continue;
       std::vector<std::string> quoted;
       for (const auto& id : island) quoted.push_back("'" + id + "'");
-      const Component* first = project_.FindComponent(island.front());
+      const Component* first = Find(island.front());
       Add(Severity::kWarning, island.front(), "",
           "element network island " + Join(quoted) +
               " has no Fixed element and no source; it floats freely (add a Fixed, Speed or Torque element, or "
@@ -290,7 +324,7 @@ class Validator {
   void CheckLoadCases() {
     for (const auto& lc : project_.load_cases) {
       for (const auto& [id, table] : lc.actuator_loads) {
-        const Component* c = project_.FindComponent(id);
+        const Component* c = Find(id);
         if (c == nullptr) {
           Add(Severity::kError, id, "",
               "load case '" + lc.name + "': actuator load for unknown component '" + id + "'" +
@@ -309,7 +343,7 @@ class Validator {
   void CheckReference(const Scenario& s, const std::optional<std::string>& id, const std::string& what,
                       const std::vector<std::string>& allowed_types) {
     if (!id) return;
-    const Component* c = project_.FindComponent(*id);
+    const Component* c = Find(*id);
     if (c == nullptr) {
       Add(Severity::kError, *id, "",
           "scenario '" + s.name + "': " + what + " of unknown component '" + *id + "'" + DidYouMean(*id, ComponentIds()),
@@ -349,7 +383,13 @@ class Validator {
     }
   }
 
+  const Component* Find(std::string_view id) const {
+    const auto it = by_id_.find(id);
+    return it == by_id_.end() ? nullptr : it->second;
+  }
+
   const Project& project_;
+  std::map<std::string, const Component*, std::less<>> by_id_;
   ValidationReport report_;
 };
 

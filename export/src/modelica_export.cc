@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "highlift/core/error.h"
+#include "highlift/core/output_file.h"
 #include "highlift/export/modelica.h"
 #include "writers.h"
 
@@ -76,20 +77,12 @@ std::string ModelNameFromProject(const std::string& project_name) {
 }
 
 void WriteFileAtomically(const std::filesystem::path& path, const std::string& content) {
-  std::filesystem::create_directories(path.parent_path());
-  std::filesystem::path tmp = path;
-  tmp += ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out)
-      throw InputError("cannot write '" + tmp.string() + "': check that the output folder is writable");
-    out << content;
-    out.close();
-    if (!out) throw InputError("writing '" + tmp.string() + "' failed: check the free disk space");
-  }
   std::error_code ec;
-  std::filesystem::rename(tmp, path, ec);
-  if (ec) throw InputError("cannot rename '" + tmp.string() + "' to '" + path.string() + "': " + ec.message());
+  std::filesystem::create_directories(path.parent_path(), ec);
+  if (ec)
+    throw InputError("cannot create the output folder '" + path.parent_path().string() + "': " + ec.message() +
+                     "; check that its parent exists and is writable");
+  WriteOutputFile(path, content, "Modelica file");
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <optional>
+#include <sstream>
 #include <unordered_map>
 
 #include "highlift/core/units.h"
@@ -96,35 +97,119 @@ struct Token {
 bool IsNameStart(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
 bool IsNameChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.'; }
 
+/// An expression node with its physical dimension, when known: a constant with a unit, a
+/// parameter with a unit, and what the operators make of them. A bare number or a parameter
+/// without a unit has no known dimension and matches anything.
+struct Typed {
+  ExprId id;
+  std::optional<Dimension> dimension;
+  std::size_t pos = 0;  ///< where the expression starts (for messages)
+  std::size_t len = 1;
+  int height = 1;       ///< longest operand chain below this node (a + b + c: 3)
+};
+
+std::string DimensionText(const Dimension& d) {
+  const std::string name = DescribeDimension(d);
+  const std::string exponents = d.ToString();
+  return name == exponents ? "dimension " + exponents : "a " + name + " (" + exponents + ")";
+}
+
 class Parser {
  public:
   Parser(Network& net, std::string_view text, const std::string& context, const SourceLocation& where,
-         NameResolver resolve)
-      : net_(net), text_(text), context_(context), where_(where), resolve_(std::move(resolve)) {
+         NameResolver resolve, bool check_dimensions)
+      : net_(net), text_(text), context_(context), where_(where), resolve_(std::move(resolve)),
+        check_dimensions_(check_dimensions) {
     Lex();
   }
 
   ParsedConstraint Constraint() {
     ParsedConstraint pc;
-    pc.lhs = Expr();
+    const Typed lhs = Expr();
     const Token& t = Peek();
     if (t.kind == Tok::kEq) pc.relation = Relation::kEqual;
     else if (t.kind == Tok::kLe) pc.relation = Relation::kLessEqual;
     else if (t.kind == Tok::kGe) pc.relation = Relation::kGreaterEqual;
     else Fail(t, "expected '==', '<=' or '>=' here", "write a relation such as 'a <= b'");
+    const Token& relation = t;
     ++at_;
-    pc.rhs = Expr();
+    const Typed rhs = Expr();
     ExpectEnd();
+    Same(lhs, rhs, relation, "compares");
+    pc.lhs = lhs.id;
+    pc.rhs = rhs.id;
     return pc;
   }
 
   ExprId ExpressionOnly() {
-    ExprId e = Expr();
+    ExprId e = Expr().id;
     ExpectEnd();
     return e;
   }
 
  private:
+  /// Nesting limit: parentheses, unary signs, powers and function calls each nest one level; the
+  /// parser and every later walk of the expression recurse once per level.
+  static constexpr int kMaxDepth = 200;
+  static constexpr int kMaxHeight = 5000;  ///< operands chained in one expression tree
+  struct DepthGuard {
+    Parser& p;
+    DepthGuard(Parser& parser, const Token& at) : p(parser) {
+      if (++p.depth_ > kMaxDepth)
+        p.Fail(at, "the expression is nested more than " + std::to_string(kMaxDepth) + " levels deep",
+               "simplify it (remove redundant parentheses, signs or nested functions)");
+    }
+    ~DepthGuard() { --p.depth_; }
+  };
+
+  /// The two sides of + - min max or a relation must have the same dimension when both are known.
+  void Same(const Typed& a, const Typed& b, const Token& op, const std::string& verb) {
+    if (!check_dimensions_ || !a.dimension || !b.dimension || *a.dimension == *b.dimension) return;
+    Fail(op, "'" + std::string(text_.substr(op.pos, op.len)) + "' " + verb + " " + DimensionText(*a.dimension) +
+                 " with " + DimensionText(*b.dimension),
+         "give both sides the same kind of quantity (check the units of the constants)");
+  }
+  static std::optional<Dimension> Product(const Typed& a, const Typed& b, bool divide) {
+    if (!a.dimension || !b.dimension) return std::nullopt;
+    return divide ? *a.dimension / *b.dimension : *a.dimension * *b.dimension;
+  }
+  /// The node with its dimension, text span and height; `a`, `b` are its operands.
+  Typed Make(ExprId id, std::optional<Dimension> d, std::size_t pos, std::size_t end, const Typed* a = nullptr,
+             const Typed* b = nullptr) {
+    const int height = 1 + std::max(a ? a->height : 0, b ? b->height : 0);
+    // Later walks of the expression (text, evaluation, explanations) recurse once per level: a
+    // chain of 10^5 sums would overflow their stack.
+    if (height > kMaxHeight)
+      Fail(pos, end > pos ? end - pos : 1,
+           "the expression is a chain of more than " + std::to_string(kMaxHeight) + " operations",
+           "split it into several requirements");
+    return Typed{id, d, pos, end > pos ? end - pos : 1, height};
+  }
+  std::size_t End() const { return at_ > 0 ? tokens_[at_ - 1].pos + tokens_[at_ - 1].len : 0; }
+
+  /// The value of a constant subexpression (numbers, signs and + - * / of numbers), if it is one.
+  std::optional<Interval> ConstantValue(ExprId e, int depth = 0) const {
+    if (depth > kMaxDepth) return std::nullopt;
+    const ExprNode& n = net_.node(e);
+    switch (n.op) {
+      case Op::kConst: return n.value;
+      case Op::kNeg: {
+        const auto a = ConstantValue(ExprId{n.a}, depth + 1);
+        if (a) return -*a;
+        return std::nullopt;
+      }
+      case Op::kAdd:
+      case Op::kSub:
+      case Op::kMul: {
+        const auto a = ConstantValue(ExprId{n.a}, depth + 1);
+        const auto b = ConstantValue(ExprId{n.b}, depth + 1);
+        if (!a || !b) return std::nullopt;
+        return n.op == Op::kAdd ? *a + *b : n.op == Op::kSub ? *a - *b : *a * *b;
+      }
+      default: return std::nullopt;
+    }
+  }
+
   [[noreturn]] void Fail(std::size_t pos, std::size_t len, const std::string& problem, const std::string& remedy) {
     std::string msg = context_ + ": " + problem + " at column " + std::to_string(pos + 1) + "\n  " +
                       std::string(text_) + "\n  " + std::string(pos, ' ') + "^" +
@@ -263,43 +348,64 @@ class Parser {
     }
   }
 
-  ExprId Expr() {
-    ExprId e;
+  Typed Expr() {
+    const DepthGuard guard(*this, Peek());
+    const std::size_t start = Peek().pos;
+    Typed e;
     if (Peek().kind == Tok::kMinus) {
       ++at_;
-      e = net_.Unary(Op::kNeg, Term());
+      const Typed t = Term();
+      e = Make(net_.Unary(Op::kNeg, t.id), t.dimension, start, End(), &t);
     } else {
       if (Peek().kind == Tok::kPlus) ++at_;
       e = Term();
     }
     while (Peek().kind == Tok::kPlus || Peek().kind == Tok::kMinus) {
-      const bool plus = Next().kind == Tok::kPlus;
-      ExprId r = Term();
-      e = plus ? net_.Add(e, r) : net_.Sub(e, r);
+      const Token& op = Next();
+      const bool plus = op.kind == Tok::kPlus;
+      const Typed r = Term();
+      Same(e, r, op, plus ? "adds" : "subtracts");
+      e = Make(plus ? net_.Add(e.id, r.id) : net_.Sub(e.id, r.id), e.dimension ? e.dimension : r.dimension, start,
+               End(), &e, &r);
     }
     return e;
   }
 
-  ExprId Term() {
-    ExprId e = Factor();
+  Typed Term() {
+    const std::size_t start = Peek().pos;
+    Typed e = Factor();
     while (Peek().kind == Tok::kStar || Peek().kind == Tok::kSlash) {
       const bool mul = Next().kind == Tok::kStar;
-      ExprId r = Factor();
-      e = mul ? net_.Mul(e, r) : net_.Div(e, r);
+      const Typed r = Factor();
+      if (!mul) {
+        const auto divisor = ConstantValue(r.id);
+        if (divisor && divisor->lower() == 0.0 && divisor->upper() == 0.0)
+          Fail(r.pos, r.len, "division by zero", "the divisor is the constant 0; check the expression");
+      }
+      e = Make(mul ? net_.Mul(e.id, r.id) : net_.Div(e.id, r.id), Product(e, r, !mul), start, End(), &e, &r);
     }
     return e;
   }
 
-  ExprId Factor() {
+  Typed Factor() {
+    const DepthGuard guard(*this, Peek());
+    const std::size_t start = Peek().pos;
     if (Peek().kind == Tok::kMinus) {
       ++at_;
-      return net_.Unary(Op::kNeg, Factor());
+      const Typed f = Factor();
+      return Make(net_.Unary(Op::kNeg, f.id), f.dimension, start, End(), &f);
     }
-    ExprId base = Primary();
-    if (Peek().kind != Tok::kCaret) return base;
+    const Typed typed_base = Primary();
+    if (Peek().kind != Tok::kCaret) return typed_base;
+    const ExprId base = typed_base.id;
     ++at_;
     const Token& exp_tok = Peek();
-    ExprId exponent = Factor();
+    const Typed typed_exponent = Factor();
+    const ExprId exponent = typed_exponent.id;
+    if (check_dimensions_ && typed_exponent.dimension && *typed_exponent.dimension != Dimension{})
+      Fail(typed_exponent.pos, typed_exponent.len,
+           "the exponent is " + DimensionText(*typed_exponent.dimension) + ", not a number",
+           "an exponent has no unit");
     const ExprNode& en = net_.node(exponent);
     // A constant exponent is the double nearest the number written (x^0.3 is x^fl(0.3)).
     std::optional<double> constant;
@@ -314,13 +420,20 @@ class Parser {
     if (en.op == Op::kNeg && net_.node(ExprId{en.a}).op == Op::kConst) {
       if (const auto v = nearest(en.a)) constant = -*v;
     }
+    const std::size_t end = End();
     if (constant) {
       const double p = *constant;
       if (!std::isfinite(p)) Fail(exp_tok, "the exponent is not finite", "");
-      if (p == std::floor(p) && std::fabs(p) <= 64) return net_.PowInt(base, static_cast<int>(p));
-      return net_.PowReal(base, p);
+      if (p == std::floor(p) && std::fabs(p) <= 64) {
+        std::optional<Dimension> d;
+        if (typed_base.dimension) d = typed_base.dimension->pow(static_cast<int>(p));
+        return Make(net_.PowInt(base, static_cast<int>(p)), d, start, end, &typed_base);
+      }
+      return Make(net_.PowReal(base, p), std::nullopt, start, end, &typed_base);
     }
-    return net_.Unary(Op::kExp, net_.Mul(exponent, net_.Unary(Op::kLog, base)));
+    const Typed log_base = Make(net_.Unary(Op::kLog, base), std::nullopt, start, end, &typed_base);
+    const Typed product = Make(net_.Mul(exponent, log_base.id), std::nullopt, start, end, &typed_exponent, &log_base);
+    return Make(net_.Unary(Op::kExp, product.id), std::nullopt, start, end, &product);
   }
 
   /// A number with an optional sign, enclosed.
@@ -338,11 +451,13 @@ class Parser {
 
   /// The constant converted to SI when a unit follows (outward: the result encloses the exact
   /// conversion of the decimal value).
-  Interval ApplyUnit(const Interval& value) {
+  Interval ApplyUnit(const Interval& value, std::optional<Dimension>* dimension = nullptr) {
     if (Peek().kind != Tok::kUnit) return value;
     const Token& u = Next();
     try {
-      return ConstantToSI(value, u.text);
+      const Interval si = ConstantToSI(value, u.text);
+      if (dimension) *dimension = ParseUnit(u.text).dimension;
+      return si;
     } catch (const InputError& e) {
       Fail(u, "unknown unit '" + u.text + "'",
            "write a unit such as mm, N*m, N*m/rad, kg*m^2, rpm or GPa, with spaces around any "
@@ -350,15 +465,19 @@ class Parser {
     }
   }
 
-  ExprId Primary() {
+  Typed Primary() {
     const Token& t = Peek();
     switch (t.kind) {
       case Tok::kNumber: {
         ++at_;
-        if (Peek().kind == Tok::kUnit) return net_.Const(ApplyUnit(t.enclosure));
+        if (Peek().kind == Tok::kUnit) {
+          std::optional<Dimension> d;
+          const Interval value = ApplyUnit(t.enclosure, &d);
+          return Make(net_.Const(value), d, t.pos, End());
+        }
         const ExprId e = net_.Const(t.enclosure);
         nearest_[e.value] = t.number;
-        return e;
+        return Make(e, std::nullopt, t.pos, End());
       }
       case Tok::kLBracket: {
         ++at_;
@@ -370,13 +489,18 @@ class Parser {
         if (!(lo.lower() <= hi.upper())) {
           Fail(t.pos, close.pos + 1 - t.pos, "interval constant has lo > hi", "write [lo, hi] with lo <= hi");
         }
-        return net_.Const(ApplyUnit(Interval(lo.lower(), hi.upper(), true)));
+        std::optional<Dimension> d;
+        const Interval value = ApplyUnit(Interval(lo.lower(), hi.upper(), true), &d);
+        return Make(net_.Const(value), d, t.pos, End());
       }
       case Tok::kLParen: {
         ++at_;
-        ExprId e = Expr();
+        const Typed e = Expr();
         Expect(Tok::kRParen, "')'");
-        return e;
+        Typed inner = e;
+        inner.pos = t.pos;
+        inner.len = End() - t.pos;
+        return inner;
       }
       case Tok::kName: {
         ++at_;
@@ -392,7 +516,7 @@ class Parser {
           }
           Fail(t, "unknown parameter '" + t.text + "'", remedy);
         }
-        return net_.Var(v);
+        return Make(net_.Var(v), VariableDimension(v), t.pos, End());
       }
       case Tok::kUnit:
         Fail(t, "a unit '" + t.text + "' must follow a number", "");
@@ -403,7 +527,18 @@ class Parser {
     }
   }
 
-  ExprId Call(const Token& name) {
+  std::optional<Dimension> VariableDimension(VariableId v) const {
+    if (!check_dimensions_) return std::nullopt;
+    const std::string& unit = net_.variable(v).unit;
+    if (unit.empty()) return std::nullopt;
+    try {
+      return ParseUnit(unit).dimension;
+    } catch (const InputError&) {
+      return std::nullopt;
+    }
+  }
+
+  Typed Call(const Token& name) {
     static const std::vector<std::string> kUnary = {"sqrt", "exp", "log", "abs", "sin", "cos"};
     static const std::vector<std::string> kBinary = {"min", "max"};
     const bool unary = std::find(kUnary.begin(), kUnary.end(), name.text) != kUnary.end();
@@ -416,25 +551,63 @@ class Parser {
            close.empty() ? "functions are sqrt exp log abs min max sin cos" : "did you mean '" + close[0] + "'?");
     }
     Expect(Tok::kLParen, "'('");
-    std::vector<ExprId> args{Expr()};
+    std::vector<Typed> args{Expr()};
     while (Peek().kind == Tok::kComma) {
-      ++at_;
+      const Token& comma = Next();
       args.push_back(Expr());
+      if (binary) Same(args.front(), args.back(), comma, "mixes");
     }
     const Token& close = Peek();
     Expect(Tok::kRParen, "')'");
+    const std::size_t end = End();
     if (unary && args.size() != 1) {
       Fail(name.pos, close.pos + 1 - name.pos, name.text + "() takes one argument, got " + std::to_string(args.size()), "");
     }
     if (binary) {
       if (args.size() < 2) Fail(name.pos, close.pos + 1 - name.pos, name.text + "() takes at least two arguments", "");
-      ExprId e = args[0];
-      for (std::size_t i = 1; i < args.size(); ++i) e = net_.Binary(name.text == "min" ? Op::kMin : Op::kMax, e, args[i]);
+      Typed e = args[0];
+      for (std::size_t i = 1; i < args.size(); ++i)
+        e = Make(net_.Binary(name.text == "min" ? Op::kMin : Op::kMax, e.id, args[i].id),
+                 e.dimension ? e.dimension : args[i].dimension, name.pos, end, &e, &args[i]);
       return e;
     }
     static const Op kOps[] = {Op::kSqrt, Op::kExp, Op::kLog, Op::kAbs, Op::kSin, Op::kCos};
     const auto idx = std::find(kUnary.begin(), kUnary.end(), name.text) - kUnary.begin();
-    return net_.Unary(kOps[idx], args[0]);
+    const Op op = kOps[idx];
+    const Typed& arg = args[0];
+    // A constant argument outside the function's domain is a mistake in the text, not a
+    // violated requirement: log(-1), log(0), sqrt(-4).
+    if (const auto value = ConstantValue(arg.id)) {
+      if (op == Op::kLog && !(value->upper() > 0))
+        Fail(arg.pos, arg.len, "log() of the constant " + FormatConstant(*value) + ", which is not positive",
+             "log is defined for positive arguments only");
+      if (op == Op::kSqrt && !(value->upper() >= 0))
+        Fail(arg.pos, arg.len, "sqrt() of the negative constant " + FormatConstant(*value),
+             "sqrt is defined for arguments >= 0 only");
+    }
+    std::optional<Dimension> d;
+    if (op == Op::kAbs) d = arg.dimension;
+    if (op == Op::kSqrt && arg.dimension) {
+      Dimension half;
+      bool even = true;
+      for (std::size_t i = 0; i < half.exponents.size(); ++i) {
+        even = even && arg.dimension->exponents[i] % 2 == 0;
+        half.exponents[i] = arg.dimension->exponents[i] / 2;
+      }
+      if (even) d = half;
+    }
+    if (check_dimensions_ && (op == Op::kExp || op == Op::kLog) && arg.dimension && *arg.dimension != Dimension{})
+      Fail(arg.pos, arg.len, name.text + "() of " + DimensionText(*arg.dimension),
+           "take " + name.text + "() of a ratio of quantities, which has no unit");
+    return Make(net_.Unary(op, arg.id), d, name.pos, end, &arg);
+  }
+
+  static std::string FormatConstant(const Interval& v) {
+    std::ostringstream s;
+    s.precision(6);
+    if (v.lower() == v.upper()) s << v.lower();
+    else s << "[" << v.lower() << ", " << v.upper() << "]";
+    return s.str();
   }
 
   Network& net_;
@@ -445,19 +618,21 @@ class Parser {
   std::vector<Token> tokens_;
   std::size_t at_ = 0;
   std::unordered_map<int, double> nearest_;  ///< constant node of a number -> its nearest double
+  bool check_dimensions_ = false;
+  int depth_ = 0;
 };
 
 }  // namespace
 
 ParsedConstraint ParseConstraint(Network& network, std::string_view text, const std::string& context,
-                                 const SourceLocation& where, NameResolver resolve) {
-  Parser p(network, text, context, where, std::move(resolve));
+                                 const SourceLocation& where, NameResolver resolve, bool check_dimensions) {
+  Parser p(network, text, context, where, std::move(resolve), check_dimensions);
   return p.Constraint();
 }
 
 ExprId ParseExpression(Network& network, std::string_view text, const std::string& context,
                        const SourceLocation& where, NameResolver resolve) {
-  Parser p(network, text, context, where, std::move(resolve));
+  Parser p(network, text, context, where, std::move(resolve), false);
   return p.ExpressionOnly();
 }
 
@@ -465,7 +640,9 @@ ConstraintId AddConstraintText(Network& network, std::string_view text, Constrai
                                const SourceLocation& where, NameResolver resolve) {
   const std::string context = (info.role == ConstraintRole::kRequirement ? "requirement '" : "constraint '") +
                               info.label + "'";
-  const ParsedConstraint pc = ParseConstraint(network, text, context, where, std::move(resolve));
+  // Requirements are the user's text: their units are checked (physics constraints are ours).
+  const ParsedConstraint pc =
+      ParseConstraint(network, text, context, where, std::move(resolve), info.role == ConstraintRole::kRequirement);
   if (info.source.empty()) info.source = std::string(text);
   return network.AddConstraint(pc.lhs, pc.relation, pc.rhs, std::move(info));
 }

@@ -1,8 +1,8 @@
-#include <cstdio>
 #include <fmt/format.h>
 
 #include "highlift/core/catalogue.h"
 #include "highlift/core/error.h"
+#include "highlift/core/output_file.h"
 #include "highlift/sim/simulator.h"
 
 namespace highlift::sim {
@@ -11,8 +11,10 @@ struct CsvSink::Impl {
   std::filesystem::path file;
   std::vector<std::string> signals;
   std::vector<int> columns;
-  std::FILE* out = nullptr;
+  std::unique_ptr<OutputFile> out;
   std::string line;
+  double last_time = 0.0;
+  long rows = 0;
 };
 
 CsvSink::CsvSink(const std::filesystem::path& file, std::vector<std::string> signals)
@@ -21,7 +23,8 @@ CsvSink::CsvSink(const std::filesystem::path& file, std::vector<std::string> sig
   impl_->signals = std::move(signals);
 }
 
-CsvSink::~CsvSink() { End(); }
+// Without End() (an exception left the run) the temporary file is removed: the old file stays.
+CsvSink::~CsvSink() = default;
 
 void CsvSink::Begin(const std::vector<std::string>& columns) {
   impl_->columns.clear();
@@ -43,31 +46,39 @@ void CsvSink::Begin(const std::vector<std::string>& columns) {
       impl_->columns.push_back(found);
     }
   }
-  impl_->out = std::fopen(impl_->file.string().c_str(), "w");
-  if (impl_->out == nullptr)
-    throw InputError("cannot write '" + impl_->file.string() +
-                     "'; check that the folder exists and is writable");
+  impl_->out = std::make_unique<OutputFile>(impl_->file, "results file");
   std::string header = "\"time\"";
   for (int c : impl_->columns) header += ",\"" + columns[c] + "\"";
   header += "\n";
-  std::fputs(header.c_str(), impl_->out);
+  impl_->out->Write(header);
 }
 
 void CsvSink::Row(double time, const std::vector<double>& values) {
-  if (impl_->out == nullptr) return;
+  if (!impl_->out) return;
   std::string& line = impl_->line;
   line.clear();
   fmt::format_to(std::back_inserter(line), "{:.17g}", time);
   for (int c : impl_->columns) fmt::format_to(std::back_inserter(line), ",{:.17g}", values[c]);
   line += '\n';
-  std::fputs(line.c_str(), impl_->out);
+  impl_->out->Write(line);  // throws InputError on a failed write (disk full)
+  impl_->last_time = time;
+  ++impl_->rows;
 }
 
 void CsvSink::End() {
-  if (impl_ && impl_->out != nullptr) {
-    std::fclose(impl_->out);
-    impl_->out = nullptr;
+  if (!impl_ || !impl_->out || impl_->out->committed()) return;
+  if (!InterruptRequested() || impl_->out->is_stdout()) {
+    impl_->out->Commit();
+    return;
   }
+  // Interrupted: the rows so far go to FILE.partial with a trailer line; FILE stays unchanged.
+  impl_->out->Write(fmt::format("# partial output: interrupted by signal {} after {} rows, at t = {:.17g} s; "
+                                "the run did not reach its stop time\n",
+                                InterruptSignal(), impl_->rows, impl_->last_time));
+  std::filesystem::path partial = impl_->file;
+  partial += ".partial";
+  impl_->out->CommitAs(partial);
+  SetPartialOutputFile(partial.string());
 }
 
 }  // namespace highlift::sim

@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "highlift/core/error.h"
+#include "highlift/core/output_file.h"
 #include "sundials_compat.h"
 #include "fast_kernels.h"
 #include "system.h"
@@ -40,6 +41,7 @@ std::string ToString(SimulationStatus status) {
     case SimulationStatus::kSolverFailure: return "solver_failure";
     case SimulationStatus::kModelError: return "model_error";
     case SimulationStatus::kTooManyEvents: return "too_many_events";
+    case SimulationStatus::kInterrupted: return "interrupted";
   }
   return "unknown";
 }
@@ -318,6 +320,9 @@ class Cvode {
 
 SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& sink,
                                 ProgressCallback progress, void* progress_user) {
+  // SIGINT/SIGTERM set InterruptRequested(): the step loop below stops after the current step
+  // (an interruption during the set-up stops it before the first step) and the sink gets End().
+  const InterruptibleScope interruptible;
   options.Validate();
   const auto wall_start = std::chrono::steady_clock::now();
   System& sys = impl_->system;
@@ -615,7 +620,10 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
   // One step at a time (CV_ONE_STEP): every step end is sampled; the output points it passed
   // are interpolated (CVodeGetDky); time events are stop times, state events roots.
   const double t0 = options.start_time, t_end = options.stop_time, dt = options.output_interval;
-  const double eps_t = 1e-12 * std::max(1.0, std::abs(t_end));
+  // Time tolerance: below the output interval, so that distinct output points stay distinct
+  // (a tolerance above dt skipped points and later asked CVodeGetDky for a time before the
+  // step: CV_BAD_T on long runs with tiny intervals).
+  const double eps_t = std::min(1e-12 * std::max(1.0, std::abs(t_end)), 0.25 * dt);
   long k = 1;  // next output point t0 + k*dt
   auto next_output = [&] { return std::min(t0 + static_cast<double>(k) * dt, t_end); };
   N_Vector interpolated = N_VClone(cv.y);
@@ -664,6 +672,11 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
     return interpolate(tb);
   };
   while (t < t_end - eps_t) {
+    if (InterruptRequested()) {
+      fail(SimulationStatus::kInterrupted,
+           "interrupted by signal " + std::to_string(InterruptSignal()) + " at t = " + std::to_string(t) + " s", t);
+      break;
+    }
     const double t_event = sys.NextTimeEvent(t);
     const bool event_ahead = t_event <= t_end + eps_t;
     const double stop = event_ahead ? std::min(t_event, t_end) : t_end;

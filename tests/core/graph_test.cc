@@ -37,7 +37,9 @@ TEST(ComponentGraph, WalksFromThePduBreadthFirst) {
   EXPECT_EQ(g.ReachOrder(), order);
   const PowerPath* path = g.PathTo("gra");
   ASSERT_NE(path, nullptr);
-  EXPECT_EQ(path->components, (std::vector<std::string>{"pdu", "stl", "shaft_0", "rgb", "shaft_1", "sgb", "gra"}));
+  EXPECT_EQ(g.Route("gra"), (std::vector<std::string>{"pdu", "stl", "shaft_0", "rgb", "shaft_1", "sgb", "gra"}));
+  EXPECT_EQ(path->previous, "sgb");
+  EXPECT_EQ(path->depth, 6u);
   EXPECT_EQ(path->entry_port, "input");
   EXPECT_EQ(path->pdu_port, "left");
   EXPECT_FALSE(path->reversed);

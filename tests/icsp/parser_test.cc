@@ -141,5 +141,93 @@ TEST(Parser, PowersWithIntegerRealAndVariableExponents) {
   EXPECT_EQ(net.node(ParseExpression(net, "x^p", "t")).op, Op::kExp);
 }
 
+
+// --- hostile input (issue 19) ------------------------------------------------------------------
+
+Network WithUnits() {
+  Network net;
+  net.AddVariable("pdu.max_output_torque", Interval(100, 900), "N*m");
+  net.AddVariable("gra.ratio", Interval(100, 250), "");
+  return net;
+}
+
+TEST(ParserLimits, DeepNestingIsAnInputErrorNotACrash) {
+  // Was: SIGSEGV at 10^5 levels.
+  const std::size_t n = 100000;
+  for (const std::string& text : {std::string(n, '(') + "gra.ratio" + std::string(n, ')') + " >= 1",
+                                  [&] {
+                                    std::string t;
+                                    for (std::size_t i = 0; i < n; ++i) t += "- ";
+                                    return t + "gra.ratio >= 1";
+                                  }(),
+                                  [&] {
+                                    std::string t;
+                                    for (std::size_t i = 0; i < n; ++i) t += "abs(";
+                                    return t + "gra.ratio" + std::string(n, ')') + " >= 1";
+                                  }(),
+                                  [&] {
+                                    std::string t = "gra.ratio";
+                                    for (std::size_t i = 0; i < n; ++i) t += "^1";
+                                    return t + " >= 1";
+                                  }()}) {
+    Network net = WithUnits();
+    const std::string message = ErrorOf(net, text);
+    EXPECT_NE(message.find("nested more than 200 levels deep"), std::string::npos) << message.substr(0, 200);
+    EXPECT_LT(message.size(), 10000u);  // the 100 kB text is cut in the message
+  }
+  Network net = WithUnits();
+  EXPECT_EQ(ErrorOf(net, std::string(150, '(') + "gra.ratio" + std::string(150, ')') + " >= 1"), "");
+}
+
+TEST(ParserLimits, LongChainsAreCutBeforeLaterWalksRecurseTooDeep) {
+  std::string chain = "gra.ratio";
+  for (int i = 0; i < 100000; ++i) chain += " + gra.ratio";
+  Network net = WithUnits();
+  EXPECT_NE(ErrorOf(net, chain + " >= 1").find("a chain of more than 5000 operations"), std::string::npos);
+  std::string ok = "gra.ratio";
+  for (int i = 0; i < 3000; ++i) ok += " + " + std::to_string(i);
+  Network net2 = WithUnits();
+  ASSERT_EQ(ErrorOf(net2, ok + " >= 1"), "");
+  EXPECT_FALSE(net2.ExprText(ExprId{net2.constraint(ConstraintId{0}).root}).empty());
+}
+
+TEST(ParserInputErrors, DivisionByTheConstantZero) {
+  Network net = WithUnits();
+  const std::string message = ErrorOf(net, "pdu.max_output_torque >= 1 N*m / 0");
+  EXPECT_NE(message.find("division by zero at column 34"), std::string::npos) << message;
+  EXPECT_NE(ErrorOf(net, "gra.ratio / (2 - 2) >= 1").find("division by zero"), std::string::npos);
+  EXPECT_EQ(ErrorOf(net, "gra.ratio / 2 >= 1"), "");
+}
+
+TEST(ParserInputErrors, LogAndSqrtOfConstantsOutsideTheirDomain) {
+  Network net = WithUnits();
+  EXPECT_NE(ErrorOf(net, "log(-1) <= gra.ratio").find("log() of the constant -1, which is not positive"),
+            std::string::npos);
+  EXPECT_NE(ErrorOf(net, "log(0) <= gra.ratio").find("not positive"), std::string::npos);
+  EXPECT_NE(ErrorOf(net, "sqrt(-4) <= gra.ratio").find("sqrt() of the negative constant -4"), std::string::npos);
+  EXPECT_EQ(ErrorOf(net, "log(2) <= gra.ratio"), "");
+}
+
+TEST(ParserInputErrors, RequirementSidesMustHaveTheSameDimension) {
+  Network net = WithUnits();
+  const std::string message = ErrorOf(net, "pdu.max_output_torque >= 145 kg");
+  EXPECT_NE(message.find("'>=' compares a torque (kg*m^2*s^-2) with a mass (kg)"), std::string::npos) << message;
+  EXPECT_NE(ErrorOf(net, "pdu.max_output_torque + 1 m <= 5 N*m").find("'+' adds a torque"), std::string::npos);
+  EXPECT_NE(ErrorOf(net, "max(pdu.max_output_torque, 2 s) <= 5 N*m").find("mixes"), std::string::npos);
+  EXPECT_NE(ErrorOf(net, "exp(pdu.max_output_torque) <= 5").find("exp() of a torque"), std::string::npos);
+  // Consistent units, products and bare numbers are fine.
+  EXPECT_EQ(ErrorOf(net, "pdu.max_output_torque >= 0.5 kN*m"), "");
+  EXPECT_EQ(ErrorOf(net, "pdu.max_output_torque / gra.ratio >= 1 N*m"), "");
+  EXPECT_EQ(ErrorOf(net, "pdu.max_output_torque * 2 m >= 1 N*m*m"), "");
+  EXPECT_EQ(ErrorOf(net, "pdu.max_output_torque >= 145"), "");
+}
+
+TEST(ParserInputErrors, UnitPowerOverflowNamesTheUnit) {
+  Network net = WithUnits();
+  const std::string message = ErrorOf(net, "pdu.max_output_torque >= 4 m^200");
+  EXPECT_NE(message.find("unit 'm^200'"), std::string::npos) << message;
+  EXPECT_NE(message.find("the power of m is 200"), std::string::npos) << message;
+  EXPECT_EQ(message.find("internal error"), std::string::npos) << message;
+}
 }  // namespace
 }  // namespace highlift::icsp

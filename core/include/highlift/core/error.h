@@ -4,6 +4,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 namespace highlift {
 
@@ -19,9 +20,15 @@ struct SourceLocation {
   std::string ToString() const;
 };
 
+/// `text` fit for a terminal and a message: control characters other than tab, CR and newline
+/// escaped as \xNN (a NUL or an escape sequence in a name), and each line cut after `max_line`
+/// bytes with a note of how many were cut (a 1 MB key gives a short message).
+std::string CleanText(std::string_view text, std::size_t max_line = 2000);
+
 /// Bad user input: a malformed file, an unknown component type, a unit of the wrong dimension, a
 /// database row with a missing value. The message names the thing, the problem and the remedy;
-/// `what()` prefixes it with the location. The CLI exits with code 2.
+/// `what()` prefixes it with the location. The CLI exits with code 2. The message is stored
+/// through CleanText(): no control characters, no line longer than 2000 bytes.
 class InputError : public std::runtime_error {
  public:
   explicit InputError(const std::string& message, SourceLocation where = {});

@@ -32,10 +32,11 @@ struct GraphEdge {
   std::size_t connection = 0;  ///< index into Project::connections (or element_connections)
 };
 
-/// How a component is reached from the PDU.
+/// How a component is reached from the PDU. Constant size (the whole route is
+/// ComponentGraph::Route), so a graph of n components takes memory linear in n.
 struct PowerPath {
-  std::vector<std::string> components;  ///< ids from the PDU (first) to this component (last)
-  std::vector<std::string> entry_ports; ///< port by which each component on the path is entered ("" for the PDU)
+  std::string previous;                 ///< the component before this one on the route ("" for the PDU)
+  std::size_t depth = 0;                ///< components between the PDU and this one, plus one (0 for the PDU)
   std::string entry_port;               ///< port by which this component is entered ("" for the PDU)
   std::string pdu_port;                 ///< PDU output the path leaves by ("left", "right"; "" for the PDU)
   /// Speed of this component's entry flange / PDU output speed (product of 1/ratio along the path).
@@ -71,8 +72,14 @@ class ComponentGraph {
   /// Speed of the flange `port` of a reachable component / PDU output speed: applies the
   /// component's own ratio (e.g. a GRA "input" -> its output speed is SpeedRatioAtPort(id,"input")/ratio).
   std::optional<double> SpeedRatioAtPort(std::string_view id, std::string_view port) const;
+  /// Ids from the PDU (first) to `id` (last); empty when `id` is not reachable.
+  std::vector<std::string> Route(std::string_view id) const;
   /// Connected groups of components (each sorted by order in the project), the PDU's first.
   std::vector<std::vector<std::string>> Islands() const;
+  /// Connections that close a loop in the drive-system graph (indices into Project::connections,
+  /// in project order): the walk from the PDU met a component it had already reached. A drive
+  /// transmission is a tree; validation reports each as an error.
+  const std::vector<std::size_t>& LoopConnections() const { return loop_connections_; }
 
  private:
   ComponentGraph() = default;
@@ -85,7 +92,12 @@ class ComponentGraph {
   std::string pdu_;
   std::vector<std::string> order_;
   std::map<std::string, PowerPath, std::less<>> paths_;
+  std::vector<std::size_t> loop_connections_;
 };
+
+/// "connection a.x - b.y closes a loop in the transmission ('pdu' -> ... -> 'pdu'); ..." for
+/// one of graph.LoopConnections().
+std::string DescribeLoop(const ComponentGraph& graph, const Project& project, std::size_t connection);
 
 /// Speed factor from entering `component` by `from_port` to leaving by `to_port`: 1 for rigid
 /// components, 1/ratio from "input" to "output"/"branch", ratio the other way. `known` is set to

@@ -39,8 +39,14 @@ struct ParsedConstraint {
 
 /// Parses `text` into expression nodes of `network`. `context` names the text in messages
 /// (e.g. "requirement 'R3'"); `where` is attached to the InputError (file, JSON pointer).
+/// Input errors, never crashes or violated constraints: nesting deeper than 200 levels, division
+/// by the constant 0, log() or sqrt() of a constant outside their domain and, with
+/// `check_dimensions`, sides of + - min max or the relation with different dimensions (`X >=
+/// 145 kg` with X a torque; dimensions come from the constants' units and the variables' units,
+/// a bare number matches anything). AddConstraintText checks dimensions for requirements.
 ParsedConstraint ParseConstraint(Network& network, std::string_view text, const std::string& context,
-                                 const SourceLocation& where = {}, NameResolver resolve = {});
+                                 const SourceLocation& where = {}, NameResolver resolve = {},
+                                 bool check_dimensions = false);
 /// Parses one expression (no relation).
 ExprId ParseExpression(Network& network, std::string_view text, const std::string& context,
                        const SourceLocation& where = {}, NameResolver resolve = {});

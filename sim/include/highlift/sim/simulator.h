@@ -93,7 +93,10 @@ class MemorySink : public OutputSink {
 
 /// Writes CSV ("time" + instance-path columns, 17 significant digits) to a file, row by row.
 /// `signals` selects columns (empty: all); an unknown signal is an InputError listing the
-/// closest names.
+/// closest names. The file is written through highlift::OutputFile: inputs, devices and
+/// directories are refused, every write is checked (InputError on failure) and the old file is
+/// replaced only by End(). After an interruption (InterruptRequested()) End() writes the rows so
+/// far with a "# partial output" trailer line to FILE.partial and leaves FILE unchanged.
 class CsvSink : public OutputSink {
  public:
   CsvSink(const std::filesystem::path& file, std::vector<std::string> signals = {});
@@ -155,7 +158,9 @@ struct PeakTorque {
   double time = 0.0;  ///< s
 };
 
-enum class SimulationStatus { kSuccess, kSolverFailure, kModelError, kTooManyEvents };
+/// kInterrupted: SIGINT/SIGTERM (highlift::InterruptRequested()) stopped the run after the last
+/// complete output row.
+enum class SimulationStatus { kSuccess, kSolverFailure, kModelError, kTooManyEvents, kInterrupted };
 std::string ToString(SimulationStatus status);
 
 struct SimulationReport {
