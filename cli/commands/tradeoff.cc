@@ -114,7 +114,12 @@ class TradeoffCommand : public Command {
     if (options_.json) {
       std::cout << nlohmann::json{{"vary", name}, {"unit", unit}, {"rows", rows}}.dump(2) << "\n";
     } else {
-      std::cout << table.ToString();
+      int feasible = 0;
+      for (const auto& row : rows) feasible += row["feasible"].get<bool>();
+      std::cout << name << " over [" << FormatNumber(lo, 5) << ", " << FormatNumber(hi, 5) << "]"
+                << (unit.empty() ? "" : " " + unit) << ": " << feasible << " of " << n
+                << " slices can meet every requirement\n\n"
+                << table.ToString();
     }
     return kSuccess;
   }

@@ -130,7 +130,8 @@
         const cell = el("span", { class: m.margin != null && m.margin < 0 ? "bad" : "", text: percent(m.margin) });
         const who = el("span");
         g.members.forEach((x, i) => { if (i) who.append(", "); who.append(componentLink(x.component)); });
-        const cases = g.members.length > 1 ? m.what.split(",")[0] + " (" + g.members.map((x) => x.what.split(", ")[1] || "").filter(Boolean).join(", ") + ")" : m.what;
+        const names = [...new Set(g.members.map((x) => x.what.split(", ")[1] || "").filter(Boolean))];
+        const cases = m.what.split(",")[0] + (names.length ? " (" + names.join(", ") + ")" : "");
         return [cell, who, fmt(m.load), fmt(m.allowable), m.allowable_name, cases];
       }), [0, 2, 3]));
   }
@@ -345,6 +346,7 @@
     const cols = [idx, single, transient, cap];
     plot(document.getElementById("peaks-plot"), "peaks-plot", "Peak torque per sizing case, at the shaft speed", cols, series, {
       height: 380,
+      padding: [12, 60, 0, 0],
       scales: { x: { time: false, range: [-0.7, cases.length - 0.3] }, y: { range: (u, min, max) => [0, max * 1.08] } },
       axes: [{ rotate: -60, size: 120, space: 10, incrs: [1], values: (u, splits) => splits.map((s) => (Number.isInteger(s) && cases[s] ? cases[s].name : "")) },
              { label: "N*m", size: 70 }],
