@@ -6,7 +6,9 @@
 #include <random>
 #include <sstream>
 
+#include "highlift/core/error.h"
 #include "highlift/icsp/drive_system.h"
+#include "highlift/icsp/propagator.h"
 #include "highlift/reduced_models/analyses.h"
 #include "highlift/reduced_models/sampling.h"
 #include "highlift/reduced_models/sizing.h"
@@ -138,6 +140,23 @@ void ComparePeaks(const reduced_models::PeakReport& wide, const reduced_models::
   }
 }
 
+/// The parameters the propagator treats as uncertain: a parameter the project does not give is
+/// a point at its catalogue nominal there (the reduced models take its default domain), so the
+/// points are drawn from the initial domains of the network's own variables.
+std::vector<UncertainParameter> PropagatorUncertainParameters(const Project& project,
+                                                              const icsp::DriveSystemNetwork& network) {
+  std::vector<UncertainParameter> uncertain;
+  for (UncertainParameter u : reduced_models::UncertainParameters(project)) {
+    const icsp::VariableId v = network.network.FindVariable(u.component + "." + u.parameter);
+    if (v.value < 0) continue;
+    const icsp::Interval initial = network.network.variable(v).initial;
+    if (!(initial.lower() < initial.upper()) || !std::isfinite(initial.lower()) || !std::isfinite(initial.upper())) continue;
+    u.domain = {initial.lower(), initial.upper()};
+    uncertain.push_back(u);
+  }
+  return uncertain;
+}
+
 }  // namespace
 
 void SoundnessResult::Merge(const SoundnessResult& other) {
@@ -178,18 +197,7 @@ SoundnessResult CheckDomainSoundness(const Project& project, const SoundnessOpti
   const icsp::CheckResult wide = icsp::CheckDriveSystem(network);
   std::map<std::string, const icsp::ParameterResult*> narrowed;
   for (const auto& p : wide.parameters) narrowed[p.name] = &p;
-  // The parameters the propagator treats as uncertain: a parameter the project does not give
-  // is a point at its catalogue nominal there (the reduced models take its default domain), so
-  // the points are drawn from the initial domains of the network's own variables.
-  std::vector<UncertainParameter> uncertain;
-  for (UncertainParameter u : reduced_models::UncertainParameters(project)) {
-    const icsp::VariableId v = network.network.FindVariable(u.component + "." + u.parameter);
-    if (v.value < 0) continue;
-    const icsp::Interval initial = network.network.variable(v).initial;
-    if (!(initial.lower() < initial.upper()) || !std::isfinite(initial.lower()) || !std::isfinite(initial.upper())) continue;
-    u.domain = {initial.lower(), initial.upper()};
-    uncertain.push_back(u);
-  }
+  const std::vector<UncertainParameter> uncertain = PropagatorUncertainParameters(project, network);
   DomainSampler sampler(uncertain, options.seed);
   for (int k = 0; k < options.points; ++k) {
     const std::vector<double> x = sampler.Next();
@@ -206,6 +214,58 @@ SoundnessResult CheckDomainSoundness(const Project& project, const SoundnessOpti
       if (it == narrowed.end()) continue;
       const icsp::ParameterResult& w = *it->second;
       check.Meet("check domain of " + p.name, p.final.lower(), p.final.upper(), w.final.lower(), w.final.upper());
+    }
+  }
+  return result;
+}
+
+SoundnessResult CheckTradeoffSoundness(const Project& project, const std::string& parameter, int slices,
+                                       const SoundnessOptions& options) {
+  SoundnessResult result;
+  Checker check(project, options, &result);
+  const icsp::DriveSystemNetwork network = icsp::BuildDriveSystemNetwork(project);
+  const icsp::Network& net = network.network;
+  const icsp::VariableId varied = net.FindVariable(parameter);
+  if (varied.value < 0) throw InputError("tradeoff soundness: no variable '" + parameter + "'");
+  const icsp::Interval domain = net.variable(varied).initial;
+  // Every uncertain parameter is drawn (so a feasible point is a solution, not a box that was
+  // merely not proved empty); the varied one within the slice.
+  const std::vector<UncertainParameter> uncertain = PropagatorUncertainParameters(project, network);
+  std::size_t index = uncertain.size();
+  for (std::size_t i = 0; i < uncertain.size(); ++i)
+    if (uncertain[i].component + "." + uncertain[i].parameter == parameter) index = i;
+  if (index == uncertain.size()) throw InputError("tradeoff soundness: '" + parameter + "' is not uncertain");
+  DomainSampler sampler(uncertain, options.seed);
+  icsp::Propagator propagator(net, {});
+  std::mt19937_64 random(options.seed);
+  for (int k = 0; k < slices; ++k) {
+    const double a = domain.lower() + (domain.upper() - domain.lower()) * k / slices;
+    const double b = domain.lower() + (domain.upper() - domain.lower()) * (k + 1) / slices;
+    icsp::Box box = net.InitialBox();
+    box[varied.value] = icsp::Meet(box[varied.value], icsp::Interval(a, b));
+    const icsp::Status status = propagator.Propagate(box).status;
+    for (int p = 0; p < options.points; ++p) {
+      std::vector<double> x = sampler.Interior();
+      x[index] = std::min(b, a + (b - a) * (static_cast<double>(random() >> 11) * 0x1.0p-53));
+      check.SetPoint(k * options.points + p, uncertain, x);
+      const icsp::DriveSystemNetwork at_network = icsp::BuildDriveSystemNetwork(FixParameters(project, uncertain, x));
+      const icsp::CheckResult at = icsp::CheckDriveSystem(at_network);
+      ++result.points;
+      if (!at.feasible) continue;
+      if (status == icsp::Status::kInfeasible) {
+        check.Inside("tradeoff slice [" + Number(a) + ", " + Number(b) + "] proved infeasible, yet this point is feasible",
+                     1.0, 0.0, 0.0);
+        continue;
+      }
+      // Compare the propagated point box with the slice's box, variable by variable (SI).
+      icsp::Box point_box = at_network.network.InitialBox();
+      icsp::Propagate(at_network.network, point_box);
+      for (int v = 0; v < net.num_variables(); ++v) {
+        const icsp::VariableId w = at_network.network.FindVariable(net.variable(icsp::VariableId{v}).name);
+        if (w.value < 0) continue;
+        check.Meet("tradeoff slice " + std::to_string(k) + " domain of " + net.variable(icsp::VariableId{v}).name,
+                   point_box[w.value].lower(), point_box[w.value].upper(), box[v].lower(), box[v].upper());
+      }
     }
   }
   return result;

@@ -49,6 +49,14 @@ SoundnessResult CheckEnclosures(const Project& project, const SoundnessOptions& 
 /// narrowed domain.
 SoundnessResult CheckDomainSoundness(const Project& project, const SoundnessOptions& options);
 
+/// The slices of `highlift tradeoff` keep every feasible point: the domain of `parameter`
+/// ("component.parameter", an uncertain variable of the network) split into `slices`, each
+/// propagated from the initial box met with the slice (as the command does); for drawn points
+/// whose `parameter` lies in the slice and at which the network is feasible, every variable's
+/// point enclosure meets the slice's narrowed domain.
+SoundnessResult CheckTradeoffSoundness(const Project& project, const std::string& parameter, int slices,
+                                       const SoundnessOptions& options);
+
 /// Options of a random one- or two-wing chain project.
 struct RandomProjectOptions {
   int max_stations = 5;         ///< stations per wing, 1..max

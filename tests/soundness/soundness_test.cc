@@ -51,10 +51,19 @@ TEST_P(ExampleSoundness, SizeAndPeakEnclosuresHoldAtSampledPoints) {
 
 TEST_P(ExampleSoundness, CheckKeepsEveryFeasiblePoint) {
   SoundnessOptions options;
-  options.points = 8;
+  options.points = HIGHLIFT_SOUNDNESS_SCALE > 1 ? 2 : 8;
   options.seed = BaseSeed();
   const SoundnessResult r = CheckDomainSoundness(Example(GetParam()), options);
-  EXPECT_EQ(r.points, 8);
+  EXPECT_EQ(r.points, options.points);
+  EXPECT_TRUE(r.violations.empty()) << Report(r);
+}
+
+TEST_P(ExampleSoundness, TradeoffSlicesKeepEveryFeasiblePoint) {
+  SoundnessOptions options;
+  options.points = HIGHLIFT_SOUNDNESS_SCALE > 1 ? 1 : 3;
+  options.seed = BaseSeed();
+  const SoundnessResult r = CheckTradeoffSoundness(Example(GetParam()), "pdu.motor_inertia", 4, options);
+  EXPECT_EQ(r.points, 4 * options.points);
   EXPECT_TRUE(r.violations.empty()) << Report(r);
 }
 
@@ -87,13 +96,13 @@ TEST(RandomProjectSoundness, CheckKeepsEveryFeasiblePointOnRandomChains) {
   const std::uint64_t base = BaseSeed() + 1000;
   for (std::uint64_t k = 0; k < 10; ++k) {
     SoundnessOptions options;
-    options.points = 10;
+    options.points = Scaled(10) > 0 ? Scaled(10) : 1;
     options.seed = base + k;
     RandomProjectOptions small;
     small.max_stations = 3;
     all.Merge(CheckDomainSoundness(RandomChainProject(base + k, small), options));
   }
-  EXPECT_EQ(all.points, 100);
+  EXPECT_EQ(all.points, 10 * (Scaled(10) > 0 ? Scaled(10) : 1));
   EXPECT_TRUE(all.violations.empty()) << Report(all);
 }
 
