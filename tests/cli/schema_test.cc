@@ -103,6 +103,7 @@ TEST(Schema, TopLevelKeysAreTheReaders) {
 TEST(Schema, NestedObjectKeysAreTheReaders) {
   const nlohmann::json defs = Schema().at("$defs");
   EXPECT_EQ(Keys(defs.at("settings").at("properties")), ReaderKeys(Doc(R"("settings": {"zz_unknown": 1})")));
+  EXPECT_EQ(Keys(defs.at("experiment").at("properties")), ReaderKeys(Doc(R"("experiment": {"zz_unknown": 1})")));
   EXPECT_EQ(Keys(defs.at("component_common").at("properties")),
             ReaderKeys(Doc(R"("components": [{"id": "p", "type": "pdu", "zz_unknown": 1}])")));
   EXPECT_EQ(Keys(defs.at("requirement").at("properties")),

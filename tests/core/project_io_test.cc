@@ -162,11 +162,33 @@ TEST(ProjectIo, SaveLeavesDefaultsOut) {
   EXPECT_EQ(shaft["parameters"]["shear_modulus"], (nlohmann::json{{"min", 43e9}, {"max", 51e9}}));
 }
 
+// An element network's run as a Modelica experiment annotation, and the absolute tolerance.
+TEST(ProjectIo, ExperimentBlockAndAbsoluteToleranceRoundTrip) {
+  const std::string text = R"({"format": "highlift-project/1", "name": "x",
+    "settings": {"absolute_tolerance": 1e-10},
+    "experiment": {"StopTime": "2 s", "Interval": "5 ms", "Tolerance": 1e-7}})";
+  const Project p = ParseProject(text);
+  ASSERT_TRUE(p.experiment.has_value());
+  EXPECT_EQ(p.experiment->stop_time, 2.0);
+  EXPECT_EQ(p.experiment->interval.value_or(0), 0.005);
+  EXPECT_EQ(p.experiment->tolerance.value_or(0), 1e-7);
+  EXPECT_EQ(p.settings.absolute_tolerance.value_or(0), 1e-10);
+  const Project back = ParseProject(ProjectToJson(p).dump());
+  EXPECT_EQ(back.experiment->stop_time, 2.0);
+  EXPECT_EQ(back.settings.absolute_tolerance.value_or(0), 1e-10);
+  EXPECT_NE(ErrorOf(R"({"format": "highlift-project/1", "name": "x", "experiment": {"StopTime": "1 s", "Tolerence": 1e-6}})")
+                .find("unknown key 'Tolerence' in the experiment; did you mean 'Tolerance'?"),
+            std::string::npos);
+  EXPECT_NE(ErrorOf(R"({"format": "highlift-project/1", "name": "x", "experiment": {"Interval": "1 ms"}})")
+                .find("the experiment needs 'StopTime'"),
+            std::string::npos);
+}
+
 TEST(ProjectIo, UnknownKeySuggestsTheClosest) {
   EXPECT_EQ(ErrorOf(Rig("\"sources\"", "\"source\"")),
             "t.json:5:3 at /source: unknown key 'source' in the project; did you mean 'sources'? Allowed keys: format, "
             "name, description, sources, settings, components, connections, elements, element_connections, "
-            "requirements, load_cases, scenarios");
+            "requirements, load_cases, scenarios, experiment");
   EXPECT_EQ(ErrorOf(Rig("\"labels\"", "\"lables\"")),
             "t.json:10:47 at /components/2/lables: unknown key 'lables' in component 'shaft_1'; did you mean "
             "'labels'? Allowed keys: id, type, description, labels, parameters");
