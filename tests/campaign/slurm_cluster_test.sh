@@ -109,8 +109,9 @@ echo "cluster up: $(sinfo --noheader --format='%P %D %t %c CPUs')"
 # The job array: 4 shards, each task `highlift campaign` with the shard from SLURM_ARRAY_TASK_*.
 cd "$WORK"
 start=$(date +%s%N)
-timeout 120 sbatch --wait --array=0-3 --cpus-per-task=1 --output="$WORK/log/task-%a.log" \
-  --export=ALL,HIGHLIFT="$HIGHLIFT",PROJECT="$PROJECT",OUT="$WORK/out",CAMPAIGN_OPTIONS="$OPTIONS",HIGHLIFT_DATA_DIR="${HIGHLIFT_DATA_DIR:-$WORK/data}" \
+# The variables go through the environment (--export=ALL): --export=NAME=value splits at commas.
+HIGHLIFT=$HIGHLIFT PROJECT=$PROJECT OUT=$WORK/out CAMPAIGN_OPTIONS=$OPTIONS \
+  timeout 120 sbatch --wait --array=0-3 --cpus-per-task=1 --output="$WORK/log/task-%a.log" --export=ALL \
   "$SOURCE/scripts/slurm/campaign.sbatch" || fail "the job array failed"
 end=$(date +%s%N)
 echo "job array of 4 tasks done in $(((end - start) / 1000000)) ms"
@@ -128,7 +129,8 @@ set -e
 [ $local_rc -le 1 ] || fail "the local run exited with $local_rc"
 grep -v '"file":' "$WORK/merged.json" > "$WORK/merged.cmp"
 grep -v '"file":' "$WORK/local.json" > "$WORK/local.cmp"
-grep -q '"runs_done": 12' "$WORK/merged.cmp" || fail "the merged campaign does not hold 12 runs"
+grep -q '"runs_done": 12,' "$WORK/merged.cmp" || fail "the merged campaign does not hold 12 runs"
+grep -q '"cases": 3,' "$WORK/merged.cmp" || fail "the merged campaign does not hold 3 cases"
 grep -q '"envelope": \[' "$WORK/merged.cmp" || fail "no envelope in the merged summary"
 diff "$WORK/local.cmp" "$WORK/merged.cmp" || fail "the merged envelope differs from the local run's"
 echo "PASSED: the merged envelope of the 4-task job array equals the local run's"
@@ -139,9 +141,9 @@ echo "PASSED: the merged envelope of the 4-task job array equals the local run's
 for tasks in ${HIGHLIFT_SLURM_SCALING:-}; do
   scaling_options=${HIGHLIFT_SLURM_SCALING_OPTIONS:-"--cases jam_*,rupture_shaft_l* --samples 3 --model reduced"}
   start=$(date +%s%N)
-  timeout 3000 sbatch --wait --array=0-$((tasks - 1)) --cpus-per-task=1 --output="$WORK/log/scaling-$tasks-%a.log" \
-    --export=ALL,HIGHLIFT="$HIGHLIFT",PROJECT="$PROJECT",OUT="$WORK/scaling-$tasks",CAMPAIGN_OPTIONS="$scaling_options" \
-    "$SOURCE/scripts/slurm/campaign.sbatch" > /dev/null || fail "the scaling array of $tasks tasks failed"
+  HIGHLIFT=$HIGHLIFT PROJECT=$PROJECT OUT=$WORK/scaling-$tasks CAMPAIGN_OPTIONS=$scaling_options \
+    timeout 3000 sbatch --wait --array=0-$((tasks - 1)) --cpus-per-task=1 --output="$WORK/log/scaling-$tasks-%a.log" \
+    --export=ALL "$SOURCE/scripts/slurm/campaign.sbatch" > /dev/null || fail "the scaling array of $tasks tasks failed"
   end=$(date +%s%N)
   echo "scaling: $tasks task(s) x 1 CPU: $(((end - start) / 1000000)) ms for '$scaling_options' (load $(cut -d' ' -f1-3 /proc/loadavg))"
 done
