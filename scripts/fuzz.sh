@@ -36,6 +36,7 @@ for target in project constraint units db_import db_where; do
   mkdir -p "$scratch/new"
   log="$build/findings/fuzz_$target.log"
   if ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+     LSAN_OPTIONS=suppressions=fuzz/lsan.supp \
      "$build/fuzz/fuzz_$target" -max_total_time="$seconds" -rss_limit_mb=2048 -timeout=10 -max_len=200000 \
        -print_final_stats=1 -artifact_prefix="$build/findings/${target}_" "$scratch/new" "${seeds[@]}" > "$log" 2>&1; then
     execs=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$' || echo '?')
