@@ -18,6 +18,8 @@
 #include <string_view>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "highlift/core/error.h"
 
 namespace highlift::cli {
@@ -52,6 +54,16 @@ inline CLI::Validator NumberIn(double lo, double hi, bool lo_open = false) {
 }
 inline CLI::Validator Positive() { return NumberIn(0.0, std::numeric_limits<double>::infinity(), true); }
 inline CLI::Validator NonNegative() { return NumberIn(0.0, std::numeric_limits<double>::infinity()); }
+
+/// {"file", "json_pointer", "line", "column"}: the known parts of a location, for --json documents.
+inline nlohmann::json LocationJson(const SourceLocation& where) {
+  nlohmann::json j = nlohmann::json::object();
+  if (!where.file.empty()) j["file"] = where.file;
+  if (!where.json_pointer.empty()) j["json_pointer"] = where.json_pointer;
+  if (where.line > 0) j["line"] = where.line;
+  if (where.column > 0) j["column"] = where.column;
+  return j;
+}
 
 /// Adds a finiteness check to every floating-point option of `app` and its subcommands, so
 /// nan and inf never reach a command (main() calls it for every command).

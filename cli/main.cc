@@ -166,14 +166,6 @@ std::string CommandPath(const CLI::App& app) {
   return "";
 }
 
-nlohmann::json LocationJson(const SourceLocation& where) {
-  nlohmann::json j = nlohmann::json::object();
-  if (!where.file.empty()) j["file"] = where.file;
-  if (!where.json_pointer.empty()) j["json_pointer"] = where.json_pointer;
-  if (where.line > 0) j["line"] = where.line;
-  if (where.column > 0) j["column"] = where.column;
-  return j;
-}
 
 std::string StatusOf(int code) {
   switch (code) {

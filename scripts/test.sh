@@ -15,7 +15,7 @@ cmake --build build -j "$jobs"
 ctest --test-dir build --output-on-failure -j "$jobs" --timeout 900
 
 echo "== libFuzzer targets (clang, ASan + UBSan), bounded time each"
-scripts/fuzz.sh "${HIGHLIFT_FUZZ_SECONDS:-30}"
+scripts/fuzz.sh "${HIGHLIFT_FUZZ_SECONDS:-25}"
 
 echo "== AddressSanitizer + UndefinedBehaviorSanitizer build and tests"
 cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-O1 -g0" \

@@ -8,10 +8,9 @@
 //
 //   validate_bench --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
-#include <malloc.h>
-
-#include <fstream>
 #include <string>
+
+#include "common/peak_rss.h"
 
 #include "highlift/core/project_io.h"
 #include "highlift/core/validate.h"
@@ -19,18 +18,8 @@
 namespace highlift {
 namespace {
 
-void ResetPeakRss() {
-  malloc_trim(0);
-  std::ofstream("/proc/self/clear_refs") << "5";
-}
-
-double PeakRssMB() {
-  std::ifstream f("/proc/self/status");
-  std::string line;
-  while (std::getline(f, line))
-    if (line.rfind("VmHWM:", 0) == 0) return std::stod(line.substr(6)) / 1024.0;
-  return 0.0;
-}
+using bench::PeakRssMB;
+using bench::ResetPeakRss;
 
 /// A valid project of about `n` components: PDU, then stations of three components each.
 std::string ChainProject(long n) {

@@ -6,12 +6,12 @@
 //
 //   icsp_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
-#include <malloc.h>
 
 #include <chrono>
 #include <fstream>
 #include <string>
 
+#include "common/peak_rss.h"
 #include "highlift/componentdb/database.h"
 #include "highlift/core/project_io.h"
 #include "highlift/estimation/estimator.h"
@@ -22,21 +22,8 @@
 namespace highlift::icsp {
 namespace {
 
-/// Returns freed heap to the system and resets the process's peak resident size (VmHWM) to its
-/// current size (Linux >= 4.0), so that peak_rss_MB is this benchmark's own.
-void ResetPeakRss() {
-  malloc_trim(0);
-  std::ofstream("/proc/self/clear_refs") << "5";
-}
-
-double PeakRssMB() {
-  std::ifstream f("/proc/self/status");
-  std::string line;
-  while (std::getline(f, line)) {
-    if (line.rfind("VmHWM:", 0) == 0) return std::stod(line.substr(6)) / 1024.0;
-  }
-  return 0.0;
-}
+using bench::PeakRssMB;
+using bench::ResetPeakRss;
 
 double HeapMB() { return static_cast<double>(mallinfo2().uordblks) / (1024.0 * 1024.0); }
 

@@ -15,15 +15,6 @@
 namespace highlift::cli {
 namespace {
 
-nlohmann::json LocationJson(const SourceLocation& where) {
-  nlohmann::json j = nlohmann::json::object();
-  if (!where.file.empty()) j["file"] = where.file;
-  if (!where.json_pointer.empty()) j["json_pointer"] = where.json_pointer;
-  if (where.line > 0) j["line"] = where.line;
-  if (where.column > 0) j["column"] = where.column;
-  return j;
-}
-
 nlohmann::json IssueJson(const ValidationIssue& issue) {
   return {{"severity", issue.severity == ValidationIssue::Severity::kError ? "error" : "warning"},
           {"component", issue.component},

@@ -360,6 +360,13 @@ RangeCondition ParseRangeCondition(const std::string& text, const std::string& t
     ++number_end;
   const std::string hi_text = hi_and_unit.substr(0, number_end);
   const std::string unit = trim(hi_and_unit.substr(number_end));
+  {
+    std::string word = unit;
+    for (char& c : word) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (word == "inf" || word == "infinity" || word == "nan")
+      throw InputError("range '" + text + "': '" + unit + "' is not a finite number; leave a bound out for no bound; " +
+                       forms);
+  }
   const auto number = [&](const std::string& s, double fallback) {
     if (s.empty()) return fallback;
     double v = 0;

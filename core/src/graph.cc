@@ -57,6 +57,8 @@ void ComponentGraph::Build(const std::vector<Component>& components, const std::
     const Connection& k = connections[i];
     edges_[k.a.component].push_back({k.a.port, k.b, i});
     edges_[k.b.component].push_back({k.b.port, k.a, i});
+    ++port_uses_[k.a];
+    ++port_uses_[k.b];
   }
 }
 
@@ -78,8 +80,10 @@ void ComponentGraph::Walk() {
       const std::string& next = e.neighbour.component;
       if (!by_id_.count(next)) continue;
       if (paths_.count(next)) {
-        // reached before by another connection: this one closes a loop
-        if (entry == entered_by.end() || entry->second != e.connection) {
+        // reached before by another connection: this one closes a loop (unless a flange on it
+        // is connected twice, which validation reports as such)
+        const bool doubled = port_uses_.at(PortRef{id, e.port}) > 1 || port_uses_.at(e.neighbour) > 1;
+        if (!doubled && (entry == entered_by.end() || entry->second != e.connection)) {
           const auto next_entry = entered_by.find(next);
           if (next_entry == entered_by.end() || next_entry->second != e.connection) loops.insert(e.connection);
         }

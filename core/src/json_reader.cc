@@ -158,7 +158,7 @@ class Parser {
       SkipSpace();
       if (Peek() != '"') {
         if (Peek() == '}') Fail("trailing comma before '}' is not allowed in JSON");
-        Fail("expected a member name in double quotes");
+        Fail("expected a member name in double quotes, found " + (AtEnd() ? std::string("the end of the file") : Shown(Peek())));
       }
       const TextPosition key_position = Here();
       std::string key = ParseString();

@@ -204,23 +204,9 @@ void OutputFile::CommitAs(const fs::path& other) {
   const fs::path target = other == path_ ? target_ : CheckedTarget(other, what_);
   if (::fsync(fd_) != 0 && errno != EINVAL && errno != EROFS) Fail("the data could not be synced to the disk", errno);
   const int fd = fd_;
-  fd_ = -1;
-  if (::close(fd) != 0) {
-    const int error = errno;
-    ::unlink(temporary_.c_str());
-    UnregisterTemporaryFile(temporary_slot_);
-    temporary_slot_ = -1;
-    throw InputError("cannot write the " + what_ + " '" + path_.string() + "': closing it failed (" + Reason(error) +
-                     "); the old file, if any, is unchanged");
-  }
-  if (::rename(temporary_.c_str(), target.c_str()) != 0) {
-    const int error = errno;
-    ::unlink(temporary_.c_str());
-    UnregisterTemporaryFile(temporary_slot_);
-    temporary_slot_ = -1;
-    throw InputError("cannot write the " + what_ + " '" + other.string() + "': replacing it failed (" + Reason(error) +
-                     "); the old file, if any, is unchanged");
-  }
+  fd_ = -1;  // closed below, whatever close() says
+  if (::close(fd) != 0) Fail("closing it failed", errno);
+  if (::rename(temporary_.c_str(), target.c_str()) != 0) Fail("replacing '" + target.string() + "' failed", errno);
   UnregisterTemporaryFile(temporary_slot_);
   temporary_slot_ = -1;
   committed_ = true;

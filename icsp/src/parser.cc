@@ -148,8 +148,8 @@ class Parser {
   }
 
  private:
-  /// Nesting limit: parentheses, unary signs, powers and function calls each nest one level; the
-  /// parser and every later walk of the expression recurse once per level.
+  /// Nesting limit: parentheses, unary signs, powers and function calls each nest one level
+  /// (counted in Factor, which every nesting passes); the parser recurses once per level.
   static constexpr int kMaxDepth = 200;
   static constexpr int kMaxHeight = 5000;  ///< operands chained in one expression tree
   struct DepthGuard {
@@ -349,7 +349,6 @@ class Parser {
   }
 
   Typed Expr() {
-    const DepthGuard guard(*this, Peek());
     const std::size_t start = Peek().pos;
     Typed e;
     if (Peek().kind == Tok::kMinus) {

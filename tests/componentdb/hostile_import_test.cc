@@ -4,7 +4,6 @@
 // overwrites the database it reads.
 #include <gtest/gtest.h>
 
-#include <cstdlib>
 #include <fstream>
 #include <sstream>
 
@@ -22,11 +21,7 @@ namespace {
 using highlift::testing::RunCli;
 using highlift::testing::ScratchDirectory;
 
-const bool kDataDirectorySet = [] {
-  if (!std::getenv("HIGHLIFT_DATA_DIR"))
-    ::setenv("HIGHLIFT_DATA_DIR", (std::filesystem::temp_directory_path() / "highlift_db_cli_test_home").c_str(), 1);
-  return true;
-}();
+// HIGHLIFT_DATA_DIR: set by ctest, or by db_cli_test.cc in this same executable.
 
 const std::string kHeader = "type,designation,program,supplier,note,parameter,value,min,max,unit,tag,source\n";
 

@@ -78,7 +78,8 @@ class ComponentGraph {
   std::vector<std::vector<std::string>> Islands() const;
   /// Connections that close a loop in the drive-system graph (indices into Project::connections,
   /// in project order): the walk from the PDU met a component it had already reached. A drive
-  /// transmission is a tree; validation reports each as an error.
+  /// transmission is a tree; validation reports each as an error. Connections on a flange that
+  /// is connected twice are left out (validation reports the double connection).
   const std::vector<std::size_t>& LoopConnections() const { return loop_connections_; }
 
  private:
@@ -93,6 +94,7 @@ class ComponentGraph {
   std::vector<std::string> order_;
   std::map<std::string, PowerPath, std::less<>> paths_;
   std::vector<std::size_t> loop_connections_;
+  std::map<PortRef, int> port_uses_;  ///< connections per flange
 };
 
 /// "connection a.x - b.y closes a loop in the transmission ('pdu' -> ... -> 'pdu'); ..." for
