@@ -15,6 +15,7 @@
 #include "highlift/core/error.h"
 #include "highlift/core/project_io.h"
 #include "highlift/core/text_table.h"
+#include "highlift/model/component_model.h"
 #include "highlift/reduced_models/analyses.h"
 #include "highlift/sim/drive_network.h"
 #include "highlift/sim/simulator.h"
@@ -68,7 +69,8 @@ TransientPeak RunCase(const Project& project, const reduced_models::PeakCase& pc
   // The largest shaft (or brake) torque on the load path, referred to the shaft speed.
   for (const sim::PeakTorque& p : sim::ComponentPeakTorques(model, project, report)) {
     const Component* c = project.FindComponent(p.element);
-    if (!c || (c->type != "torque_shaft" && c->type != "wing_tip_brake")) continue;
+    const model::ComponentModel* m = c ? model::FindComponentModel(c->type) : nullptr;
+    if (!m || !(m->roles().segment || m->roles().tip_brake)) continue;
     if (std::find(pc.load_path.begin(), pc.load_path.end(), p.element) == pc.load_path.end()) continue;
     auto k = model.speed_factor.find(p.element);
     const double at_shaft_speed = std::abs(p.tau) * (k == model.speed_factor.end() ? 1.0 : k->second);
