@@ -219,14 +219,15 @@ ModeData Evaluate(const detail::Graph& g, const detail::ParameterMode& mode, con
   for (std::size_t i = 0; i < count; ++i) {
     const Component& c = *g.nodes[i].component;
     const Interval n2 = n[i] * n[i];
-    if (detail::HasRole(c, &model::ComponentRoles::segment)) {
-      const model::Lumped<Interval> segment = detail::LumpedOf<Interval>(c, mode);
-      d.link_c[i] = *segment.c * n2;
-      d.link_J[i] = segment.J * n2;
+    const model::ComponentModel* m = g.nodes[i].model;
+    const model::Lumped<Interval> lumped = detail::LumpedOf<Interval>(c, mode, m);
+    if (m && m->roles().segment) {
+      d.link_c[i] = *lumped.c * n2;
+      d.link_J[i] = lumped.J * n2;
       continue;
     }
-    d.J[i] = detail::ComponentInertia<Interval>(c, mode) * n2;
-    if (const auto stiffness = detail::ComponentStiffness<Interval>(c, mode)) d.link_c[i] = *stiffness * n2;
+    d.J[i] = lumped.J * n2;
+    if (lumped.c) d.link_c[i] = *lumped.c * n2;
   }
   if (nominal && InertiaOrStiffnessOnly(mode.parameter)) {
     d.back = nominal->back;

@@ -71,7 +71,7 @@ Graph BuildGraph(const Project& project) {
     const Pending item = stack.back();
     stack.pop_back();
     const int index = static_cast<int>(g.nodes.size());
-    g.nodes.push_back({item.component, item.parent, item.port, {}, item.entry});
+    g.nodes.push_back({item.component, item.parent, item.port, {}, item.entry, ModelOf(*item.component)});
     if (item.parent >= 0) g.nodes[item.parent].children.push_back(index);
     g.index[item.component->id] = index;
     const Component& c = *item.component;

@@ -25,6 +25,7 @@ struct GraphNode {
   std::string parent_port;  ///< port of the parent it hangs on ("left", "output", "branch", ...)
   std::vector<int> children;
   std::string entry_port;   ///< its own port towards the parent ("input", "a"; "" for the PDU)
+  const model::ComponentModel* model = nullptr;  ///< its type's model (nullptr: unknown type)
 };
 
 /// The component model of the component's type (model/src/components), or nullptr.
@@ -48,7 +49,10 @@ struct Graph {
   const std::string& Type(int i) const { return nodes[i].component->type; }
   bool IsActuator(int i) const { return Has(i, &model::ComponentRoles::actuator); }
   /// True when node i's type has the role.
-  bool Has(int i, bool model::ComponentRoles::*role) const { return HasRole(*nodes[i].component, role); }
+  bool Has(int i, bool model::ComponentRoles::*role) const {
+    const model::ComponentModel* m = nodes[i].model;
+    return m && m->roles().*role;
+  }
   /// Path from node i up to the PDU (i first).
   std::vector<int> PathToRoot(int i) const {
     std::vector<int> path;
@@ -114,7 +118,7 @@ std::vector<T> SpeedRatios(const Graph& g, const ParameterMode& mode) {
     if (node.parent < 0) continue;
     const GraphNode& up = g.nodes[node.parent];
     const Component& parent = *up.component;
-    const model::ComponentModel* m = ModelOf(parent);
+    const model::ComponentModel* m = up.model;
     const model::PortRatio law = m ? m->SpeedRatioLaw(up.entry_port, node.parent_port) : model::PortRatio{};
     if (law.parameter.empty() || law.power == 0)
       n[i] = n[node.parent];
@@ -143,21 +147,15 @@ class ModeReader final : public model::ParameterReader<T> {
 /// The component's contribution to the lumped models, from its type's lumped law
 /// (ComponentModel::LumpedAtInput); the default law for a type without a model.
 template <class T>
-model::Lumped<T> LumpedOf(const Component& c, const ParameterMode& mode) {
+model::Lumped<T> LumpedOf(const Component& c, const ParameterMode& mode, const model::ComponentModel* m) {
   const ModeReader<T> reader(c, mode);
-  const model::ComponentModel* m = ModelOf(c);
   return m ? m->LumpedAtInput(reader) : model::DefaultLumped<T>(reader);
 }
+template <class T>
+model::Lumped<T> LumpedOf(const Component& c, const ParameterMode& mode) {
+  return LumpedOf<T>(c, mode, ModelOf(c));
+}
 
-/// Torsional stiffness and inertia of a segment (a torque shaft) at its own speed.
-template <class T>
-T ShaftSegmentStiffness(const Component& c, const ParameterMode& mode) {
-  return *LumpedOf<T>(c, mode).c;
-}
-template <class T>
-T ShaftSegmentInertia(const Component& c, const ParameterMode& mode) {
-  return LumpedOf<T>(c, mode).J;
-}
 template <class T>
 T ShaftSegmentMass(const Component& c, const ParameterMode& mode) {
   if (HasValue(c, "linear_density")) return Read<T>(c, "linear_density", mode) * Read<T>(c, "length", mode);
@@ -171,24 +169,6 @@ T ShaftTorqueCapacity(const Component& c, const ParameterMode& mode) {
   return Read<T>(c, "allowable_shear_stress", mode) * TubePolarMoment(D, Read<T>(c, "wall_thickness", mode)) /
          (D * T(0.5));
 }
-
-/// Concentrated inertia of a component at its own input speed [kg*m^2] (a segment: none, its
-/// inertia is the link's).
-template <class T>
-T ComponentInertia(const Component& c, const ParameterMode& mode) {
-  if (HasRole(c, &model::ComponentRoles::segment)) return T(0.0);
-  return LumpedOf<T>(c, mode).J;
-}
-
-/// Elastic stiffness of a non-segment component when it has one (limiters: the normal-operation
-/// stiffness c1 of the paper's figure 4; others: an optional "stiffness").
-template <class T>
-std::optional<T> ComponentStiffness(const Component& c, const ParameterMode& mode) {
-  if (HasRole(c, &model::ComponentRoles::segment)) return std::nullopt;
-  return LumpedOf<T>(c, mode).c;
-}
-
-inline bool AccumulatesInertia(const Component& c) { return HasRole(c, &model::ComponentRoles::lumps_inertia); }
 
 /// A transmission with scalar T; Project() turns it into the public double Transmission.
 template <class T>
@@ -228,19 +208,20 @@ TransmissionDraft<T> BuildTransmission(const Graph& g, const ParameterMode& mode
     const int parent = g.nodes[i].parent;
     const bool root = parent < 0 || (only_subtree_of >= 0 && static_cast<int>(i) == only_subtree_of);
     int at = root ? -1 : t.point_of_node[parent];
-    if (HasRole(c, &model::ComponentRoles::segment)) {
+    const model::ComponentModel* m = g.nodes[i].model;
+    const model::Lumped<T> lumped = LumpedOf<T>(c, mode, m);
+    if (m && m->roles().segment) {
       if (root) at = static_cast<int>(t.points.size()), t.points.push_back({c.id + ".a", T(0.0), false, ""});
       const int end = static_cast<int>(t.points.size());
       t.points.push_back({c.id + ".b", T(0.0), false, ""});
       t.link_of_node[i] = static_cast<int>(t.links.size());
-      const model::Lumped<T> segment = LumpedOf<T>(c, mode);
-      t.links.push_back({at, end, *segment.c * n2, segment.J * n2, c.id, c.id});
+      t.links.push_back({at, end, *lumped.c * n2, lumped.J * n2, c.id, c.id});
       t.point_of_node[i] = end;
       continue;
     }
-    const T J = ComponentInertia<T>(c, mode) * n2;
-    const std::optional<T> stiffness = ComponentStiffness<T>(c, mode);
-    const bool accumulate = AccumulatesInertia(c);
+    const T J = lumped.J * n2;
+    const std::optional<T> stiffness = lumped.c;
+    const bool accumulate = m && m->roles().lumps_inertia;
     if (root || stiffness) {
       const int point = static_cast<int>(t.points.size());
       t.points.push_back({c.id, J, accumulate, c.id});

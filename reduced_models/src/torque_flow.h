@@ -41,7 +41,7 @@ Flow<T> SolveFlow(const Graph& g, const ParameterMode& mode, const std::map<std:
     // through a type without one (PDU output, limiters, brakes, sensors, disconnectors).
     auto load = loads.find(c.id);
     const model::SteadyFlow<T> in{through, branch, T(load == loads.end() ? 0.0 : load->second), w, on};
-    const model::ComponentModel* m = ModelOf(c);
+    const model::ComponentModel* m = g.nodes[k].model;
     const T tau = m ? m->InputTorque(ModeReader<T>(c, mode), in) : through;
     f.tau_in[k] = tau;
   }

@@ -1,6 +1,7 @@
 // The component registry: one line per component type (its model is in <type>.cc beside this
 // file). The order is the catalogue's.
 #include <algorithm>
+#include <unordered_map>
 
 #include "component_util.h"
 #include "highlift/core/catalogue.h"
@@ -88,9 +89,13 @@ const std::vector<const ComponentModel*>& ComponentModels() {
 }
 
 const ComponentModel* FindComponentModel(std::string_view type) {
-  for (const ComponentModel* m : ComponentModels())
-    if (m->type() == type) return m;
-  return nullptr;
+  static const std::unordered_map<std::string_view, const ComponentModel*> by_type = [] {
+    std::unordered_map<std::string_view, const ComponentModel*> m;
+    for (const ComponentModel* model : ComponentModels()) m.emplace(model->type(), model);
+    return m;
+  }();
+  auto it = by_type.find(type);
+  return it == by_type.end() ? nullptr : it->second;
 }
 
 std::vector<std::string> TypesWithRole(bool ComponentRoles::*role) {
