@@ -10,6 +10,7 @@
 
 #include "highlift/campaign/campaign.h"
 #include "highlift/core/error.h"
+#include "highlift/model/component_model.h"
 #include "highlift/reduced_models/analyses.h"
 #include "highlift/sim/simulator.h"
 
@@ -74,7 +75,8 @@ CaseSimulation SimulateCase(const Project& project, const Scenario& scenario, co
   out.load_path_peak = {"", 0.0, 0.0};
   for (const sim::PeakTorque& p : out.components) {
     const Component* c = project.FindComponent(p.element);
-    if (!c || (c->type != "torque_shaft" && c->type != "wing_tip_brake")) continue;
+    const model::ComponentModel* m = c ? model::FindComponentModel(c->type) : nullptr;
+    if (!m || !(m->roles().segment || m->roles().tip_brake)) continue;
     if (!load_path.empty() && std::find(load_path.begin(), load_path.end(), p.element) == load_path.end()) continue;
     auto k = model.speed_factor.find(p.element);
     const double at_shaft_speed = std::abs(p.tau) * (k == model.speed_factor.end() ? 1.0 : k->second);

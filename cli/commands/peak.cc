@@ -16,6 +16,7 @@
 #include "highlift/core/error.h"
 #include "highlift/core/project_io.h"
 #include "highlift/core/text_table.h"
+#include "highlift/model/component_model.h"
 #include "highlift/reduced_models/analyses.h"
 #include "highlift/sim/drive_network.h"
 

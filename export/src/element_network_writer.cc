@@ -3,6 +3,7 @@
 // the MSL reference results.
 #include <algorithm>
 #include <set>
+#include <sstream>
 
 #include "highlift/core/catalogue.h"
 #include "highlift/core/error.h"
@@ -60,9 +61,54 @@ const std::map<std::string, std::string>& ClassOfElementType() {
   return classes;
 }
 
+/// The text of a HighLift class file of the embedded library ("HighLift.Mechanical.Jam" ->
+/// HighLift/Mechanical/Jam.mo), empty when there is none.
+std::string_view HighLiftClassText(const std::string& cls) {
+  std::string path = cls;
+  std::replace(path.begin(), path.end(), '.', '/');
+  path += ".mo";
+  for (const auto& [file, text] : EmbeddedLibrary())
+    if (file == path) return text;
+  return {};
+}
+
+/// True when a line of the class text that contains `marker` declares `name` (the word after
+/// the type, followed by a blank, '=', '(', ';' or a comment).
+bool Declares(std::string_view text, std::string_view marker, const std::string& name) {
+  std::size_t line_start = 0;
+  while (line_start < text.size()) {
+    std::size_t line_end = text.find('\n', line_start);
+    if (line_end == std::string_view::npos) line_end = text.size();
+    const std::string_view line = text.substr(line_start, line_end - line_start);
+    if (const auto at = line.find(marker); at != std::string_view::npos) {
+      for (std::size_t pos = line.find(name, at + marker.size()); pos != std::string_view::npos;
+           pos = line.find(name, pos + 1)) {
+        const char before = line[pos - 1];
+        const char after = pos + name.size() < line.size() ? line[pos + name.size()] : ';';
+        if ((before == ' ' || before == '\t') && std::string_view(" =(;\"").find(after) != std::string_view::npos)
+          return true;
+      }
+    }
+    line_start = line_end + 1;
+  }
+  return false;
+}
+
+bool HighLiftDeclaresParameter(const std::string& cls, const std::string& name) {
+  return Declares(HighLiftClassText(cls), "parameter ", name);
+}
+
+bool HighLiftDeclaresBooleanConnector(const std::string& cls, const std::string& port) {
+  const std::string_view text = HighLiftClassText(cls);
+  return Declares(text, "Modelica.Blocks.Interfaces.BooleanInput", port) ||
+         Declares(text, "Modelica.Blocks.Interfaces.BooleanOutput", port);
+}
+
 /// True when the MSL class declares `name` itself (Integrator.y_start is a parameter, not the
-/// start value of a variable y_start).
+/// start value of a variable y_start), or the HighLift class declares a parameter `name`
+/// (DifferentialCylinder.s_start, Volume.p_start).
 bool HasModifier(const std::string& cls, const std::string& name) {
+  if (cls.rfind("HighLift.", 0) == 0) return HighLiftDeclaresParameter(cls, name);
   if (cls.rfind("Modelica.", 0) != 0) return false;
   const auto known = MslModifiers(cls);
   return std::find(known.begin(), known.end(), name) != known.end();
@@ -84,78 +130,150 @@ bool IsHeatCapacitorParameter(const std::string& name) {
   return name == "C_heatPort" || name == "T_heatPort_start";
 }
 
+// Integer parameters of the element types that are enumerations of Modelica.Blocks.Types.
+std::string EnumerationValue(const std::string& parameter, double value, const std::string& what) {
+  static const std::map<std::string, std::pair<std::string, std::vector<std::string>>> enumerations = {
+      {"extrapolation", {"Extrapolation", {"HoldLastPoint", "LastTwoPoints", "Periodic", "NoExtrapolation"}}},
+      {"smoothness", {"Smoothness", {"LinearSegments", "ContinuousDerivative", "ConstantSegments"}}},
+      {"timeEvents", {"TimeEvents", {"Always", "AtDiscontinuities", "NoTimeEvents"}}}};
+  auto it = enumerations.find(parameter);
+  if (it == enumerations.end()) return {};
+  const auto index = static_cast<long long>(value);
+  if (index < 1 || index > static_cast<long long>(it->second.second.size()))
+    throw InputError(what + " = " + FormatInteger(value) + " is no value of Modelica.Blocks.Types." +
+                     it->second.first);
+  return "Modelica.Blocks.Types." + it->second.first + "." + it->second.second[index - 1];
+}
+
+// Output ports that are vectors in the Modelica class (one table column): port -> "y[1]".
+std::string ModelicaPort(const std::string& type, const std::string& port) {
+  if ((type == "CombiTimeTable" || type == "CombiTable1Ds") && port == "y") return "y[1]";
+  return port;
+}
+
+/// Boolean connectors of the HighLift classes (declared Modelica.Blocks.Interfaces.BooleanInput
+/// or BooleanOutput in the library). The element network carries every signal as a Real (0/1
+/// for a Boolean); where a Real source of the network meets a Boolean connector in Modelica the
+/// writer picks the Boolean counterpart of the source block (below).
+bool IsBooleanConnector(const std::string& cls, const std::string& port) {
+  return cls.rfind("HighLift.", 0) == 0 && HighLiftDeclaresBooleanConnector(cls, port);
+}
+
 }  // namespace
 
-ModelOutput WriteElementNetwork(const Project& project, const std::string& model_name,
-                                const ModelicaExportOptions& options) {
-  ModelOutput out;
-  const Scenario* scenario = SelectScenario(project, options);
-  if (scenario) out.scenario = scenario->name;
-
+ModelOutput WriteNetworkModel(const NetworkModel& network, const std::string& model_name) {
+  const auto& elements = *network.elements;
+  const auto& connections = *network.connections;
   IdentifierMap ids({model_name, "Modelica", "HighLift", "time"});
-  for (const auto& e : project.elements) ids.Add(e.id);
-
-  // Which ports are connected (support flanges switch useSupport on).
-  std::set<std::pair<std::string, std::string>> connected;
-  for (const auto& c : project.element_connections) {
-    connected.insert({c.a.component, c.a.port});
-    connected.insert({c.b.component, c.b.port});
+  std::map<std::string, const model::NetworkElement*> by_id;
+  for (const auto& e : elements) {
+    ids.Add(e.id);
+    by_id[e.id] = &e;
   }
-
-  ModelWriter writer(model_name);
-  std::vector<std::pair<std::string, std::string>> extra_connects;
-  std::vector<std::string> initial_equations;
-  for (const auto& e : project.elements) {
+  auto class_of = [&](const model::NetworkElement& e) -> const std::string& {
     const auto cls = ClassOfElementType().find(e.type);
     if (cls == ClassOfElementType().end())
       throw InputError("element '" + e.id + "': element type '" + e.type +
-                           "' has no Modelica class in the exporter (export/src/"
-                           "element_network_writer.cc); use a type listed by 'highlift info --elements'",
-                       e.where);
-    const ComponentTypeSpec* spec = FindElementType(e.type);
-    Instance inst{cls->second, ids.Get(e.id), {}, e.description};
+                       "' has no Modelica class in the exporter (export/src/"
+                       "element_network_writer.cc); use a type listed by 'highlift info --elements'");
+    return cls->second;
+  };
+
+  // Which ports are connected (support flanges switch useSupport on), and which signal outputs
+  // feed a Boolean connector or are fed by one.
+  std::set<std::pair<std::string, std::string>> connected, feeds_boolean, fed_by_boolean;
+  for (const auto& c : connections) {
+    connected.insert({c.a.component, c.a.port});
+    connected.insert({c.b.component, c.b.port});
+    for (const auto& [x, y] : {std::pair{&c.a, &c.b}, std::pair{&c.b, &c.a}}) {
+      auto other = by_id.find(y->component);
+      if (other == by_id.end() || !IsBooleanConnector(class_of(*other->second), y->port)) continue;
+      feeds_boolean.insert({x->component, x->port});
+      fed_by_boolean.insert({x->component, x->port});
+    }
+  }
+  // A Real source of the network in front of Boolean inputs, or a unit gain behind a Boolean
+  // output, is written as its Boolean counterpart.
+  auto boolean_counterpart = [&](const model::NetworkElement& e) -> std::string {
+    const auto& s = e.parameters.scalars;
+    auto value = [&](const char* name) {
+      auto it = s.find(name);
+      return it == s.end() ? 0.0 : it->second;
+    };
+    if (e.type == "Step" && feeds_boolean.count({e.id, "y"}) && value("height") == 1 && value("offset") == 0)
+      return "Modelica.Blocks.Sources.BooleanStep";
+    if (e.type == "Gain" && fed_by_boolean.count({e.id, "u"}) && value("k") == 1)
+      return "Modelica.Blocks.Math.BooleanToReal";
+    return {};
+  };
+
+  ModelWriter writer(model_name);
+  std::ostringstream table_file;
+  std::vector<std::pair<std::string, std::string>> extra_connects;
+  std::vector<std::string> initial_equations;
+  for (const auto& e : elements) {
+    const std::string& cls = class_of(e);
+    const ComponentTypeSpec* spec = e.spec ? e.spec : FindElementType(e.type);
+    const std::string name = ids.Get(e.id);
+    if (const std::string boolean = boolean_counterpart(e); !boolean.empty()) {
+      Instance inst{boolean, name, {}, e.description};
+      if (e.type == "Step")  // BooleanStep: false before startTime, true from then on
+        inst.modifiers.push_back({"startTime", FormatModelicaReal(e.parameters.scalars.at("startTime")), {}});
+      writer.AddInstance(inst);
+      continue;
+    }
+    Instance inst{cls, name, {}, e.description};
     bool heat_port = false;
+    auto given = [&](const std::string& parameter) {
+      auto it = e.given.find(parameter);
+      return it != e.given.end() && it->second;
+    };
     if (spec) {
       for (const ParameterSpec& p : spec->parameters) {
+        const std::string what = "element '" + e.id + "' parameter '" + p.name + "'";
         if (p.kind == ParameterKind::kTable) {
-          auto t = e.tables.find(p.name);
-          if (t == e.tables.end()) continue;  // MSL default table
-          inst.modifiers.push_back({p.name, FormatMatrix(t->second, "element '" + e.id + "' table '" + p.name + "'"), {}});
+          auto t = e.parameters.tables.find(p.name);
+          if (t == e.parameters.tables.end()) continue;  // MSL default table
+          if (network.tables_in_file) {
+            const auto& rows = t->second;
+            table_file << "double " << name << "(" << rows.size() << "," << (rows.empty() ? 0 : rows[0].size()) << ")\n";
+            for (const auto& row : rows) {
+              for (std::size_t i = 0; i < row.size(); ++i) table_file << (i ? " " : "") << FormatModelicaReal(row[i], name);
+              table_file << "\n";
+            }
+            inst.modifiers.push_back({"tableOnFile", "true", {}});
+            inst.modifiers.push_back({"tableName", "\"" + EscapeModelicaString(name) + "\"", {}});
+            inst.modifiers.push_back({"fileName", "Modelica.Utilities.Files.loadResource(\"modelica://" + model_name +
+                                                      "/" + model_name + ".txt\")", {}});
+          } else {
+            inst.modifiers.push_back({p.name, FormatMatrix(t->second, "element '" + e.id + "' table '" + p.name + "'"), {}});
+          }
           continue;
         }
         if (p.kind == ParameterKind::kText) continue;
-        auto it = e.parameters.find(p.name);
-        if (it == e.parameters.end()) continue;
-        const Parameter& value = it->second;
-        if (value.provenance == Provenance::kDefault) {
-          if (!value.nominal && !p.optional)
-            throw InputError("element '" + e.id + "' (" + e.type + "): parameter '" + p.name +
-                                 "' has no value and no default: give it in the project file",
-                             e.where);
-          continue;  // the MSL default applies
-        }
+        if (!given(p.name)) continue;  // the class default, which is the element type's default
         if (IsHeatCapacitorParameter(p.name)) continue;
-        const double v = RequireValue(e, p.name);
-        const std::string what = "element '" + e.id + "' parameter '" + p.name + "'";
+        auto it = e.parameters.scalars.find(p.name);
+        if (it == e.parameters.scalars.end()) continue;
+        const double v = it->second;
         const bool start_flag = p.name.size() > 6 && p.name.substr(p.name.size() - 6) == "_fixed" &&
-                                !HasModifier(cls->second, p.name);
+                                !HasModifier(cls, p.name);
         if (p.kind == ParameterKind::kBoolean && start_flag) {
           continue;  // phi_fixed = false: the `fixed` attribute of phi_start's modifier
         } else if (p.kind == ParameterKind::kBoolean) {
           if (p.name == "useHeatPort") heat_port = v != 0.0;
           inst.modifiers.push_back({p.name, v != 0.0 ? "true" : "false", {}});
         } else if (p.kind == ParameterKind::kInteger) {
-          inst.modifiers.push_back({p.name, FormatInteger(v), {}});
-        } else if (p.name.size() > 6 && p.name.substr(p.name.size() - 6) == "_start" &&
-                   !HasModifier(cls->second, p.name)) {
+          const std::string enumeration = EnumerationValue(p.name, v, what);
+          inst.modifiers.push_back({p.name, enumeration.empty() ? FormatInteger(v) : enumeration, {}});
+        } else if (p.name.size() > 6 && p.name.substr(p.name.size() - 6) == "_start" && !HasModifier(cls, p.name)) {
           // Initial values: MSL start values with fixed=true; a speed the class has no
           // variable for (Spring: w_rel) becomes an initial equation on the derivative.
           const std::string variable = p.name.substr(0, p.name.size() - 6);
-          const auto known = MslModifiers(cls->second);
-          const bool msl = cls->second.rfind("Modelica.", 0) == 0;
-          auto fixed_flag = e.parameters.find(variable + "_fixed");
-          const bool fixed = fixed_flag == e.parameters.end() || !fixed_flag->second.nominal ||
-                             *fixed_flag->second.nominal != 0.0;
+          const auto known = MslModifiers(cls);
+          const bool msl = cls.rfind("Modelica.", 0) == 0;
+          auto fixed_flag = e.parameters.scalars.find(variable + "_fixed");
+          const bool fixed = fixed_flag == e.parameters.scalars.end() || fixed_flag->second != 0.0;
           if (!msl || std::find(known.begin(), known.end(), variable) != known.end()) {
             inst.modifiers.push_back(
                 {variable, "", {{"start", FormatModelicaReal(v, what)}, {"fixed", fixed ? "true" : "false"}}});
@@ -165,15 +283,14 @@ ModelOutput WriteElementNetwork(const Project& project, const std::string& model
             initial_equations.push_back("der(" + inst.name + position + ") = " + FormatModelicaReal(v, what) + ";");
           } else {
             throw InputError("element '" + e.id + "' (" + e.type + "): initial value '" + p.name +
-                                 "' has no variable in " + cls->second + "; leave it out",
-                             e.where);
+                             "' has no variable in " + cls + "; leave it out");
           }
         } else if (p.name.size() > 8 && p.name.substr(p.name.size() - 8) == "_nominal" &&
-                   !HasModifier(cls->second, p.name)) {
+                   !HasModifier(cls, p.name)) {
           // A nominal value the class has no parameter for: the attribute of the variable
           // (Inertia: phi(nominal = ...); Spring: phi_rel(nominal = ...)).
           std::string variable = p.name.substr(0, p.name.size() - 8);
-          const auto known = MslModifiers(cls->second);
+          const auto known = MslModifiers(cls);
           if (std::find(known.begin(), known.end(), variable) == known.end()) variable += "_rel";
           inst.modifiers.push_back({variable, "", {{"nominal", FormatModelicaReal(v, what)}}});
         } else {
@@ -194,10 +311,11 @@ ModelOutput WriteElementNetwork(const Project& project, const std::string& model
       // The heat port of the eddy current brake goes into a lumped heat capacitor.
       const std::string cap = ids.Add(e.id + "_heatCapacitor");
       double C = 1.0, T0 = 293.15;
-      if (auto it = e.parameters.find("C_heatPort"); it != e.parameters.end() && it->second.nominal)
-        C = *it->second.nominal;
-      if (auto it = e.parameters.find("T_heatPort_start"); it != e.parameters.end() && it->second.nominal)
-        T0 = *it->second.nominal;
+      if (auto it = e.parameters.scalars.find("C_heatPort"); it != e.parameters.scalars.end() && given("C_heatPort"))
+        C = it->second;
+      if (auto it = e.parameters.scalars.find("T_heatPort_start");
+          it != e.parameters.scalars.end() && given("T_heatPort_start"))
+        T0 = it->second;
       writer.AddInstance({"Modelica.Thermal.HeatTransfer.Components.HeatCapacitor", cap,
                           {{"C", FormatModelicaReal(C, "C_heatPort"), {}},
                            {"T", "", {{"start", FormatModelicaReal(T0, "T_heatPort_start")}, {"fixed", "true"}}}},
@@ -205,17 +323,80 @@ ModelOutput WriteElementNetwork(const Project& project, const std::string& model
       extra_connects.emplace_back(ids.Get(e.id) + ".heatPort", cap + ".port");
     }
   }
-  for (const auto& c : project.element_connections) {
-    if (!ids.Contains(c.a.component) || !ids.Contains(c.b.component))
-      throw InputError("element connection " + c.a.ToString() + " - " + c.b.ToString() +
-                           ": refers to an unknown element; connect elements listed under 'elements'",
-                       c.where);
-    writer.AddConnect(ids.Get(c.a.component) + "." + c.a.port, ids.Get(c.b.component) + "." + c.b.port);
+  for (const auto& c : connections) {
+    auto end = [&](const PortRef& p) { return ids.Get(p.component) + "." + ModelicaPort(by_id.at(p.component)->type, p.port); };
+    writer.AddConnect(end(c.a), end(c.b));
   }
   for (auto& [a, b] : extra_connects) writer.AddConnect(a, b);
   for (auto& e : initial_equations) writer.AddInitialEquation(std::move(e));
 
-  Experiment experiment;
+  writer.SetExperiment(network.experiment);
+  writer.SetDescription(network.description);
+  ModelOutput out;
+  out.renamed = ids.Renamed();
+  if (network.documentation) writer.SetDocumentation(network.documentation(out.renamed));
+  out.text = writer.Render();
+  out.instances = writer.instance_count();
+  out.connects = writer.connect_count();
+  if (network.tables_in_file) out.extra_files.push_back({model_name + ".txt", "#1\n" + table_file.str()});
+  return out;
+}
+
+ModelOutput WriteElementNetwork(const Project& project, const std::string& model_name,
+                                const ModelicaExportOptions& options) {
+  // The project's elements as network elements: the parameters given in the project file are
+  // written, the defaults are the classes' own.
+  std::vector<model::NetworkElement> elements;
+  std::set<std::string> ids;
+  for (const auto& e : project.elements) {
+    if (!ClassOfElementType().count(e.type))
+      throw InputError("element '" + e.id + "': element type '" + e.type +
+                           "' has no Modelica class in the exporter (export/src/"
+                           "element_network_writer.cc); use a type listed by 'highlift info --elements'",
+                       e.where);
+    model::NetworkElement x;
+    x.id = e.id;
+    x.type = e.type;
+    x.spec = FindElementType(e.type);
+    x.description = e.description;
+    ids.insert(e.id);
+    if (x.spec) {
+      for (const ParameterSpec& p : x.spec->parameters) {
+        if (p.kind == ParameterKind::kTable) {
+          if (auto t = e.tables.find(p.name); t != e.tables.end()) x.parameters.tables[p.name] = t->second;
+          continue;
+        }
+        if (p.kind == ParameterKind::kText) continue;
+        auto it = e.parameters.find(p.name);
+        if (it == e.parameters.end()) continue;
+        if (it->second.provenance == Provenance::kDefault) {
+          if (!it->second.nominal && !p.optional)
+            throw InputError("element '" + e.id + "' (" + e.type + "): parameter '" + p.name +
+                                 "' has no value and no default: give it in the project file",
+                             e.where);
+          continue;  // the MSL default applies
+        }
+        x.parameters.scalars[p.name] = RequireValue(e, p.name);
+        x.given[p.name] = true;
+      }
+    }
+    elements.push_back(std::move(x));
+  }
+  std::vector<model::NetworkConnection> connections;
+  for (const auto& c : project.element_connections) {
+    if (!ids.count(c.a.component) || !ids.count(c.b.component))
+      throw InputError("element connection " + c.a.ToString() + " - " + c.b.ToString() +
+                           ": refers to an unknown element; connect elements listed under 'elements'",
+                       c.where);
+    connections.push_back({c.a, c.b});
+  }
+
+  NetworkModel network;
+  network.elements = &elements;
+  network.connections = &connections;
+  network.description = project.name;
+  const Scenario* scenario = SelectScenario(project, options);
+  Experiment& experiment = network.experiment;
   experiment.tolerance = project.settings.relative_tolerance;
   experiment.interval = project.settings.output_interval;
   if (scenario) {
@@ -228,24 +409,21 @@ ModelOutput WriteElementNetwork(const Project& project, const std::string& model
   } else if (auto it = project.settings.values.find("stop_time"); it != project.settings.values.end()) {
     experiment.stop_time = it->second;
   }
-  writer.SetExperiment(experiment);
-  writer.SetDescription(project.name);
-  std::string doc = "<html>\n<p>Element network of the highlift project <strong>" + HtmlEscape(project.name) +
-                    "</strong>, exported by <code>highlift export</code>. Every element is the Modelica "
-                    "Standard Library 4.0.0 class of its element type, with the project's instance "
-                    "names and parameters.</p>\n";
-  if (!project.description.empty()) doc += "<p>" + HtmlEscape(project.description) + "</p>\n";
-  const auto renamed = ids.Renamed();
-  if (!renamed.empty()) {
-    doc += "<p>Renamed to valid Modelica identifiers:</p>\n<ul>\n";
-    for (const auto& [from, to] : renamed) doc += "<li>" + HtmlEscape(from) + " &rarr; " + to + "</li>\n";
-    doc += "</ul>\n";
-  }
-  writer.SetDocumentation(doc + "</html>");
-  out.text = writer.Render();
-  out.renamed = renamed;
-  out.instances = writer.instance_count();
-  out.connects = writer.connect_count();
+  network.documentation = [&](const std::map<std::string, std::string>& renamed) {
+    std::string doc = "<html>\n<p>Element network of the highlift project <strong>" + HtmlEscape(project.name) +
+                      "</strong>, exported by <code>highlift export</code>. Every element is the Modelica "
+                      "Standard Library 4.0.0 class of its element type, with the project's instance "
+                      "names and parameters.</p>\n";
+    if (!project.description.empty()) doc += "<p>" + HtmlEscape(project.description) + "</p>\n";
+    if (!renamed.empty()) {
+      doc += "<p>Renamed to valid Modelica identifiers:</p>\n<ul>\n";
+      for (const auto& [from, to] : renamed) doc += "<li>" + HtmlEscape(from) + " &rarr; " + to + "</li>\n";
+      doc += "</ul>\n";
+    }
+    return doc + "</html>";
+  };
+  ModelOutput out = WriteNetworkModel(network, model_name);
+  if (scenario) out.scenario = scenario->name;
   return out;
 }
 

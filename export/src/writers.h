@@ -2,6 +2,7 @@
 // writers.
 #pragma once
 
+#include <functional>
 #include <map>
 #include <string>
 #include <string_view>
@@ -9,6 +10,8 @@
 #include <vector>
 
 #include "highlift/export/modelica.h"
+#include "highlift/model/network.h"
+#include "model_writer.h"
 
 namespace highlift::modelica_detail {
 
@@ -21,11 +24,28 @@ struct ModelOutput {
   int connects = 0;
 };
 
-/// A model using MSL classes directly, one instance per element.
+/// An element network as a Modelica model: one instance per element, the HighLift class of a
+/// HighLift element type and the MSL class of an MSL one, named after the element id (made a
+/// valid identifier: "shaft_l1.e1" -> shaft_l1_e1), with the parameters the element was given
+/// (the class defaults are the element types' defaults) and its description as comment.
+struct NetworkModel {
+  const std::vector<model::NetworkElement>* elements = nullptr;
+  const std::vector<model::NetworkConnection>* connections = nullptr;
+  std::string description;      ///< the model's description string
+  Experiment experiment;
+  bool tables_in_file = false;  ///< tables of CombiTimeTable/CombiTable1Ds in <model>.txt
+  /// The HTML documentation, given the ids renamed to Modelica identifiers (id -> name).
+  std::function<std::string(const std::map<std::string, std::string>&)> documentation;
+};
+ModelOutput WriteNetworkModel(const NetworkModel& network, const std::string& model_name);
+
+/// A model using MSL classes directly, one instance per element of the project's element
+/// network (WriteNetworkModel).
 ModelOutput WriteElementNetwork(const Project& project, const std::string& model_name,
                                 const ModelicaExportOptions& options);
 
-/// A model of the drive system built from HighLift and MSL components.
+/// A model of the drive system: the element network of the model layer
+/// (model::BuildDriveModel, the one the simulator integrates) written by WriteNetworkModel.
 ModelOutput WriteDriveSystem(const Project& project, const std::string& model_name,
                              const ModelicaExportOptions& options);
 

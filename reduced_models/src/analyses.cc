@@ -223,13 +223,15 @@ ModeData Evaluate(const detail::Graph& g, const detail::ParameterMode& mode, con
   for (std::size_t i = 0; i < count; ++i) {
     const Component& c = *g.nodes[i].component;
     const Interval n2 = n[i] * n[i];
-    if (c.type == "torque_shaft") {
-      d.link_c[i] = detail::ShaftSegmentStiffness<Interval>(c, mode) * n2;
-      d.link_J[i] = detail::ShaftSegmentInertia<Interval>(c, mode) * n2;
+    const model::ComponentModel* m = g.nodes[i].model;
+    const model::Lumped<Interval> lumped = detail::LumpedOf<Interval>(c, mode, m);
+    if (m && m->roles().segment) {
+      d.link_c[i] = *lumped.c * n2;
+      d.link_J[i] = lumped.J * n2;
       continue;
     }
-    d.J[i] = detail::ComponentInertia<Interval>(c, mode) * n2;
-    if (const auto stiffness = detail::ComponentStiffness<Interval>(c, mode)) d.link_c[i] = *stiffness * n2;
+    d.J[i] = lumped.J * n2;
+    if (lumped.c) d.link_c[i] = *lumped.c * n2;
   }
   if (nominal && InertiaOrStiffnessOnly(mode.parameter)) {
     d.back = nominal->back;
@@ -410,12 +412,12 @@ PeakReport AnalysePeaks(const Project& project, const PeakOptions& options) {
   // back-driven by the airload until the monitor trips and the brake engages; the brake is the stop.
   for (std::size_t i = 0; i < g.nodes.size(); ++i) {
     const int s = static_cast<int>(i);
-    if (g.Type(s) != "torque_shaft" || g.nodes[s].children.empty()) continue;
+    if (!g.Has(s, &model::ComponentRoles::segment) || g.nodes[s].children.empty()) continue;
     const int root = g.nodes[s].children.front();
     const std::vector<int> part = g.Subtree(root);
     int brake = -1;
     for (int k : part)
-      if (g.Type(k) == "wing_tip_brake") brake = k;
+      if (g.Has(k, &model::ComponentRoles::tip_brake)) brake = k;
     if (brake < 0 || brake == root) continue;  // no brake beyond, or nothing but the brake
     PeakCase pc;
     pc.kind = "rupture";
@@ -676,10 +678,10 @@ PeakStructure DescribePeaks(const Project& project, const PeakOptions& options) 
     const detail::GraphNode& n = g.nodes[i];
     PeakGraphNode node{n.component->id, n.component->type, n.parent, "", n.children};
     if (n.parent >= 0) {
-      const Component& parent = *g.nodes[n.parent].component;
-      if ((parent.type == "angle_gearbox" && n.parent_port == "output") ||
-          (parent.type == "branch_gearbox" && n.parent_port == "branch"))
-        node.gear = parent.id;
+      // A gear stage between the parent's entry and this node's port (its speed law has a ratio).
+      const detail::GraphNode& up = g.nodes[n.parent];
+      const model::ComponentModel* m = detail::ModelOf(*up.component);
+      if (m && !m->SpeedRatioLaw(up.entry_port, n.parent_port).parameter.empty()) node.gear = up.component->id;
     }
     out.nodes.push_back(std::move(node));
   }
@@ -727,12 +729,12 @@ PeakStructure DescribePeaks(const Project& project, const PeakOptions& options) 
   }
   for (std::size_t i = 0; i < g.nodes.size(); ++i) {
     const int s = static_cast<int>(i);
-    if (g.Type(s) != "torque_shaft" || g.nodes[s].children.empty()) continue;
+    if (!g.Has(s, &model::ComponentRoles::segment) || g.nodes[s].children.empty()) continue;
     const int root = g.nodes[s].children.front();
     const std::vector<int> part = g.Subtree(root);
     int brake = -1;
     for (int k : part)
-      if (g.Type(k) == "wing_tip_brake") brake = k;
+      if (g.Has(k, &model::ComponentRoles::tip_brake)) brake = k;
     if (brake < 0 || brake == root) continue;
     PeakCaseStructure pc;
     pc.kind = "rupture";

@@ -9,17 +9,13 @@ namespace highlift::reduced_models::detail {
 namespace {
 
 /// The flanges through which power leaves a component entered at its near flange.
-std::vector<std::string> OutgoingPorts(const std::string& type) {
-  if (type == "pdu") return {"left", "right"};
-  if (type == "branch_gearbox") return {"branch", "through"};  // the station first
-  if (type == "angle_gearbox" || type == "system_torque_limiter" || type == "station_torque_limiter")
-    return {"output"};
-  if (type == "geared_rotary_actuator" || type == "ballscrew_actuator" || type == "jam") return {};
-  return {"b"};
+std::vector<std::string> OutgoingPorts(const Component& c) {
+  const model::ComponentModel* m = ModelOf(c);
+  return m ? m->PowerPorts() : std::vector<std::string>{"b"};
 }
 
-bool IsNearPort(const std::string& type, const std::string& port) {
-  return port == "input" || port == "a" || type == "pdu";
+bool IsNearPort(const Component& c, const std::string& port) {
+  return port == "input" || port == "a" || HasRole(c, &model::ComponentRoles::drive_unit);
 }
 
 }  // namespace
@@ -58,7 +54,7 @@ Graph BuildGraph(const Project& project) {
   }
   const Component* pdu = nullptr;
   for (const Component& c : project.components)
-    if (c.type == "pdu") {
+    if (HasRole(c, &model::ComponentRoles::drive_unit)) {
       if (pdu)
         throw InputError("the project has two PDUs ('" + pdu->id + "' and '" + c.id +
                          "'); the reduced models need exactly one power drive unit");
@@ -69,17 +65,17 @@ Graph BuildGraph(const Project& project) {
                      "' has no component of type 'pdu'; the reduced models start the power flow at "
                      "the PDU: add one");
   // Depth-first, so each wing and each station reads in order; parents precede children.
-  struct Pending { const Component* component; int parent; std::string port; };
-  std::vector<Pending> stack{{pdu, -1, ""}};
+  struct Pending { const Component* component; int parent; std::string port; std::string entry; };
+  std::vector<Pending> stack{{pdu, -1, "", ""}};
   while (!stack.empty()) {
     const Pending item = stack.back();
     stack.pop_back();
     const int index = static_cast<int>(g.nodes.size());
-    g.nodes.push_back({item.component, item.parent, item.port, {}});
+    g.nodes.push_back({item.component, item.parent, item.port, {}, item.entry, ModelOf(*item.component)});
     if (item.parent >= 0) g.nodes[item.parent].children.push_back(index);
     g.index[item.component->id] = index;
     const Component& c = *item.component;
-    const std::vector<std::string> ports = OutgoingPorts(c.type);
+    const std::vector<std::string> ports = OutgoingPorts(c);
     for (auto port = ports.rbegin(); port != ports.rend(); ++port) {
       auto it = peer.find(PortRef{c.id, *port});
       if (it == peer.end()) continue;
@@ -91,11 +87,11 @@ Graph BuildGraph(const Project& project) {
       if (g.index.count(other->id) || std::any_of(stack.begin(), stack.end(), [&](const Pending& p) { return p.component == other; }))
         throw InputError("component '" + other->id + "' is reached twice from the PDU (the drive forms a "
                          "loop); the reduced models need a tree: remove one connection");
-      if (!IsNearPort(other->type, next.port))
+      if (!IsNearPort(*other, next.port))
         throw InputError("component '" + other->id + "' (" + other->type + ") is reached from the PDU through its '" +
                          next.port + "' flange; connect its 'input' (or 'a') flange towards the PDU so its "
                          "gear ratio reads input speed / output speed");
-      stack.push_back({other, index, *port});
+      stack.push_back({other, index, *port, next.port});
     }
   }
   return g;

@@ -12,6 +12,7 @@
 
 #include "highlift/core/catalogue.h"
 #include "highlift/core/project.h"
+#include "highlift/model/component_model.h"
 #include "highlift/reduced_models/lumped_model.h"
 #include "interval.h"
 #include "laws.h"
@@ -23,7 +24,17 @@ struct GraphNode {
   int parent = -1;          ///< index of the upstream component, -1 for the PDU
   std::string parent_port;  ///< port of the parent it hangs on ("left", "output", "branch", ...)
   std::vector<int> children;
+  std::string entry_port;   ///< its own port towards the parent ("input", "a"; "" for the PDU)
+  const model::ComponentModel* model = nullptr;  ///< its type's model (nullptr: unknown type)
 };
+
+/// The component model of the component's type (model/src/components), or nullptr.
+inline const model::ComponentModel* ModelOf(const Component& c) { return model::FindComponentModel(c.type); }
+/// True when the component's type has the role (false for an unknown type).
+inline bool HasRole(const Component& c, bool model::ComponentRoles::*role) {
+  const model::ComponentModel* m = ModelOf(c);
+  return m && m->roles().*role;
+}
 
 /// Components reachable from the PDU, parents before children. Throws InputError when the
 /// project has no PDU, or a component is entered through its far flange (ratio convention).
@@ -36,7 +47,12 @@ struct Graph {
   }
   const std::string& Id(int i) const { return nodes[i].component->id; }
   const std::string& Type(int i) const { return nodes[i].component->type; }
-  bool IsActuator(int i) const { return Type(i) == "geared_rotary_actuator" || Type(i) == "ballscrew_actuator"; }
+  bool IsActuator(int i) const { return Has(i, &model::ComponentRoles::actuator); }
+  /// True when node i's type has the role.
+  bool Has(int i, bool model::ComponentRoles::*role) const {
+    const model::ComponentModel* m = nodes[i].model;
+    return m && m->roles().*role;
+  }
   /// Path from node i up to the PDU (i first).
   std::vector<int> PathToRoot(int i) const {
     std::vector<int> path;
@@ -100,34 +116,46 @@ std::vector<T> SpeedRatios(const Graph& g, const ParameterMode& mode) {
   for (std::size_t i = 0; i < g.nodes.size(); ++i) {
     const GraphNode& node = g.nodes[i];
     if (node.parent < 0) continue;
-    const Component& parent = *g.nodes[node.parent].component;
-    T ratio(1.0);
-    if ((parent.type == "angle_gearbox" && node.parent_port == "output") ||
-        (parent.type == "branch_gearbox" && node.parent_port == "branch"))
-      ratio = Read<T>(parent, "ratio", mode);
-    n[i] = n[node.parent] / ratio;
+    const GraphNode& up = g.nodes[node.parent];
+    const Component& parent = *up.component;
+    const model::ComponentModel* m = up.model;
+    const model::PortRatio law = m ? m->SpeedRatioLaw(up.entry_port, node.parent_port) : model::PortRatio{};
+    if (law.parameter.empty() || law.power == 0)
+      n[i] = n[node.parent];
+    else if (law.power < 0)
+      n[i] = n[node.parent] / Read<T>(parent, law.parameter, mode);
+    else
+      n[i] = n[node.parent] * Read<T>(parent, law.parameter, mode);
   }
   return n;
 }
 
-/// Torsional stiffness of a shaft segment at its own speed: given "stiffness", else the tube law.
+/// A component's parameters as its laws read them (model::ParameterReader) in a ParameterMode.
 template <class T>
-T ShaftSegmentStiffness(const Component& c, const ParameterMode& mode) {
-  if (HasValue(c, "stiffness")) return Read<T>(c, "stiffness", mode);
-  return ShaftStiffness(Read<T>(c, "shear_modulus", mode), Read<T>(c, "outer_diameter", mode),
-                        Read<T>(c, "wall_thickness", mode), Read<T>(c, "length", mode));
+class ModeReader final : public model::ParameterReader<T> {
+ public:
+  ModeReader(const Component& c, const ParameterMode& mode) : c_(c), mode_(mode) {}
+  T operator()(std::string_view name) const override { return Read<T>(c_, name, mode_); }
+  bool Has(std::string_view name) const override { return HasValue(c_, name); }
+  double Nominal(std::string_view name) const override { return NominalValue(c_, name); }
+
+ private:
+  const Component& c_;
+  const ParameterMode& mode_;
+};
+
+/// The component's contribution to the lumped models, from its type's lumped law
+/// (ComponentModel::LumpedAtInput); the default law for a type without a model.
+template <class T>
+model::Lumped<T> LumpedOf(const Component& c, const ParameterMode& mode, const model::ComponentModel* m) {
+  const ModeReader<T> reader(c, mode);
+  return m ? m->LumpedAtInput(reader) : model::DefaultLumped<T>(reader);
 }
 template <class T>
-T ShaftSegmentInertia(const Component& c, const ParameterMode& mode) {
-  if (HasValue(c, "inertia")) return Read<T>(c, "inertia", mode);
-  if (HasValue(c, "linear_density")) {
-    // Thin tube: J = m r^2 with r the mean radius.
-    const T r = (Read<T>(c, "outer_diameter", mode) - Read<T>(c, "wall_thickness", mode)) * T(0.5);
-    return Read<T>(c, "linear_density", mode) * Read<T>(c, "length", mode) * r * r;
-  }
-  return ShaftInertia(Read<T>(c, "density", mode), Read<T>(c, "outer_diameter", mode),
-                      Read<T>(c, "wall_thickness", mode), Read<T>(c, "length", mode));
+model::Lumped<T> LumpedOf(const Component& c, const ParameterMode& mode) {
+  return LumpedOf<T>(c, mode, ModelOf(c));
 }
+
 template <class T>
 T ShaftSegmentMass(const Component& c, const ParameterMode& mode) {
   if (HasValue(c, "linear_density")) return Read<T>(c, "linear_density", mode) * Read<T>(c, "length", mode);
@@ -140,36 +168,6 @@ T ShaftTorqueCapacity(const Component& c, const ParameterMode& mode) {
   const T D = Read<T>(c, "outer_diameter", mode);
   return Read<T>(c, "allowable_shear_stress", mode) * TubePolarMoment(D, Read<T>(c, "wall_thickness", mode)) /
          (D * T(0.5));
-}
-
-/// Concentrated inertia of a component at its own input speed [kg*m^2].
-template <class T>
-T ComponentInertia(const Component& c, const ParameterMode& mode) {
-  if (c.type == "pdu")
-    return Read<T>(c, "motor_inertia", mode) * T(NominalValue(c, "motor_count")) * Read<T>(c, "ratio", mode) *
-               Read<T>(c, "ratio", mode) +
-           Read<T>(c, "gear_inertia", mode);
-  if (c.type == "geared_rotary_actuator") return Read<T>(c, "input_inertia", mode) + Read<T>(c, "load_inertia", mode);
-  if (c.type == "ballscrew_actuator") return Read<T>(c, "input_inertia", mode);
-  if (c.type == "torque_shaft" || c.type == "disconnector" || c.type == "jam") return T(0.0);
-  if (HasValue(c, "inertia")) return Read<T>(c, "inertia", mode);
-  return T(0.0);
-}
-
-/// Elastic stiffness of a non-shaft component when it has one (limiters: the normal-operation
-/// stiffness c1 of the paper's figure 4; others: an optional "stiffness").
-template <class T>
-std::optional<T> ComponentStiffness(const Component& c, const ParameterMode& mode) {
-  if (c.type == "torque_shaft" || c.type == "jam") return std::nullopt;
-  if (c.type == "system_torque_limiter" || c.type == "station_torque_limiter")
-    return Read<T>(c, "stiffness_normal", mode);
-  if (HasValue(c, "stiffness")) return Read<T>(c, "stiffness", mode);
-  return std::nullopt;
-}
-
-inline bool AccumulatesInertia(const std::string& type) {
-  return type != "torque_shaft" && type != "steady_bearing" && type != "universal_joint" &&
-         type != "position_sensor" && type != "disconnector";
 }
 
 /// A transmission with scalar T; Project() turns it into the public double Transmission.
@@ -210,18 +208,20 @@ TransmissionDraft<T> BuildTransmission(const Graph& g, const ParameterMode& mode
     const int parent = g.nodes[i].parent;
     const bool root = parent < 0 || (only_subtree_of >= 0 && static_cast<int>(i) == only_subtree_of);
     int at = root ? -1 : t.point_of_node[parent];
-    if (c.type == "torque_shaft") {
+    const model::ComponentModel* m = g.nodes[i].model;
+    const model::Lumped<T> lumped = LumpedOf<T>(c, mode, m);
+    if (m && m->roles().segment) {
       if (root) at = static_cast<int>(t.points.size()), t.points.push_back({c.id + ".a", T(0.0), false, ""});
       const int end = static_cast<int>(t.points.size());
       t.points.push_back({c.id + ".b", T(0.0), false, ""});
       t.link_of_node[i] = static_cast<int>(t.links.size());
-      t.links.push_back({at, end, ShaftSegmentStiffness<T>(c, mode) * n2, ShaftSegmentInertia<T>(c, mode) * n2, c.id, c.id});
+      t.links.push_back({at, end, *lumped.c * n2, lumped.J * n2, c.id, c.id});
       t.point_of_node[i] = end;
       continue;
     }
-    const T J = ComponentInertia<T>(c, mode) * n2;
-    const std::optional<T> stiffness = ComponentStiffness<T>(c, mode);
-    const bool accumulate = AccumulatesInertia(c.type);
+    const T J = lumped.J * n2;
+    const std::optional<T> stiffness = lumped.c;
+    const bool accumulate = m && m->roles().lumps_inertia;
     if (root || stiffness) {
       const int point = static_cast<int>(t.points.size());
       t.points.push_back({c.id, J, accumulate, c.id});

@@ -36,7 +36,7 @@ std::string FmtBounds(const Domain& d) { return d.is_point() ? "" : "[" + Fmt(d.
 double ShaftMass(const Project& project) {
   double mass = 0.0;
   for (const Component& c : project.components)
-    if (c.type == "torque_shaft") mass += detail::ShaftSegmentMass<double>(c, {});
+    if (detail::HasRole(c, &model::ComponentRoles::segment)) mass += detail::ShaftSegmentMass<double>(c, {});
   return mass;
 }
 

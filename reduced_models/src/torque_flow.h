@@ -1,8 +1,8 @@
 // Steady-state torque flow on the component tree, templated on the scalar. Torques are positive
-// when they resist the commanded motion; every component's input-flange torque is
-//   tau_in = law(tau_out) + drag(|w_in|)
-// with gear stages by GearInputTorque (opposing / aiding efficiencies), drag by the Stribeck law
-// (paper eq. 3) or the shaft's drag per length, summed up to the PDU.
+// when they resist the commanded motion; every component's input-flange torque is its type's
+// steady-state law (ComponentModel::InputTorque: gear stages by GearInputTorque with opposing /
+// aiding efficiencies, drag by the Stribeck law or the shaft's drag per length), summed up to the
+// PDU.
 #pragma once
 
 #include <map>
@@ -19,25 +19,6 @@ struct Flow {
   std::vector<T> w_in;     ///< rad/s at each node's input flange
   std::vector<T> n;        ///< speed ratio w_in / w_pdu
 };
-
-template <class T>
-T PowInt(const T& x, int k) {
-  T r(1.0);
-  for (int i = 0; i < k; ++i) r = r * x;
-  return r;
-}
-
-template <class T>
-T StribeckOf(const Component& c, const ParameterMode& mode, const T& w_abs) {
-  return StribeckTorque(Read<T>(c, "coulomb_torque", mode), Read<T>(c, "viscous_coefficient", mode),
-                        Read<T>(c, "stribeck_torque", mode), Read<T>(c, "stribeck_decay", mode), w_abs);
-}
-
-template <class T>
-T MeshEfficiency(const Component& c, const ParameterMode& mode) {
-  const int meshes = HasValue(c, "meshes") ? static_cast<int>(NominalValue(c, "meshes")) : 1;
-  return PowInt(Read<T>(c, "eta_mesh", mode), meshes);
-}
 
 /// `loads`: actuator id -> output torque (positive opposing the motion). `w_pdu` >= 0 (an interval
 /// when the PDU speed is uncertain).
@@ -57,30 +38,12 @@ Flow<T> SolveFlow(const Graph& g, const ParameterMode& mode, const std::map<std:
     for (int child : g.nodes[k].children)
       (g.nodes[child].parent_port == "branch" ? branch : through) += f.tau_in[child];
     const T w = f.w_in[k];
-    T tau(0.0);
-    if (c.type == "torque_shaft") {
-      tau = through + on * Read<T>(c, "drag_per_length", mode) * Read<T>(c, "length", mode);
-    } else if (c.type == "steady_bearing") {
-      tau = through + on * StribeckOf<T>(c, mode, w);
-    } else if (c.type == "universal_joint") {
-      const T eta = Read<T>(c, "efficiency", mode);
-      tau = GearInputTorque(through, T(1.0), eta, eta);
-    } else if (c.type == "angle_gearbox") {
-      const T eta = MeshEfficiency<T>(c, mode);
-      tau = GearInputTorque(through, Read<T>(c, "ratio", mode), eta, eta) + on * StribeckOf<T>(c, mode, w);
-    } else if (c.type == "branch_gearbox") {
-      const T eta = MeshEfficiency<T>(c, mode);
-      tau = through + GearInputTorque(branch, Read<T>(c, "ratio", mode), eta, eta) + on * StribeckOf<T>(c, mode, w);
-    } else if (c.type == "geared_rotary_actuator" || c.type == "ballscrew_actuator") {
-      auto it = loads.find(c.id);
-      const T load(it == loads.end() ? 0.0 : it->second);
-      tau = GearInputTorque(load, Read<T>(c, "ratio", mode), Read<T>(c, "eta_opposing", mode),
-                            Read<T>(c, "eta_aiding", mode)) +
-            on * StribeckOf<T>(c, mode, w);
-    } else {
-      // PDU output (both sides), limiters, brakes, sensors, disconnectors: torque passes through.
-      tau = through;
-    }
+    // The component's steady-state law (model/src/components/<type>.cc); torque passes
+    // through a type without one (PDU output, limiters, brakes, sensors, disconnectors).
+    auto load = loads.find(c.id);
+    const model::SteadyFlow<T> in{through, branch, T(load == loads.end() ? 0.0 : load->second), w, on};
+    const model::ComponentModel* m = g.nodes[k].model;
+    const T tau = m ? m->InputTorque(ModeReader<T>(c, mode), in) : through;
     f.tau_in[k] = tau;
   }
   return f;

@@ -1,43 +1,13 @@
-// Internal: the hydraulic power drive unit as a sub-network of hydraulic and mechanical elements.
-//
-// A pdu component whose text parameter `drive` is "hydraulic" is built here into
-// elements of the HighLift.Hydraulics family: a supply (PressureSource, Tank), per motor a
-// ServoValve positioning a DifferentialCylinder that sets the displacement of a
-// VariableDisplacementMotor, a speed loop on the commanded speed, the two motors summed by a
-// differential and the PDU gearbox to the two transmission outputs.
+// The hydraulic PDU sub-network moved to the model layer (highlift/model/hydraulic_pdu.h); these
+// names keep the simulator's tests working.
 #pragma once
 
-#include <optional>
-#include <string>
-
-#include "highlift/core/project.h"
-#include "highlift/sim/network.h"
+#include "highlift/model/hydraulic_pdu.h"
 
 namespace highlift::sim::detail {
 
-/// The ports of an added hydraulic PDU, each "element.port" in the network it was added to.
-struct PduPorts {
-  std::string flange_left;   ///< output flange to the left transmission
-  std::string flange_right;  ///< output flange to the right transmission
-  std::string w_ref;         ///< signal input: commanded PDU output speed, rad/s
-  std::string phi;           ///< signal output: PDU output angle, rad
-  std::string w;             ///< signal output: PDU output speed, rad/s
-  std::string stop;          ///< signal input: shutdown command (> 0.5), when requested
-};
-
-/// True when the pdu component asks for the hydraulic drive (text parameter `drive` =
-/// "hydraulic"; absent or "speed_controlled" is the speed-controlled PDU). Throws InputError
-/// naming the component for any other value.
-bool IsHydraulicPdu(const Component& pdu);
-
-/// Adds the elements of the hydraulic PDU of component `pdu` (ids "<pdu.id>.<part>") to `net`
-/// and returns its ports. `motor_lost_time` (s; a scenario's value `motor_lost_time`): from
-/// then on the last motor is lost (displacement commanded to 0, its pressure-off brake
-/// applied); empty: every motor runs throughout. `with_stop`: the PDU gets the shutdown input
-/// PduPorts::stop (> 0.5, latched by its source, the monitor's wing-tip brake command): every
-/// motor's displacement is commanded to 0 and its pressure-off brake applied. Throws InputError
-/// naming the component and parameter for invalid parameters.
-PduPorts AddHydraulicPdu(Network& net, const Component& pdu,
-                         std::optional<double> motor_lost_time = std::nullopt, bool with_stop = false);
+using model::detail::AddHydraulicPdu;
+using model::detail::IsHydraulicPdu;
+using model::detail::PduPorts;
 
 }  // namespace highlift::sim::detail

@@ -1,5 +1,5 @@
-// The exported mechanical drive model against the simulator's translation of the same project
-// (sim::BuildDriveNetwork, sim/src/drive_network.cc), element by element: the A380-class example
+// The exported mechanical drive model against the simulator's model of the same project
+// (sim::BuildDriveNetwork, the model layer's network that both read), element by element: the A380-class example
 // at both resolutions in the scenarios that exercise every part of the translation (extension,
 // jam of an actuator, shaft rupture with the monitor, WTBs applied at a time, a retraction with
 // position-dependent airloads). Every simulator element has its instance (same class, every
@@ -74,36 +74,9 @@ SimSide Simulated(const Project& project, ModelResolution resolution, const std:
   return {model.network.elements(), model.network.connections()};
 }
 
-bool EndsWithNumber(const std::string& part, const std::string& prefix, std::string& number) {
-  if (part.size() <= prefix.size() || part.compare(0, prefix.size(), prefix) != 0) return false;
-  number = part.substr(prefix.size());
-  return std::all_of(number.begin(), number.end(), [](char c) { return c >= '0' && c <= '9'; });
-}
-
-/// The exported instance of a simulator element: the element id in the generator's spelling.
-std::string InstanceOf(const std::string& id) {
-  static const std::map<std::string, std::string> fixed = {{"wtb_command", "wtbCommand"},
-                                                          {"monitor.commanded_angle", "commandedAngle"}};
-  if (auto it = fixed.find(id); it != fixed.end()) return it->second;
-  static const std::map<std::string, std::string> parts = {
-      {"speed_command", "_speed"},   {"mass_a", "_massA"},         {"mass_b", "_massB"},
-      {"spring", ""},                {"jam", "_jam"},               {"airload", "_load"},
-      {"airload_table", "_loadTable"}, {"output_angle", "_angle"}, {"angle_sensor", "_phi"},
-      {"speed_sensor", "_w"},        {"angle_at_pdu", "_phiAtPdu"}, {"speed_at_pdu", "_wAtPdu"}};
-  std::string owner = id, part;
-  if (const auto dot = id.rfind('.'); dot != std::string::npos) {
-    owner = id.substr(0, dot);
-    part = id.substr(dot + 1);
-  }
-  std::replace(owner.begin(), owner.end(), '-', '_');  // a chain "first-last"
-  std::replace(owner.begin(), owner.end(), '.', '_');
-  if (part.empty()) return owner;
-  if (auto it = parts.find(part); it != parts.end()) return owner + it->second;
-  std::string number;
-  if (EndsWithNumber(part, "m", number)) return owner + "_mass" + number;    // shaft masses
-  if (EndsWithNumber(part, "e", number)) return owner + "_spring" + number;  // shaft elements
-  return owner + "_" + part;
-}
+/// The exported instance of a simulator element: the element id as a Modelica identifier
+/// (the export writes the model layer's network, the one the simulator integrates).
+std::string InstanceOf(const std::string& id) { return SanitizeModelicaIdentifier(id); }
 
 std::string ClassOf(const sim::NetworkElement& e) {
   static const std::map<std::string, std::string> classes = {
@@ -311,7 +284,7 @@ TEST(DriveSystemAgreement, ComparisonCoversFrictionRegularisationDampingAndShutd
   EXPECT_EQ(exported.instances.at("gra_l1_jam").modifiers.count("d"), 1u);
   EXPECT_EQ(exported.instances.at("pdu").modifiers.at("useStopInput"), "true");
   const std::string timed = testing::Flatten(testing::ExportedModelText(project, ModelResolution::kReduced, "rupture_wtb_timed"));
-  EXPECT_NE(timed.find("connect(wtbCommand.y, pdu.stop)"), std::string::npos);
+  EXPECT_NE(timed.find("connect(wtb_command.y, pdu.stop)"), std::string::npos);
   EXPECT_NE(testing::ExportedModelText(project, ModelResolution::kReduced, "retraction").find("Interval=0.02"), std::string::npos);
 }
 

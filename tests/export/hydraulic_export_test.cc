@@ -155,15 +155,9 @@ TEST(HydraulicExport, WingTipBrakeCommandShutsThePduDown) {
 
 // --- The exported hydraulic PDU against the simulator's, element by element ------------------
 
-/// Export instance of a simulator element of the PDU ("" for one the export does not have).
-std::string InstanceOf(const std::string& id) {
-  if (id == "pdu") return "";  // the simulator's speed sensor (column pdu.w)
-  if (id == "pdu.angle") return "pdu";
-  if (id == "pdu.speed_command") return "pdu_speed";
-  std::string name = id;
-  std::replace(name.begin(), name.end(), '.', '_');
-  return name;
-}
+/// Export instance of a simulator element of the PDU: its id as a Modelica identifier (the
+/// export writes the model layer's network, the one the simulator integrates).
+std::string InstanceOf(const std::string& id) { return SanitizeModelicaIdentifier(id); }
 
 std::string ClassOf(const std::string& id, const std::string& type) {
   // The shutdown input: an identity Gain on the 0/1 signal in the simulator, the conversion of
@@ -173,6 +167,7 @@ std::string ClassOf(const std::string& id, const std::string& type) {
                                                   "ServoValve", "DifferentialCylinder",
                                                   "VariableDisplacementMotor", "MotorSpeedControl"};
   if (hydraulic.count(type)) return "HighLift.Hydraulics." + type;
+  if (type == "SpeedSensor") return "Modelica.Mechanics.Rotational.Sensors.SpeedSensor";
   if (type == "Mass") return "Modelica.Mechanics.Translational.Components.Mass";
   if (type == "AngleSensor") return "Modelica.Mechanics.Rotational.Sensors.AngleSensor";
   if (type == "Gain" || type == "Add" || type == "Product") return "Modelica.Blocks.Math." + type;

@@ -182,7 +182,7 @@ TEST(DriveNetwork, ErrorsNameTheThingAndTheRemedy) {
   Project p = Example();
   p.FindComponent("shaft_l2a")->parameters.at("length").nominal.reset();
   ExpectThrowsWith([&] { BuildDriveNetwork(p, {.scenario = "extension"}); },
-                   "component 'shaft_l2a' (torque_shaft): parameter 'length' has no value to simulate with");
+                   "component 'shaft_l2a' (torque_shaft): parameter 'length' has no value for the drive model (simulate, export)");
 }
 
 TEST(DriveNetwork, SizingScenarioMadeUpForARupture) {

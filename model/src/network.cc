@@ -1,10 +1,10 @@
-#include "highlift/sim/network.h"
+#include "highlift/model/network.h"
 
 #include <cmath>
 
 #include "highlift/core/error.h"
 
-namespace highlift::sim {
+namespace highlift::model {
 
 namespace {
 
@@ -170,4 +170,4 @@ Network NetworkFromProject(const Project& project) {
   return net;
 }
 
-}  // namespace highlift::sim
+}  // namespace highlift::model

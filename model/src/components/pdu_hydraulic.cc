@@ -13,7 +13,7 @@
 // last motor's displacement is commanded to 0 and its pressure-off brake (Brake, holding
 // brake_torque/ratio at the motor) holds it; the differential then delivers half the speed of
 // the remaining motor at the full torque.
-#include "hydraulic_pdu.h"
+#include "highlift/model/hydraulic_pdu.h"
 
 #include <cmath>
 #include <numbers>
@@ -21,7 +21,7 @@
 #include "highlift/core/catalogue.h"
 #include "highlift/core/error.h"
 
-namespace highlift::sim::detail {
+namespace highlift::model::detail {
 namespace {
 
 std::string Where(const Component& pdu) { return "component '" + pdu.id + "' (pdu)"; }
@@ -86,7 +86,8 @@ PduPorts AddHydraulicPdu(Network& net, const Component& pdu, std::optional<doubl
 
   auto scalars = [](std::map<std::string, double> s) { return ElementParameters{std::move(s), {}}; };
   // Parts are "<pdu>.<part>": validated under a plain id in a scratch network, then adopted.
-  auto add = [&](const std::string& type, const std::string& full_id, ElementParameters parameters) {
+  auto add = [&](const std::string& type, const std::string& full_id, ElementParameters parameters,
+                 std::string description = {}) {
     Network scratch;
     try {
       scratch.AddElement(type, "part", std::move(parameters));
@@ -98,19 +99,21 @@ PduPorts AddHydraulicPdu(Network& net, const Component& pdu, std::optional<doubl
     }
     NetworkElement e = scratch.elements().front();
     e.id = full_id;
+    e.description = std::move(description);
     net.Adopt(e);
   };
 
   // Supply.
-  add("PressureSource", part("supply"), scalars({{"p_supply", p_s}}));
-  add("Tank", part("tank"), scalars({{"p_return", p_r}}));
-  add("TurbulentResistance", part("supply_line"), scalars({{"A", Value(pdu, "supply_line_area")}}));
-  add("Volume", part("supply_volume"),
-                 scalars({{"V", Value(pdu, "supply_volume")}, {"p_start", p_s}}));
+  add("PressureSource", part("supply"), scalars({{"p_supply", p_s}}), "hydraulic supply");
+  add("Tank", part("tank"), scalars({{"p_return", p_r}}), "return line");
+  add("TurbulentResistance", part("supply_line"), scalars({{"A", Value(pdu, "supply_line_area")}}),
+      "supply line and filters");
+  add("Volume", part("supply_volume"), scalars({{"V", Value(pdu, "supply_volume")}, {"p_start", p_s}}),
+      "oil volume of the supply line");
   net.Connect(port("supply", "port"), port("supply_line", "port_a"));
   net.Connect(port("supply_line", "port_b"), port("supply_volume", "port"));
   // The speed command, fanned out to the motors' speed loops.
-  add("Gain", part("w_ref"), scalars({{"k", 1.0}}));
+  add("Gain", part("w_ref"), scalars({{"k", 1.0}}), "PDU output speed command to the motors");
 
   if (motor_lost_time && !std::isfinite(*motor_lost_time))
     throw InputError(Where(pdu) + ": scenario value 'motor_lost_time' is not a finite time; give "
@@ -122,8 +125,9 @@ PduPorts AddHydraulicPdu(Network& net, const Component& pdu, std::optional<doubl
   std::string running;  // 1 - stop, when the PDU has a shutdown input
   if (with_stop || motor_lost) add("Constant", part("one"), scalars({{"k", 1.0}}));
   if (with_stop) {
-    add("Gain", part("stop"), scalars({{"k", 1.0}}));
-    add("Add", part("running"), scalars({{"k1", 1.0}, {"k2", -1.0}}));
+    add("Gain", part("stop"), scalars({{"k", 1.0}}),
+        "shutdown command (the wing-tip brake command) as a 0/1 signal");
+    add("Add", part("running"), scalars({{"k1", 1.0}, {"k2", -1.0}}), "motors in operation: 1 - stop");
     net.Connect(port("one", "y"), port("running", "u1"));
     net.Connect(port("stop", "y"), port("running", "u2"));
     running = port("running", "y");
@@ -131,7 +135,8 @@ PduPorts AddHydraulicPdu(Network& net, const Component& pdu, std::optional<doubl
   for (int k = 1; k <= n_m; ++k) {
     const std::string n = std::to_string(k);
     add("ServoValve", part("valve" + n),
-                   scalars({{"A_max", Value(pdu, "valve_area")}, {"T_v", Value(pdu, "valve_time_constant")}}));
+        scalars({{"A_max", Value(pdu, "valve_area")}, {"T_v", Value(pdu, "valve_time_constant")}}),
+        "servo valve of the displacement cylinder of motor " + n);
     add("DifferentialCylinder", part("cylinder" + n),
                    scalars({{"A_A", Value(pdu, "cylinder_area")},
                             {"A_B", Value(pdu, "cylinder_annulus_area")},
@@ -139,17 +144,21 @@ PduPorts AddHydraulicPdu(Network& net, const Component& pdu, std::optional<doubl
                             {"V0_A", Value(pdu, "cylinder_dead_volume")},
                             {"V0_B", Value(pdu, "cylinder_dead_volume")},
                             {"d", Value(pdu, "cylinder_damping")},
-                            {"s_start", 0.5 * s_max}}));
-    add("Mass", part("rod" + n), scalars({{"m", Value(pdu, "cylinder_mass")}}));
+                            {"s_start", 0.5 * s_max}}),
+        "displacement cylinder of motor " + n + " (mid-stroke: zero displacement)");
+    add("Mass", part("rod" + n), scalars({{"m", Value(pdu, "cylinder_mass")}}),
+        "piston, rod and swash plate of motor " + n);
     add("MotorSpeedControl", part("control" + n),
                    scalars({{"ratio", ratio},
                             {"k_w", Value(pdu, "speed_gain")},
                             {"T_i", Value(pdu, "speed_integral_time")},
                             {"k_s", Value(pdu, "position_gain")},
-                            {"s_max", s_max}}));
+                            {"s_max", s_max}}),
+        "speed loop of motor " + n);
     add("VariableDisplacementMotor", part("motor" + n),
-                   scalars({{"D_max", D_max}, {"G_leak", Value(pdu, "motor_leakage")}, {"eta_m", eta_m}}));
-    add("Inertia", part("rotor" + n), scalars({{"J", Value(pdu, "motor_inertia")}}));
+        scalars({{"D_max", D_max}, {"G_leak", Value(pdu, "motor_leakage")}, {"eta_m", eta_m}}),
+        "variable-displacement motor " + n + " (eta_m includes the PDU gearbox efficiency)");
+    add("Inertia", part("rotor" + n), scalars({{"J", Value(pdu, "motor_inertia")}}), "rotor of motor " + n);
 
     net.Connect(port("valve" + n, "port_P"), port("supply_volume", "port"));
     net.Connect(port("valve" + n, "port_T"), port("tank", "port"));
@@ -168,10 +177,11 @@ PduPorts AddHydraulicPdu(Network& net, const Component& pdu, std::optional<doubl
     const bool lost = motor_lost && k == n_m;
     std::string active;  // the signal "motor k in operation", or none (always)
     if (lost) {
-      add("Step", part("motor_lost"), scalars({{"height", -1.0}, {"offset", 1.0}, {"startTime", *motor_lost_time}}));
+      add("Step", part("motor_lost"), scalars({{"height", -1.0}, {"offset", 1.0}, {"startTime", *motor_lost_time}}),
+          "motor " + n + " lost");
       active = port("motor_lost", "y");
       if (!running.empty()) {
-        add("Product", part("active" + n), {});
+        add("Product", part("active" + n), {}, "motor " + n + " in operation");
         net.Connect(running, port("active" + n, "u1"));
         net.Connect(active, port("active" + n, "u2"));
         active = port("active" + n, "y");
@@ -181,32 +191,39 @@ PduPorts AddHydraulicPdu(Network& net, const Component& pdu, std::optional<doubl
     }
     if (!active.empty()) {
       net.Connect(active, port("control" + n, "active"));
-      add("Add", part("pob_command" + n), scalars({{"k1", 1.0}, {"k2", -1.0}}));
+      add("Add", part("pob_command" + n), scalars({{"k1", 1.0}, {"k2", -1.0}}),
+          "pressure-off brake of motor " + n + ": applied when the motor is out of operation");
       net.Connect(port("one", "y"), port("pob_command" + n, "u1"));
       net.Connect(active, port("pob_command" + n, "u2"));
       // Brake: tau = cgeo*mu*fn_max*f_normalized with mu = 0.5: the POB torque at the motor.
       add("Brake", part("pob" + n),
                      {{{"fn_max", 2.0 * Value(pdu, "brake_torque") / ratio}, {"cgeo", 1.0}},
-                      {{"mu_pos", {{0.0, 0.5}}}}});
+                      {{"mu_pos", {{0.0, 0.5}}}}},
+          "pressure-off brake of motor " + n + " (brake_torque at the output)");
       net.Connect(port("pob_command" + n, "y"), port("pob" + n, "f_normalized"));
       net.Connect(port("rotor" + n, "flange_b"), port("pob" + n, "flange_a"));
+    } else {
+      // Always in operation: the input `active` reads 1 (a connected constant, so that the
+      // network has every input connected, as a Modelica model must).
+      add("Constant", part("active" + n), scalars({{"k", 1.0}}), "motor " + n + " in operation");
+      net.Connect(port("active" + n, "y"), port("control" + n, "active"));
     }
   }
   // Differential and PDU gearbox. The gearbox efficiency is applied in the motors' eta_m.
-  add("IdealGear", part("gear"), scalars({{"ratio", ratio}}));
+  add("IdealGear", part("gear"), scalars({{"ratio", ratio}}), "PDU gearbox");
   if (n_m == 2) {
-    add("IdealPlanetary", part("differential"), scalars({{"ratio", 1.0}}));
+    add("IdealPlanetary", part("differential"), scalars({{"ratio", 1.0}}), "speed-summing differential");
     net.Connect(port("rotor1", "flange_b"), port("differential", "sun"));
     net.Connect(port("rotor2", "flange_b"), port("differential", "ring"));
     net.Connect(port("differential", "carrier"), port("gear", "flange_a"));
   } else {
     net.Connect(port("rotor1", "flange_b"), port("gear", "flange_a"));
   }
-  add("Inertia", part("output"), scalars({{"J", Value(pdu, "gear_inertia")}}));
+  add("Inertia", part("output"), scalars({{"J", Value(pdu, "gear_inertia")}}), "differential and gears at the output");
   net.Connect(port("gear", "flange_b"), port("output", "flange_a"));
   // Output angle and speed (the FPPU and the speed reported as "<pdu>.w").
-  add("SpeedSensor", id, {});
-  add("AngleSensor", part("angle"), {});
+  add("SpeedSensor", id, {}, pdu.description + " (output speed)");
+  add("AngleSensor", part("angle"), {}, "output angle (FPPU)");
   net.Connect(port("output", "flange_a"), id + ".flange");
   net.Connect(port("output", "flange_a"), port("angle", "flange"));
 
@@ -220,4 +237,4 @@ PduPorts AddHydraulicPdu(Network& net, const Component& pdu, std::optional<doubl
   return ports;
 }
 
-}  // namespace highlift::sim::detail
+}  // namespace highlift::model::detail

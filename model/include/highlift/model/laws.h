@@ -1,0 +1,64 @@
+// Physical laws of the component types that more than one analysis evaluates, each written once
+// and templated on its scalar: double (simulation, sizing at nominal values) and the interval
+// types of the enclosures (reduced_models' detail::Interval). A law uses only +, -, *, / and
+// construction from a double, so any scalar with those operations serves.
+// Symbols as in the paper and the Modelica Standard Library; SI units throughout.
+#pragma once
+
+#include <cmath>
+#include <numbers>
+
+#include "highlift/model/interval.h"
+
+namespace highlift::model {
+
+/// Polar second moment of area of a tube [m^4]: Ip = pi/32 (D^4 - d^4) with d = D - 2 t,
+/// factored as pi/8 (D^2 + d^2)(D - t) t so every factor is positive (tighter intervals).
+template <class T>
+T TubePolarMoment(const T& D, const T& t) {
+  const T d = D - T(2.0) * t;
+  return T(std::numbers::pi / 8.0) * (D * D + d * d) * (D - t) * t;
+}
+
+/// Torsional stiffness of a tube [N*m/rad]: c = G Ip / L.
+template <class T>
+T ShaftStiffness(const T& G, const T& D, const T& t, const T& L) {
+  return G * TubePolarMoment(D, t) / L;
+}
+
+/// Polar mass moment of inertia of a tube [kg*m^2]: J = rho Ip L.
+template <class T>
+T ShaftInertia(const T& rho, const T& D, const T& t, const T& L) {
+  return rho * TubePolarMoment(D, t) * L;
+}
+
+/// Mass of a tube [kg]: m = rho pi (D - t) t L.
+template <class T>
+T ShaftMass(const T& rho, const T& D, const T& t, const T& L) {
+  return rho * T(std::numbers::pi) * (D - t) * t * L;
+}
+
+/// Stribeck friction, the paper's equation (3), at speed magnitude w_abs >= 0 [rad/s]:
+/// tau = tau_Coulomb + d_vis w + tau_Stribeck exp(-f_exp w)  [N*m]; opposes the motion.
+template <class T>
+T StribeckTorque(const T& tau_Coulomb, const T& d_vis, const T& tau_Stribeck, const T& f_exp, const T& w_abs) {
+  using std::exp;
+  return tau_Coulomb + d_vis * w_abs + tau_Stribeck * exp(-(f_exp * w_abs));
+}
+
+/// Input torque of a gear stage carrying output torque tau_out (positive = opposing the motion,
+/// power flows input -> output) with ratio = w_in / w_out:
+///   opposing (tau_out >= 0): tau_in = tau_out / (ratio eta_opposing)
+///   aiding   (tau_out <  0): tau_in = tau_out eta_aiding / ratio
+/// The load-dependent loss is the paper's equation (4) expressed as an efficiency.
+template <class T>
+T GearInputTorque(const T& tau_out, const T& ratio, const T& eta_opposing, const T& eta_aiding) {
+  return BySign(
+      tau_out, [&](const T& x) { return x / (ratio * eta_opposing); },
+      [&](const T& x) { return x * eta_aiding / ratio; });
+}
+
+/// Efficiency of a gear train of `meshes` equal meshes of efficiency eta_mesh: eta = eta_mesh^n.
+inline double GearTrainEfficiency(double eta_mesh, double meshes) { return std::pow(eta_mesh, meshes); }
+
+}  // namespace highlift::model

@@ -1,0 +1,39 @@
+// branch_gearbox: the through shaft (ports input, through) with a branch to a station,
+// ratio = w_through / w_branch; one HighLift.Mechanical.BranchGearbox (gearbox.h).
+#include "gearbox.h"
+
+namespace highlift::model::components {
+namespace {
+
+class BranchGearboxModel final : public NamedModel {
+ public:
+  BranchGearboxModel() : NamedModel("branch_gearbox", {.lumps_inertia = true}) {}
+
+  PortRatio SpeedRatioLaw(std::string_view from, std::string_view to) const override {
+    // The branch turns 1/ratio as fast as the through shaft.
+    if (to == "branch" && from != "branch") return {"ratio", -1};
+    if (from == "branch" && to != "branch") return {"ratio", 1};
+    return {};
+  }
+  std::vector<std::string> PowerPorts() const override { return {"branch", "through"}; }  // the station first
+
+  /// Steady state: the through shaft 1:1, the branch a gear stage, plus its Stribeck friction.
+  template <class T>
+  T SteadyLaw(const ParameterReader<T>& p, const SteadyFlow<T>& in) const {
+    const T eta = MeshEfficiency(p);
+    return in.through + GearInputTorque(in.branch, p("ratio"), eta, eta) + in.friction * StribeckOf(p, in.w);
+  }
+  HIGHLIFT_STEADY_LAW
+
+  void Expand(const Component& c, ExpansionContext& x) const override {
+    x.Add("BranchGearbox", c.id, GearboxScalars(c, x), c.id);
+    x.MapPort(c, "input", c.id + ".flange_a");
+    x.MapPort(c, "through", c.id + ".flange_b");
+    x.MapPort(c, "branch", c.id + ".flange_branch");
+  }
+};
+
+}  // namespace
+}  // namespace highlift::model::components
+
+HIGHLIFT_REGISTER_COMPONENT(BranchGearbox, BranchGearboxModel)

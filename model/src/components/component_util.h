@@ -1,0 +1,92 @@
+// Helpers shared by the component models: reading a component's parameter values in SI.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "highlift/core/error.h"
+#include "highlift/model/component_model.h"
+#include "highlift/model/laws.h"
+
+namespace highlift::model::components {
+
+/// The nominal value of a parameter, when it has one.
+inline std::optional<double> Value(const Component& c, const std::string& name) {
+  auto it = c.parameters.find(name);
+  if (it == c.parameters.end()) return std::nullopt;
+  return it->second.nominal;
+}
+
+inline double ValueOr(const Component& c, const std::string& name, double fallback) {
+  return Value(c, name).value_or(fallback);
+}
+
+/// The nominal value; InputError naming the component, the parameter and the remedy otherwise.
+double Require(const Component& c, const std::string& name);
+
+/// The Stribeck friction parameters the component gives, by element parameter name (tau_C,
+/// d_vis, tau_S, f_exp).
+Scalars Stribeck(const Component& c);
+
+/// InputError "a backlash needs a stiffness" when the component gives a backlash without one.
+void CheckBacklash(const Component& c);
+
+/// A chain member with its inertia, its Coulomb drag and, when it gives a stiffness, that
+/// stiffness with the structural damping beta*c in series.
+inline ChainMember RigidOrElasticMember(const Component& c, double beta) {
+  ChainMember m{Require(c, "inertia"), ValueOr(c, "coulomb_torque", 0.0), Value(c, "stiffness"), std::nullopt};
+  if (m.c && beta > 0) m.d = beta * *m.c;
+  return m;
+}
+
+/// The Stribeck friction of a component at its input speed (coulomb_torque, viscous_coefficient,
+/// stribeck_torque, stribeck_decay).
+template <class T>
+T StribeckOf(const ParameterReader<T>& p, const T& w) {
+  return StribeckTorque(p("coulomb_torque"), p("viscous_coefficient"), p("stribeck_torque"), p("stribeck_decay"), w);
+}
+
+/// Efficiency of a gear train of `meshes` (default 1) meshes of efficiency eta_mesh.
+template <class T>
+T MeshEfficiency(const ParameterReader<T>& p) {
+  const int meshes = p.Has("meshes") ? static_cast<int>(p.Nominal("meshes")) : 1;
+  T eta(1.0);
+  for (int i = 0; i < meshes; ++i) eta = eta * p("eta_mesh");
+  return eta;
+}
+
+/// Helper base: the type name and the roles as constructor arguments.
+class NamedModel : public ComponentModel {
+ public:
+  NamedModel(std::string_view type, ComponentRoles roles = {}) : type_(type), roles_(roles) {}
+  std::string_view type() const override { return type_; }
+  ComponentRoles roles() const override { return roles_; }
+
+ private:
+  std::string_view type_;
+  ComponentRoles roles_;
+};
+
+/// Two-flange components (ports a and b) that are one element `c.id` with flanges a/b.
+inline void MapAB(const Component& c, ExpansionContext& x) {
+  x.MapPort(c, "a", c.id + ".flange_a");
+  x.MapPort(c, "b", c.id + ".flange_b");
+}
+
+/// Speed law of a gear stage: parameter "ratio" = speed at port `fast` / speed at the others.
+inline PortRatio GearSpeedRatio(std::string_view fast, std::string_view from, std::string_view to) {
+  if (from == fast && to != fast) return {"ratio", -1};
+  if (to == fast && from != fast) return {"ratio", 1};
+  return {};
+}
+
+}  // namespace highlift::model::components
+
+/// Registration: defines the accessor of one component model (listed in registry.cc).
+#define HIGHLIFT_REGISTER_COMPONENT(Name, ModelClass)                     \
+  namespace highlift::model::components {                                 \
+  const ComponentModel& Name##Component() {                                 \
+    static const ModelClass model;                                        \
+    return model;                                                         \
+  }                                                                       \
+  }

@@ -1,0 +1,36 @@
+// disconnector: a coupling that a rupture scenario may open, ports a and b; one
+// HighLift.Mechanical.Disconnector (stiff spring-damper until t_disconnect).
+#include "component_util.h"
+
+namespace highlift::model::components {
+namespace {
+
+constexpr double kDefaultStiffness = 1e6;  // N*m/rad, far above any shaft segment
+constexpr double kDefaultDamping = 100;    // N*m*s/rad
+
+class DisconnectorModel final : public NamedModel {
+ public:
+  DisconnectorModel() : NamedModel("disconnector", {.rupturable = true}) {}
+
+  /// No inertia of its own in the lumped models; its stiffness when given.
+  template <class T>
+  Lumped<T> Law(const ParameterReader<T>& p) const {
+    Lumped<T> out = DefaultLumped(p);
+    out.J = T(0.0);
+    return out;
+  }
+  HIGHLIFT_LUMPED_LAW
+
+  void Expand(const Component& c, ExpansionContext& x) const override {
+    Scalars s = {{"c", ValueOr(c, "stiffness", kDefaultStiffness)}, {"d", kDefaultDamping}};
+    if (const Scenario* scenario = x.scenario(); scenario && scenario->rupture_component == c.id)
+      s["t_disconnect"] = *scenario->rupture_time;
+    x.Add("Disconnector", c.id, s, c.id);
+    MapAB(c, x);
+  }
+};
+
+}  // namespace
+}  // namespace highlift::model::components
+
+HIGHLIFT_REGISTER_COMPONENT(Disconnector, DisconnectorModel)

@@ -1,0 +1,26 @@
+// geared_rotary_actuator: a rotary actuator at a flap or slat station (actuator.h); its travel
+// is the output angle travel_angle.
+#include "actuator.h"
+
+namespace highlift::model::components {
+namespace {
+
+class GearedRotaryActuatorModel final : public ActuatorModel {
+ public:
+  GearedRotaryActuatorModel() : ActuatorModel("geared_rotary_actuator") {}
+  double TravelAngle(const Component& c) const override { return Require(c, "travel_angle"); }
+
+  /// Input side plus the surface's inertia referred to the input.
+  template <class T>
+  Lumped<T> Law(const ParameterReader<T>& p) const {
+    Lumped<T> out = DefaultLumped(p);
+    out.J = p("input_inertia") + p("load_inertia");
+    return out;
+  }
+  HIGHLIFT_LUMPED_LAW
+};
+
+}  // namespace
+}  // namespace highlift::model::components
+
+HIGHLIFT_REGISTER_COMPONENT(GearedRotaryActuator, GearedRotaryActuatorModel)

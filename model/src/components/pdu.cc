@@ -1,0 +1,55 @@
+// pdu: the power drive unit. Speed-controlled (the HighLift.Drives.PDU element) or, with text
+// parameter drive = "hydraulic", the hydraulic sub-network of hydraulic_pdu.cc.
+#include "component_util.h"
+#include "highlift/model/drive_network.h"
+#include "highlift/model/hydraulic_pdu.h"
+
+namespace highlift::model::components {
+namespace {
+
+class PduModel final : public NamedModel {
+ public:
+  PduModel() : NamedModel("pdu", {.drive_unit = true, .lumps_inertia = true}) {}
+
+  std::vector<std::string> PowerPorts() const override { return {"left", "right"}; }
+
+  /// Motors reflected through the PDU gearbox plus the gear inertia, at the output.
+  template <class T>
+  Lumped<T> Law(const ParameterReader<T>& p) const {
+    Lumped<T> out = DefaultLumped(p);
+    out.J = p("motor_inertia") * T(p.Nominal("motor_count")) * p("ratio") * p("ratio") + p("gear_inertia");
+    return out;
+  }
+  HIGHLIFT_LUMPED_LAW
+
+  void Expand(const Component& c, ExpansionContext& x) const override {
+    std::optional<double> motor_lost_time;  // the scenario value, as t_motor_lost below
+    if (const Scenario* s = x.scenario())
+      if (auto it = s->values.find("motor_lost_time"); it != s->values.end()) motor_lost_time = it->second;
+    if (detail::IsHydraulicPdu(c)) {
+      // A shutdown input when the wing-tip brakes will be commanded (the monitor).
+      const detail::PduPorts p = detail::AddHydraulicPdu(x.network(), c, motor_lost_time, x.HasTipBrakes());
+      for (const auto& e : x.network().elements())
+        if (!x.model().component_of.count(e.id)) x.model().component_of[e.id] = c.id;
+      x.SetDriveUnit(c, {p.flange_left, p.flange_right, p.w_ref, p.phi, p.stop});
+      return;
+    }
+    Scalars s = {{"n_m", ValueOr(c, "motor_count", 2)},
+                 {"J_m", Require(c, "motor_inertia")},
+                 {"ratio", Require(c, "ratio")},
+                 {"J_g", Require(c, "gear_inertia")},
+                 {"w_max", Require(c, "max_output_speed")},
+                 {"tau_stall", Require(c, "stall_torque")},
+                 {"P_max", Require(c, "power")},
+                 {"t_ramp", Require(c, "speed_ramp_time")},
+                 {"tauPOB", Require(c, "brake_torque")}};
+    if (motor_lost_time) s["t_motor_lost"] = *motor_lost_time;
+    x.Add("PDU", c.id, s, c.id);
+    x.SetDriveUnit(c, {c.id + ".flange_left", c.id + ".flange_right", c.id + ".w_ref", c.id + ".phi", c.id + ".stop"});
+  }
+};
+
+}  // namespace
+}  // namespace highlift::model::components
+
+HIGHLIFT_REGISTER_COMPONENT(Pdu, PduModel)

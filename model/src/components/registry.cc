@@ -1,0 +1,108 @@
+// The component registry: one line per component type (its model is in <type>.cc beside this
+// file). The order is the catalogue's.
+#include <algorithm>
+#include <unordered_map>
+
+#include "component_util.h"
+#include "highlift/core/catalogue.h"
+#include "highlift/core/text_table.h"
+
+#define HIGHLIFT_COMPONENT_TYPES(X) \
+  X(Pdu)                            \
+  X(SystemTorqueLimiter)            \
+  X(TorqueShaft)                    \
+  X(SteadyBearing)                  \
+  X(UniversalJoint)                 \
+  X(AngleGearbox)                   \
+  X(BranchGearbox)                  \
+  X(StationTorqueLimiter)           \
+  X(GearedRotaryActuator)           \
+  X(BallscrewActuator)              \
+  X(WingTipBrake)                   \
+  X(PositionSensor)                 \
+  X(Disconnector)                   \
+  X(Jam)
+
+namespace highlift::model {
+namespace components {
+#define HIGHLIFT_DECLARE(Name) const ComponentModel& Name##Component();
+HIGHLIFT_COMPONENT_TYPES(HIGHLIFT_DECLARE)
+#undef HIGHLIFT_DECLARE
+
+double Require(const Component& c, const std::string& name) {
+  auto it = c.parameters.find(name);
+  if (it == c.parameters.end() || !it->second.nominal) {
+    const bool part = it != c.parameters.end() && !it->second.database_part.empty();
+    throw InputError("component '" + c.id + "' (" + c.type + "): parameter '" + name +
+                         "' has no value for the drive model (simulate, export); " +
+                         (part ? "it refers to database part '" + it->second.database_part +
+                                     "': resolve it with 'highlift estimate' first, or give a value"
+                               : std::string("give a value in the project file")),
+                     it != c.parameters.end() && !it->second.where.empty() ? it->second.where : c.where);
+  }
+  return *it->second.nominal;
+}
+
+Scalars Stribeck(const Component& c) {
+  Scalars s;
+  for (const auto& [param, symbol] : {std::pair<const char*, const char*>{"coulomb_torque", "tau_C"},
+                                      {"viscous_coefficient", "d_vis"},
+                                      {"stribeck_torque", "tau_S"},
+                                      {"stribeck_decay", "f_exp"}}) {
+    if (auto v = Value(c, param)) s[symbol] = *v;
+  }
+  return s;
+}
+
+void CheckBacklash(const Component& c) {
+  if (ValueOr(c, "backlash", 0.0) > 0 && !Value(c, "stiffness"))
+    throw InputError("component '" + c.id + "' (" + c.type + "): a backlash needs a stiffness: give 'stiffness'",
+                     c.where);
+}
+
+}  // namespace components
+
+PortRatio ComponentModel::SpeedRatioLaw(std::string_view, std::string_view) const { return {}; }
+
+double ComponentModel::SpeedRatio(const Component& c, std::string_view from, std::string_view to) const {
+  const PortRatio law = SpeedRatioLaw(from, to);
+  if (law.parameter.empty() || law.power == 0) return 1.0;
+  const double value = components::Require(c, std::string(law.parameter));
+  return law.power > 0 ? value : 1.0 / value;
+}
+
+ChainMember ComponentModel::Chain(const Component& c, double) const {
+  throw InternalError("component '" + c.id + "' (" + c.type + ") is no member of a lumped chain");
+}
+
+double ComponentModel::TravelAngle(const Component& c) const {
+  throw InputError("component '" + c.id + "' (" + c.type + ") is no actuator: it has no travel", c.where);
+}
+
+const std::vector<const ComponentModel*>& ComponentModels() {
+  static const std::vector<const ComponentModel*> models = {
+#define HIGHLIFT_LIST(Name) &components::Name##Component(),
+      HIGHLIFT_COMPONENT_TYPES(HIGHLIFT_LIST)
+#undef HIGHLIFT_LIST
+  };
+  return models;
+}
+
+const ComponentModel* FindComponentModel(std::string_view type) {
+  static const std::unordered_map<std::string_view, const ComponentModel*> by_type = [] {
+    std::unordered_map<std::string_view, const ComponentModel*> m;
+    for (const ComponentModel* model : ComponentModels()) m.emplace(model->type(), model);
+    return m;
+  }();
+  auto it = by_type.find(type);
+  return it == by_type.end() ? nullptr : it->second;
+}
+
+std::vector<std::string> TypesWithRole(bool ComponentRoles::*role) {
+  std::vector<std::string> names;
+  for (const ComponentModel* m : ComponentModels())
+    if (m->roles().*role) names.emplace_back(m->type());
+  return names;
+}
+
+}  // namespace highlift::model

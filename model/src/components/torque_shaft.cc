@@ -1,0 +1,126 @@
+// torque_shaft: a tube segment of the transmission, ports a and b. Stiffness given or from the
+// tube law c = G Ip / L; inertia given, from the linear density or J = rho Ip L; damping given or
+// the structural damping beta*c; drag per length (its bearings and joints) at its two ends.
+// Full resolution: shaft_elements spring-dampers "<id>.e1".."<id>.eN" between the inertias
+// "<id>.m0".."<id>.mN"; reduced resolution: a member of a lumped chain.
+#include <algorithm>
+
+#include "component_util.h"
+#include "highlift/model/drive_network.h"
+#include "highlift/model/laws.h"
+
+namespace highlift::model::components {
+namespace {
+
+struct ShaftValues {
+  double c = 0;     // N*m/rad, whole segment
+  double J = 0;     // kg*m^2, whole segment
+  double d = 0;     // N*m*s/rad
+  double drag = 0;  // N*m, Coulomb drag of the whole segment
+};
+
+/// `beta`: the project's structural damping (d = beta*c when the shaft gives no damping).
+ShaftValues ShaftData(const Component& s, double beta) {
+  ShaftValues data;
+  const double L = Require(s, "length");
+  const auto D = Value(s, "outer_diameter");
+  const auto t = Value(s, "wall_thickness");
+  const bool tube = D && t && *D > 0 && *t > 0;
+  if (auto c = Value(s, "stiffness")) {
+    data.c = *c;
+  } else {
+    if (!tube)
+      throw InputError("component '" + s.id + "' (" + s.type + "): neither 'stiffness' nor a tube "
+                       "geometry ('outer_diameter', 'wall_thickness') is given: give one of them",
+                       s.where);
+    data.c = ShaftStiffness(Require(s, "shear_modulus"), *D, std::min(*t, *D / 2), L);
+  }
+  if (auto J = Value(s, "inertia")) {
+    data.J = *J;
+  } else if (auto m_l = Value(s, "linear_density"); m_l && D && t) {
+    const double d_in = std::max(0.0, *D - 2 * *t);
+    data.J = *m_l * L * (*D * *D + d_in * d_in) / 8;
+  } else {
+    data.J = tube ? ShaftInertia(Require(s, "density"), *D, std::min(*t, *D / 2), L) : 0.0;
+  }
+  data.d = ValueOr(s, "damping", beta * data.c);
+  data.drag = ValueOr(s, "drag_per_length", 0.0) * L;
+  return data;
+}
+
+class TorqueShaftModel final : public NamedModel {
+ public:
+  TorqueShaftModel() : NamedModel("torque_shaft", {.chain_member = true, .rupturable = true, .segment = true}) {}
+
+  /// The segment at its own speed: stiffness given or the tube law; inertia given, from the
+  /// linear density (thin tube, mean radius) or the tube law.
+  template <class T>
+  Lumped<T> Law(const ParameterReader<T>& p) const {
+    Lumped<T> out;
+    out.c = p.Has("stiffness") ? p("stiffness")
+                               : ShaftStiffness(p("shear_modulus"), p("outer_diameter"), p("wall_thickness"), p("length"));
+    if (p.Has("inertia")) {
+      out.J = p("inertia");
+    } else if (p.Has("linear_density")) {
+      const T r = (p("outer_diameter") - p("wall_thickness")) * T(0.5);
+      out.J = p("linear_density") * p("length") * r * r;
+    } else {
+      out.J = ShaftInertia(p("density"), p("outer_diameter"), p("wall_thickness"), p("length"));
+    }
+    return out;
+  }
+  HIGHLIFT_LUMPED_LAW
+
+  /// Steady state: its drag per length over its length adds to what it passes on.
+  template <class T>
+  T SteadyLaw(const ParameterReader<T>& p, const SteadyFlow<T>& in) const {
+    return in.through + in.friction * p("drag_per_length") * p("length");
+  }
+  HIGHLIFT_STEADY_LAW
+
+  void Expand(const Component& c, ExpansionContext& x) const override {
+    const ShaftValues data = ShaftData(c, x.beta());
+    const int n = x.shaft_elements();
+    const Scenario* scenario = x.scenario();
+    const bool ruptured = scenario && scenario->rupture_component == c.id;
+    const int broken = ruptured ? (n + 1) / 2 : 0;  // the spring-damper replaced by a Disconnector
+    std::vector<std::string> masses;
+    for (int i = 0; i <= n; ++i) {
+      const double share = (i == 0 || i == n) ? 0.5 / n : 1.0 / n;
+      const std::string mass = c.id + ".m" + std::to_string(i);
+      // The drag of the segment (its bearings and joints) acts at its two ends, half at each, as
+      // in the reduced model: interior masses without Coulomb friction avoid stick/slip events
+      // of every sub-element while the shaft starts and stops.
+      if (data.drag > 0 && (i == 0 || i == n))
+        x.Add("LossyInertia", mass, x.Regularised({{"J", data.J * share}, {"tau_C", data.drag * 0.5}}), c.id);
+      else
+        x.Add("Inertia", mass, {{"J", data.J * share}}, c.id);
+      masses.push_back(mass);
+      if (i == 0) continue;
+      const std::string spring = c.id + ".e" + std::to_string(i);
+      Scalars s = {{"c", data.c * n}, {"d", data.d * n}};
+      if (i == broken) {
+        s["t_disconnect"] = *scenario->rupture_time;
+        x.Add("Disconnector", spring, s, c.id, {}, "rupture of " + c.id);
+      } else {
+        x.Add("SpringDamper", spring, s, c.id);
+      }
+      x.Connect(masses[i - 1] + ".flange_b", spring + ".flange_a");
+      x.Connect(spring + ".flange_b", mass + ".flange_a");
+    }
+    x.MapPort(c, "a", masses.front() + ".flange_a");
+    x.MapPort(c, "b", masses.back() + ".flange_b");
+    x.model().derived.push_back({c.id + ".tau", c.id + ".e1.tau", -1.0});
+    x.model().torque_sign[c.id] = -1.0;  // peak torques as the derived column
+  }
+
+  ChainMember Chain(const Component& c, double beta) const override {
+    const ShaftValues data = ShaftData(c, beta);
+    return {data.J, data.drag, data.c, data.d, true};
+  }
+};
+
+}  // namespace
+}  // namespace highlift::model::components
+
+HIGHLIFT_REGISTER_COMPONENT(TorqueShaft, TorqueShaftModel)

@@ -1,0 +1,28 @@
+// wing_tip_brake: the brake at a wing tip, ports a and b; one HighLift.Mechanical.WingTipBrake
+// whose input apply the monitor's command drives (drive_network.cc, EmitMonitoring).
+#include "component_util.h"
+
+namespace highlift::model::components {
+namespace {
+
+class WingTipBrakeModel final : public NamedModel {
+ public:
+  WingTipBrakeModel() : NamedModel("wing_tip_brake", {.tip_brake = true, .lumps_inertia = true}) {}
+
+  void Expand(const Component& c, ExpansionContext& x) const override {
+    x.Add("WingTipBrake", c.id,
+          {{"tauB_max", Require(c, "max_dynamic_torque")},
+           {"tauB_lim", Require(c, "static_capacity")},
+           {"t_B", Require(c, "time_to_max_torque")},
+           {"t_lat", Require(c, "engagement_latency")},
+           {"J", Require(c, "inertia")}},
+          c.id);
+    MapAB(c, x);
+    x.AddTipBrake(c);
+  }
+};
+
+}  // namespace
+}  // namespace highlift::model::components
+
+HIGHLIFT_REGISTER_COMPONENT(WingTipBrake, WingTipBrakeModel)
