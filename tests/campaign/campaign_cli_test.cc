@@ -84,7 +84,11 @@ TEST(CampaignCli, NominalTransientPeakIsTheOneOfPeakTransient) {
   const nlohmann::json campaign = nlohmann::json::parse(c.out), peak = nlohmann::json::parse(p.out);
   ASSERT_EQ(campaign["case_peaks"].size(), 1u);
   ASSERT_EQ(peak["transient"].size(), 1u);
-  EXPECT_EQ(campaign["case_peaks"][0]["peak_N_m"].get<double>(), peak["transient"][0]["transient"].get<double>());
+  // The same model and scenario; the campaign writes 20 rows per run where peak --transient
+  // writes one per kPeakOutputInterval, and the output times (CVODE's stop times, its time
+  // tolerance) move the step sequence at round-off: the peaks agree to 1e-6, not to the bit.
+  const double campaign_peak = campaign["case_peaks"][0]["peak_N_m"].get<double>();
+  EXPECT_NEAR(campaign_peak, peak["transient"][0]["transient"].get<double>(), 1e-6 * campaign_peak);
   EXPECT_EQ(campaign["case_peaks"][0]["at"], peak["transient"][0]["at"]);
   EXPECT_EQ(campaign["case_peaks"][0]["single_dof_N_m"].get<double>(), peak["transient"][0]["single_dof"].get<double>());
   // summary prints the same JSON again.

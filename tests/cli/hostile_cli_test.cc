@@ -123,8 +123,8 @@ TEST(OptionValues, NonFiniteAndOutOfRangeValuesAreRejectedReadably) {
   const std::vector<Case> cases = {
       {{"tradeoff", kProject, "--vary", "pdu.max_output_speed=-inf:inf:3", "--show", "pdu.max_output_speed"},
        "LO and HI must be finite numbers"},
-      {{"info", kProject, "--wide", "nan"}, "'nan' is not a finite number; give a number > 0"},
-      {{"info", kProject, "--wide", "-1"}, "'-1' is out of range; give a number > 0"},
+      {{"info", kProject, "--wide", "nan"}, "'nan' is not a finite number; give a number >= 0"},
+      {{"info", kProject, "--wide", "-1"}, "'-1' is out of range; give a number >= 0"},
       {{"estimate", kProject, "--min-fit-parts", "-1"}, "'-1' is out of range; give a number from 3 to 1e+06"},
       {{"simulate", kProject, "--elements", "-7"}, "'-7' is out of range; give a number from 1 to 1000"},
       {{"modes", kProject, "--elements", "1000"}, "give a number from 0 to 100"},
