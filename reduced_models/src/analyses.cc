@@ -549,7 +549,7 @@ PeakReport AnalysePeaks(const Project& project, const PeakOptions& options) {
     }
     w.allowable_min = allowable ? allowable->lo : 0.0;
     // Guaranteed: no point of the domains has a smaller margin (outward rounded).
-    w.margin = w.allowable_min > 0.0 ? (Interval(w.allowable_min) / Interval(w.local_torque) - Interval(1.0)).lo : kInf;
+    w.margin = w.allowable_min > 0.0 ? GuaranteedMargin(w.allowable_min, w.local_torque) : kInf;
     report.worst.push_back(w);
   }
   if (options.intervals && options.tightness_samples > 0) MeasureTightness(project, options, &report);

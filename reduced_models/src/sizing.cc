@@ -175,7 +175,7 @@ SizingReport Size(const Project& project, const SizingOptions& options) {
     const double load = operating(node, "").bounds.hi;
     const detail::ParameterMode& allowable_mode = options.intervals ? interval_mode : nominal_mode;
     auto add = [&](const std::string& name, const Interval& allowable, double at_load) {
-      const double margin = at_load > 0 ? (Interval(allowable.lo) / Interval(at_load) - Interval(1.0)).lo : kInf;
+      const double margin = at_load > 0 ? GuaranteedMargin(allowable.lo, at_load) : kInf;
       report.margins.push_back({c.id, name, at_load, allowable.lo, margin});
     };
     if (c.type == "torque_shaft") {
@@ -278,6 +278,18 @@ std::string SizingReport::FullReport() const {
                          std::isinf(m.margin) ? "inf" : Fmt(100.0 * m.margin, 3) + " %"});
   out += margin_table.ToString();
   return out;
+}
+
+double GuaranteedMargin(double allowable, double load) {
+  // q = allowable / load rounded to nearest; fma gives the sign of its error exactly.
+  double q = allowable / load;
+  if (std::fma(q, load, -allowable) > 0.0) q = std::nextafter(q, -kInf);
+  // m = q - 1 with the error of the subtraction from the two-sum: exact for q in [0.5, 2].
+  double m = q - 1.0;
+  const double b = m - q;
+  const double error = (q - (m - b)) + (-1.0 - b);
+  if (error < 0.0) m = std::nextafter(m, -kInf);
+  return m;
 }
 
 void Bounded::SetTightness(double lo, double hi) {

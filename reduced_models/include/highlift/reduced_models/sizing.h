@@ -30,6 +30,10 @@ struct Bounded {
   void SetTightness(double lo, double hi);
 };
 
+/// allowable / load - 1 rounded down: no exact quotient lies below it, and an exact result (a
+/// load equal to its allowable gives 0) is not pushed below by rounding. `load` > 0.
+double GuaranteedMargin(double allowable, double load);
+
 /// {"nominal", "min", "max"} and, when measured, "tightness".
 nlohmann::json ToJson(const Bounded& b);
 
