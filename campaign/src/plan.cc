@@ -294,6 +294,8 @@ Project Plan::Apply(const Project& project, const Sample& sample) const {
   return p;
 }
 
+std::string ProjectHash(const Project& project) { return detail::Hex(detail::Hash64(ProjectToJson(project).dump())); }
+
 Plan MakePlan(const Project& project, const CampaignOptions& options) {
   options.Validate();
   if (!sim::IsDriveSystemProject(project))
@@ -350,7 +352,7 @@ Plan MakePlan(const Project& project, const CampaignOptions& options) {
   }
   plan.samples_per_case = 1 + (plan.corner_count > 0 ? 1 << plan.corner_count : 0) + options.samples;
 
-  plan.project_hash = detail::Hex(detail::Hash64(ProjectToJson(project).dump()));
+  plan.project_hash = ProjectHash(project);
   std::string identity = plan.project_hash + "\nmodel " + sim::ToString(options.model) + "\nelements " +
                          std::to_string(options.shaft_elements) + "\nsamples " + std::to_string(options.samples) +
                          "\nseed " + std::to_string(options.seed) + "\nsampling " + ToString(options.sampling) +

@@ -1,11 +1,13 @@
-// `highlift report PROJECT.json [--out report.html] [--no-transient] [--no-scenarios]
-// [--elements N] [--threads N] [--json]`: the design report, one self-contained HTML file
+// `highlift report PROJECT.json [--out report.html] [--campaign DIR] [--no-transient]
+// [--no-scenarios] [--elements N] [--threads N] [--json]`: the design report, one self-contained HTML file
 // (report/include/highlift/report/report.h, docs/report.md): the verdict of the interval check
 // first, the architecture along the span, the torque flow, the modes, the peak loads (single-DOF
-// beside transient beside capacity) and the time histories of the scenarios. Prints one headline
-// line (with --json a JSON document: file, size, verdict, timings). Exit 0 when the report was
-// written and the domains can meet the requirements, 1 when the check found them infeasible or a
-// simulation failed (the report is written all the same), 2 on invalid input.
+// beside transient beside capacity; with --campaign the envelope over a campaign's samples) and the
+// time histories of the scenarios. Prints one headline line (with --json a JSON document: file,
+// size, verdict, timings). Exit 0 when the report was written and the domains can meet the
+// requirements, 1 when the check found them infeasible, a simulation failed, or the campaign is
+// incomplete, has failed runs or a negative margin (the report is written all the same), 2 on
+// invalid input (a campaign of another project among them).
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -25,6 +27,9 @@ class ReportCommand : public Command {
   void Setup(CLI::App& app) override {
     options_.AddTo(app);
     app.add_option("--out,--output", out_, "HTML file to write (default: report.html)");
+    app.add_option("--campaign", report_.campaign,
+                   "result folder (or .sqlite file) of `highlift campaign` on this project: adds the envelope over "
+                   "its samples to the peak loads");
     app.add_flag("--no-transient", no_transient_,
                  "skip the transient simulation of every sizing case (single-DOF peaks and capacities only)");
     app.add_flag("--no-scenarios", no_scenarios_, "skip the simulation of the project's scenarios (no time histories)");
@@ -56,6 +61,7 @@ class ReportCommand : public Command {
                           {"verdict", report.data["verdict"]},
                           {"all_requirements_met", report.data["check"]["all_requirements_met"]},
                           {"simulations_ok", report.simulations_ok},
+                          {"campaign_ok", report.campaign_ok},
                           {"timings", report.data["timings"]}};
       std::cout << j.dump(2) << "\n";
     } else {
@@ -64,8 +70,10 @@ class ReportCommand : public Command {
                 << "xdg-open " << out_ << "\n"
                 << "analyses " << FormatNumber(t.Tool(), 3) << " s, " << t.simulation_count << " simulations "
                 << FormatNumber(t.simulations, 3) << " s" << (report.simulations_ok ? "" : " (some failed)") << "\n";
+      if (!report.data["campaign"].is_null())
+        std::cout << "campaign: " << report.data["campaign"].value("brief", std::string()) << "\n";
     }
-    return report.feasible && report.simulations_ok ? kSuccess : kViolated;
+    return report.feasible && report.simulations_ok && report.campaign_ok ? kSuccess : kViolated;
   }
 
  private:

@@ -12,6 +12,7 @@
 #include <set>
 #include <thread>
 
+#include "highlift/campaign/campaign.h"
 #include "highlift/core/catalogue.h"
 #include "highlift/core/error.h"
 #include "highlift/core/text_table.h"
@@ -289,6 +290,23 @@ Capacity CaseCapacity(const Project& project, const reduced_models::PeakCase& pc
 
 }  // namespace
 
+/// The campaign's results as the page shows them: its identity and state, the envelope per
+/// component (torque at the component's own speed against its capacity) and the peak per case
+/// (at the shaft speed, as the peak cases). Throws InputError when the campaign belongs to
+/// another project or to this one before it changed.
+nlohmann::json CampaignJson(const Project& project, const campaign::CampaignSummary& summary) {
+  const std::string hash = campaign::ProjectHash(project);
+  if (summary.project_hash != hash)
+    throw InputError("--campaign " + summary.file.string() + ": the campaign was run on project '" +
+                     summary.project_name + "' (content hash " + summary.project_hash + "), and " + project.file + " holds '" +
+                     project.name + "' (hash " + hash +
+                     "): another project, or this one changed since; the envelope would not describe this design: run `highlift campaign` on this project again "
+                     "(a new --out folder) or give the campaign of this project");
+  nlohmann::json j = summary.ToJson();
+  j["brief"] = summary.BriefReport();
+  return j;
+}
+
 void ReportOptions::Validate() const {
   if (shaft_elements < 0)
     throw InputError("report option shaft_elements = " + std::to_string(shaft_elements) +
@@ -429,6 +447,32 @@ DesignReport BuildDesignReport(const Project& project, const Project& estimated,
   }
   data["peak_cases"] = cases;
 
+  // The campaign: envelope over the samples, per case the largest peak over the samples.
+  data["campaign"] = nullptr;
+  if (!options.campaign.empty()) {
+    const Clock::time_point t_campaign = Clock::now();
+    const campaign::CampaignSummary summary = campaign::LoadSummary(options.campaign);
+    nlohmann::json cj = CampaignJson(project, summary);
+    out.campaign_ok = summary.complete() && summary.ok();
+    std::map<std::string, const campaign::CasePeakRow*> by_case;
+    for (const auto& k : summary.case_peaks) by_case.emplace(k.case_name, &k);
+    for (auto& c : data["peak_cases"]) {
+      const auto it = by_case.find(c["name"].get<std::string>());
+      if (it == by_case.end()) continue;
+      const campaign::CasePeakRow& k = *it->second;
+      c["campaign"] = {{"value", Number(k.peak)}, {"at", k.peak_component}, {"sample", k.peak_sample},
+                       {"time", Round(k.peak_time)}, {"runs", k.runs}, {"failures", k.failures}};
+    }
+    for (const auto& e : summary.envelope)
+      if (e.margin)
+        margins.push_back({{"what", "campaign envelope, " + e.case_name + " sample " + std::to_string(e.sample)},
+                           {"component", e.component}, {"load", Number(std::abs(e.torque))},
+                           {"allowable", Number(e.capacity)}, {"allowable_name", e.capacity_name + " of " + e.component},
+                           {"margin", Number(*e.margin)}});
+    data["campaign"] = std::move(cj);
+    out.timings.campaign = Since(t_campaign);
+  }
+
   // Worst margins: steady state (sizing), single-DOF peaks, transient peaks; smallest first.
   for (const auto& m : sizing.margins)
     margins.push_back({{"what", "steady state"}, {"component", m.component}, {"load", Number(m.load)},
@@ -456,6 +500,7 @@ DesignReport BuildDesignReport(const Project& project, const Project& estimated,
   out.timings.total = Since(start);
   data["timings"] = {{"check", Round(out.timings.check)},         {"sizing", Round(out.timings.sizing)},
                      {"modes", Round(out.timings.modes)},         {"peaks", Round(out.timings.peaks)},
+                     {"campaign", Round(out.timings.campaign)},
                      {"simulations", Round(out.timings.simulations)},
                      {"simulated", Round(out.timings.simulated)}, {"simulation_count", out.timings.simulation_count},
                      {"total", Round(out.timings.total)}};
@@ -468,6 +513,8 @@ std::string DesignReport::BriefReport() const {
   s += "; " + std::to_string(timings.simulation_count) + " simulations in " + FormatNumber(timings.simulations, 3) +
        " s" + (simulations_ok ? "" : " (some failed: see the peak loads and scenarios sections)") + ", analyses " +
        FormatNumber(timings.Tool(), 3) + " s";
+  if (data.contains("campaign") && !data["campaign"].is_null())
+    s += "; campaign: " + data["campaign"].value("brief", std::string());
   return s;
 }
 

@@ -136,8 +136,10 @@
       }), [0, 2, 3]));
   }
 
+  const componentIds = new Set(data.components.map((c) => c.id));
   function componentLink(id) {
     if (!id) return "\u2013";
+    if (!componentIds.has(id)) return id;  // an element of a component (e.g. a shaft segment): no table to link to
     const a = el("a", { href: "#c-" + id, text: id });
     return a;
   }
@@ -365,6 +367,50 @@
       }), [3, 6, 8, 9, 10]));
   }
 
+  // ---------------------------------------------------------------------------------------- campaign
+  // The envelope of a design-load campaign (`highlift report --campaign DIR`): per component the
+  // largest |torque| of any case and sample beside its capacity, at the component's own speed.
+  function renderCampaign() {
+    const box = document.getElementById("campaign");
+    const c = data.campaign;
+    if (!c) {
+      box.append(el("p", { class: "hint", text: "No design-load campaign in this report: run `highlift campaign PROJECT --out DIR` " +
+        "(every failure case over the parameter domains) and `highlift report PROJECT --campaign DIR` to add its envelope here." }));
+      return;
+    }
+    box.append(el("h3", { text: "Design-load envelope over the campaign" }));
+    box.append(el("p", { class: "hint", text: c.brief + ". Model: " + c.model + "; " + c.cases + " cases x " + c.samples_per_case +
+      " samples" + (c.parameters.length ? " over " + c.parameters.join(", ") : "") + ". Torques at each component's own speed." }));
+    if (!c.complete) box.append(el("p", { class: "bad", text: "Incomplete: " + c.runs_done + " of " + c.runs_total +
+      " runs are in the results; run the same `highlift campaign` command again to resume it." }));
+    const rows = c.envelope;
+    const idx = rows.map((_, i) => i);
+    const load = rows.map((e) => Math.abs(e.torque_N_m));
+    const cap = rows.map((e) => (e.capacity_N_m > 0 ? e.capacity_N_m : null));
+    plot(box, "campaign-envelope", "Largest |torque| per component over every case and sample, beside its capacity", [idx, load, cap], [
+      { label: "envelope |torque| [N*m]", fill: "#d1462f99", stroke: "#d1462f", paths: bars("campaign-envelope", 0, 0.6), points: { show: false } },
+      { label: "capacity [N*m]", stroke: "#1d2329", width: 0, paths: () => null, points: { show: true, size: 9, fill: "#1d2329", stroke: "#1d2329" } },
+    ], {
+      height: 360,
+      padding: [12, 60, 0, 0],
+      scales: { x: { time: false, range: [-0.7, rows.length - 0.3] }, y: { range: (u, min, max) => [0, max * 1.08] } },
+      axes: [{ rotate: -60, size: 110, space: 10, incrs: [1], values: (u, splits) => splits.map((s) => (Number.isInteger(s) && rows[s] ? rows[s].component : "")) },
+             { label: "N*m", size: 70 }],
+    });
+    box.append(el("div", { id: "campaign-envelope-table" }, table(
+      ["component", "|torque| [N*m]", "case", "sample", "t [s]", "capacity [N*m]", "capacity", "margin"],
+      rows.map((e) => [componentLink(e.component), fmt(Math.abs(e.torque_N_m)), e.case, e.sample_label || String(e.sample), fmt(e.time_s),
+        e.capacity_N_m > 0 ? fmt(e.capacity_N_m) : "\u2013", e.capacity_name || "\u2013",
+        el("span", { class: e.margin != null && e.margin < 0 ? "bad" : "", text: percent(e.margin) })]), [1, 4, 5, 7])));
+    box.append(el("div", { id: "campaign-cases-table" }, table(
+      ["case", "kind", "load case", "runs", "failed", "largest peak [N*m]", "at", "sample", "t [s]", "single-DOF, nominal [N*m]", "single-DOF, largest [N*m]"],
+      c.case_peaks.map((k) => [k.case, k.kind, k.load_case || "\u2013", String(k.runs), el("span", { class: k.failures ? "bad" : "", text: String(k.failures) }),
+        fmt(k.peak_N_m), componentLink(k.at), String(k.sample), fmt(k.time_s), fmt(k.single_dof_N_m), fmt(k.single_dof_max_N_m)]), [3, 4, 5, 7, 8, 9, 10])));
+    if (c.failed.length)
+      box.append(el("div", { id: "campaign-failed-table" }, table(["run", "case", "sample", "message"],
+        c.failed.map((f) => [String(f.run), f.case, String(f.sample), f.message]), [0, 2])));
+  }
+
   // ---------------------------------------------------------------------------------------- scenarios
   function renderScenarios() {
     const box = document.getElementById("scenario-plots");
@@ -403,7 +449,7 @@
       "Plots: uPlot (MIT licence), inlined; this file refers to nothing outside itself.";
   }
 
-  const sections = [renderSummary, renderArchitecture, renderComponents, renderSizing, renderModes, renderPeaks, renderScenarios, renderFooter];
+  const sections = [renderSummary, renderArchitecture, renderComponents, renderSizing, renderModes, renderPeaks, renderCampaign, renderScenarios, renderFooter];
   for (const render of sections) {
     try { render(); } catch (e) { state.errors.push(render.name + ": " + e.message); console.error(render.name, e); }
   }

@@ -3,7 +3,10 @@
 // protocol over a pipe (--remote-debugging-pipe: no extra npm package, no WebSocket).
 //
 //   node browser_test.mjs --highlift build/cli/highlift --project examples/a380_class_flaps.json \
-//        --out build/tests/report/browser
+//        --out build/tests/report/browser [--campaign DIR]
+//
+// With --campaign DIR (a `highlift campaign` result of the project) the report is written with
+// that campaign (and without simulations of its own) and the envelope plot and tables are checked.
 //
 // Fails on: a console error or uncaught exception; any network request (the file must hold
 // everything); an external address in the file; a plot whose canvas is missing or blank or that
@@ -41,7 +44,8 @@ fs.mkdirSync(args.out, { recursive: true });
 const html = path.resolve(args.report || path.join(args.out, "report.html"));
 let t0 = Date.now();
 if (!args.report) {
-  const made = spawnSync(args.highlift, ["report", args.project, "--out", html, "--json"], { encoding: "utf8" });
+  const extra = args.campaign ? ["--campaign", args.campaign, "--no-transient", "--no-scenarios"] : [];
+  const made = spawnSync(args.highlift, ["report", args.project, "--out", html, "--json", ...extra], { encoding: "utf8" });
   if (made.status !== 0 && made.status !== 1) {
     console.error("highlift report failed with exit code " + made.status + ":\n" + made.stderr);
     process.exit(1);
@@ -177,6 +181,8 @@ try {
       explanation: document.getElementById("explanation").textContent,
       marginsRows: document.querySelectorAll("#worst-margins tbody tr").length,
       peakRows: document.querySelectorAll("#peaks-table tbody tr").length,
+      envelopeRows: document.querySelectorAll("#campaign-envelope-table tbody tr").length,
+      campaignCaseRows: document.querySelectorAll("#campaign-cases-table tbody tr").length,
     };
   })()`);
 
@@ -221,6 +227,8 @@ try {
   expected.set("modes-full", Math.min(3, data.modes.models[0].clamped_shapes.length));
   expected.set("modes-first", data.modes.models.length);
   expected.set("peaks-plot", 3);
+  if (data.campaign) expected.set("campaign-envelope", 2);
+  check(!args.campaign || data.campaign, "--campaign given, and the report holds no campaign");
   for (const s of data.scenarios)
     for (const g of ["speed", "torque", "state"]) {
       const n = s.signals.filter((x) => x.group === g).length;
@@ -246,8 +254,17 @@ try {
   if (peaks) {
     const singles = data.peak_cases.filter((c) => c.single_dof.nominal != null).length;
     const transients = data.peak_cases.filter((c) => c.transient && c.transient.ok && c.transient.value != null).length;
-    check(peaks.bars[1] === singles, `peak plot drew ${peaks.bars[1]} single-DOF bars of ${singles}`);
-    check(peaks.bars[2] === transients, `peak plot drew ${peaks.bars[2]} transient bars of ${transients}`);
+    check((peaks.bars[1] || 0) === singles, `peak plot drew ${peaks.bars[1]} single-DOF bars of ${singles}`);
+    check((peaks.bars[2] || 0) === transients, `peak plot drew ${peaks.bars[2]} transient bars of ${transients}`);
+  }
+  if (data.campaign) {
+    const envelope = byId.get("campaign-envelope");
+    if (envelope) check(envelope.bars[1] === data.campaign.envelope.length,
+                        `envelope plot drew ${envelope.bars[1]} bars of ${data.campaign.envelope.length} components`);
+    check(seen.envelopeRows === data.campaign.envelope.length, `envelope table has ${seen.envelopeRows} rows of ${data.campaign.envelope.length}`);
+    check(seen.campaignCaseRows === data.campaign.case_peaks.length,
+          `campaign case table has ${seen.campaignCaseRows} rows of ${data.campaign.case_peaks.length}`);
+    check(data.campaign.envelope.length > 0, "the campaign's envelope is empty");
   }
   check(seen.peakRows === data.peak_cases.length, `peak table has ${seen.peakRows} rows of ${data.peak_cases.length} cases`);
   check(seen.plots.length === expected.size, `${seen.plots.length} plots on the page, ${expected.size} expected`);

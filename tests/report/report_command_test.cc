@@ -43,6 +43,43 @@ TEST(ReportCommand, UnwritableOutputIsNamed) {
       << r.err;
 }
 
+// --campaign: the envelope of the project's own campaign is in the page's data; a campaign of
+// another project is refused (exit 2, naming both) and no file is written.
+TEST(ReportCommand, CampaignOfTheProjectIsShownAndAnotherProjectsIsRefused) {
+  const auto dir = std::filesystem::path(HIGHLIFT_BINARY_DIR) / "tests" / "report" / "command_campaign";
+  std::filesystem::remove_all(dir);
+  const auto run = highlift::testing::RunCli({"campaign", "examples/a320_class_flaps.json", "--cases", "rupture_*",
+                                              "--model", "reduced", "--jobs", "2", "--out", dir.string()});
+  ASSERT_LE(run.exit_code, 1) << run.err;
+
+  const auto out = dir / "report.html";
+  const auto r = highlift::testing::RunCli({"report", "examples/a320_class_flaps.json", "--campaign", dir.string(),
+                                            "--no-transient", "--no-scenarios", "--out", out.string(), "--json"});
+  ASSERT_LE(r.exit_code, 1) << r.err;
+  const auto doc = nlohmann::json::parse(r.out);
+  EXPECT_EQ(doc["campaign_ok"].get<bool>(), run.exit_code == 0);
+  std::ifstream in(out);
+  const std::string html((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(html.find("\"envelope\":[{\"capacity_N_m\""), std::string::npos) << "no envelope in the page's data";
+  EXPECT_NE(html.find("\"campaign\":{\"at\""), std::string::npos) << "no peak case carries its campaign peak";
+
+  const auto other = dir / "other.html";
+  const auto refused = highlift::testing::RunCli({"report", "examples/a380_class_flaps.json", "--campaign", dir.string(),
+                                                  "--no-transient", "--no-scenarios", "--out", other.string()});
+  EXPECT_EQ(refused.exit_code, 2);
+  EXPECT_NE(refused.err.find("the campaign was run on project 'A320-class flap transmission (both wings)'"),
+            std::string::npos)
+      << refused.err;
+  EXPECT_NE(refused.err.find("run `highlift campaign` on this project again"), std::string::npos) << refused.err;
+  EXPECT_FALSE(std::filesystem::exists(other));
+
+  const auto missing = highlift::testing::RunCli({"report", "examples/a320_class_flaps.json", "--campaign",
+                                                  (dir / "nothing-here").string(), "--no-transient", "--no-scenarios",
+                                                  "--out", other.string()});
+  EXPECT_EQ(missing.exit_code, 2) << missing.err;
+  EXPECT_FALSE(std::filesystem::exists(other));
+}
+
 TEST(CheckOutput, VerdictComesFirstAndTheTableOnlyWithAll) {
   const auto r = highlift::testing::RunCli({"check", "examples/a380_class_flaps.json"});
   ASSERT_EQ(r.exit_code, 0) << r.err;

@@ -284,6 +284,11 @@ struct CampaignSummary {
   nlohmann::json ToJson() const;
 };
 
+/// The fingerprint of a project's content that a campaign records (its project_hash): 16 hex
+/// digits of a hash of the project's canonical JSON. A report compares it to tell whether a
+/// campaign's results belong to the project as it is now.
+std::string ProjectHash(const Project& project);
+
 /// Reads a result file, or the campaign.sqlite of a directory. Throws InputError naming the
 /// file when there is none (a directory with only shard files: merge them first).
 CampaignSummary LoadSummary(const std::filesystem::path& file_or_directory);

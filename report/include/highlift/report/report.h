@@ -12,6 +12,7 @@
 //   std::ofstream("report.html") << RenderHtml(report);
 #pragma once
 
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -39,6 +40,12 @@ struct ReportOptions {
   int threads = 0;
   /// The interval check (the summary), as `highlift check`.
   icsp::PropagationOptions propagation;
+  /// A design-load campaign of this project (`highlift campaign`): its result folder or file.
+  /// Empty (the default): none. The peak-load section then adds the envelope over the samples
+  /// (per component the largest torque of any case and sample against its capacity) and, per
+  /// case, the largest transient peak over the samples; the worst margins include the envelope's.
+  /// A campaign of another project, or of this one before it changed, is an input error.
+  std::filesystem::path campaign;
 
   /// Throws InputError naming the option when a value is invalid.
   void Validate() const;
@@ -50,6 +57,7 @@ struct ReportTimings {
   double sizing = 0.0;
   double modes = 0.0;
   double peaks = 0.0;         ///< single-DOF peak analysis
+  double campaign = 0.0;      ///< reading the campaign's results
   double simulations = 0.0;   ///< wall time of all simulations (side by side)
   double simulated = 0.0;     ///< sum of the simulations' own wall times
   int simulation_count = 0;
@@ -62,6 +70,7 @@ struct DesignReport {
   bool feasible = true;       ///< the check's verdict on the domains (false also for failed simulations: no)
   bool nominal_feasible = true;
   bool simulations_ok = true; ///< every simulation reached its stop time
+  bool campaign_ok = true;    ///< no campaign, or one that is complete, with no failed run and no negative margin
   ReportTimings timings;
   /// "report of NAME: feasible domains, nominal design violates X; 36 cases simulated in 12 s".
   std::string BriefReport() const;
