@@ -140,8 +140,12 @@ std::vector<CampaignCase> AllCases(const Project& project) {
     if (pc.kind == "jam") add_failure("jam", pc.component);
   for (const auto& pc : peaks.cases)
     if (pc.kind == "rupture") add_failure("rupture", pc.component);
-  for (const Component& c : project.components)
-    if (c.type == "disconnector") add_failure("rupture", c.id);
+  // Rupturable components that are no shaft segment (disconnectors): the peak analysis chooses
+  // the segments whose rupture matters (not those outboard of the wing-tip brake).
+  for (const Component& c : project.components) {
+    const ComponentRoles r = RolesOf(c.type);
+    if (r.rupturable && !r.segment) add_failure("rupture", c.id);
+  }
   for (const Scenario& s : project.scenarios) {
     std::string component = s.jam_component.value_or(s.rupture_component.value_or(""));
     const reduced_models::PeakCase* pc = peak_of(s.kind, component);

@@ -21,6 +21,12 @@ const PortSpec* ComponentTypeSpec::FindPort(std::string_view port) const {
   return nullptr;
 }
 
+bool ComponentTypeSpec::geared() const {
+  for (const auto& p : ports)
+    if (!p.speed_ratio.empty()) return true;
+  return false;
+}
+
 const ParameterSpec* ComponentTypeSpec::FindParameter(std::string_view parameter) const {
   for (const auto& p : parameters)
     if (p.name == parameter) return &p;
@@ -97,7 +103,14 @@ class Param {
 };
 
 PortSpec Flange(std::string name, std::string description, bool required = true) {
-  return PortSpec{std::move(name), PortKind::kFlange, required, std::move(description)};
+  return PortSpec{std::move(name), PortKind::kFlange, required, std::move(description), false, {}};
+}
+
+/// A gear's flange turning 1/ratio as fast as its flange "input".
+PortSpec GearedFlange(std::string name, std::string description, bool required = true) {
+  PortSpec p = Flange(std::move(name), std::move(description), required);
+  p.speed_ratio = "ratio";
+  return p;
 }
 
 // Parameters shared by several types ---------------------------------------------------------
@@ -379,6 +392,7 @@ ComponentTypeSpec Pdu() {
                    .Valid(0, 100)
                    .Source("estimate: position loop about 200 rad/s, at the valve's 200 rad/s"));
   ps.push_back(SpanPosition());
+  t.roles = {.drive_unit = true, .lumps_inertia = true};
   return t;
 }
 
@@ -393,6 +407,7 @@ ComponentTypeSpec SystemTorqueLimiter() {
   AddTorqueLimiter(t.parameters, 470, 1.0, 2e4, "domain.md s3 (E): 1.3 x 360 N m root torque");
   t.parameters.push_back(Inertia(1e-3, 5e-4, 2e-3, "inertia of the limiter", "estimate: comparable to a station gearbox"));
   t.parameters.push_back(SpanPosition());
+  t.roles = {.lumps_inertia = true, .system_limiter = true};
   return t;
 }
 
@@ -453,6 +468,8 @@ ComponentTypeSpec TorqueShaft() {
                    .Valid(0, 100)
                    .Source("domain.md s3 (E): 0.2-0.3 N m per metre, domain [0.1, 0.5]"));
   ps.push_back(SpanPosition());
+  t.relations = {{"wall_thickness", "outer_diameter", 2.0, "the radius", "equal: a solid shaft"}};
+  t.roles = {.chain_member = true, .rupturable = true, .segment = true};
   return t;
 }
 
@@ -465,6 +482,7 @@ ComponentTypeSpec SteadyBearing() {
   AddStribeck(t.parameters, 0.1, 0.05, 0.2, "domain.md s6 (E): drag 0.05-0.2 N m each");
   t.parameters.push_back(Inertia(5e-5, 1e-5, 1e-4, "inertia of the bearing's rotating parts", "estimate: small"));
   t.parameters.push_back(SpanPosition());
+  t.roles = {.chain_member = true};
   return t;
 }
 
@@ -484,6 +502,7 @@ ComponentTypeSpec UniversalJoint() {
   ps.push_back(Backlash("total backlash of the joint"));
   ps.push_back(OptionalStiffness("torsional stiffness of the joint"));
   ps.push_back(SpanPosition());
+  t.roles = {.chain_member = true};
   return t;
 }
 
@@ -511,7 +530,7 @@ ComponentTypeSpec AngleGearbox() {
   t.name = "angle_gearbox";
   t.display_name = "angle gearbox";
   t.description = "Angle, bevel, offset or kink gearbox (root gearbox) changing the shaft direction.";
-  t.ports = {Flange("input", "flange nearer the PDU"), Flange("output", "flange farther from the PDU")};
+  t.ports = {Flange("input", "flange nearer the PDU"), GearedFlange("output", "flange farther from the PDU")};
   AddGearbox(t.parameters, "gear ratio, input speed / output speed (MSL IdealGear)", 1, 1, 2,
              "domain.md s6 (E): 1:1 to 2:1", 2e-3, "domain.md s3 (E): root gearbox 2e-3 kg m2");
   t.parameters.push_back(Param("shaft_angle", "alpha", Dimensionless(), "deg", "angle between input and output shafts")
@@ -519,6 +538,7 @@ ComponentTypeSpec AngleGearbox() {
                              .Optional()
                              .Source("domain.md s1 (P): e.g. 19 deg, 63.5 deg (A320 slats)"));
   t.parameters.push_back(SpanPosition());
+  t.roles = {.lumps_inertia = true};
   return t;
 }
 
@@ -531,11 +551,12 @@ ComponentTypeSpec BranchGearbox() {
       "drives the station. ratio = input speed / branch speed.";
   t.ports = {Flange("input", "flange nearer the PDU"),
              Flange("through", "through-drive flange, 1:1 with the input (open at the last station)", false),
-             Flange("branch", "down-drive flange to the station")};
+             GearedFlange("branch", "down-drive flange to the station")};
   AddGearbox(t.parameters, "gear ratio, input speed / branch speed", 2, 1, 2,
              "domain.md s3 (E): station gearbox 2:1; s6 1:1 to 2:1", 1e-3,
              "domain.md s3 (E): station input 1e-3 kg m2");
   t.parameters.push_back(SpanPosition());
+  t.roles = {.lumps_inertia = true};
   return t;
 }
 
@@ -550,6 +571,7 @@ ComponentTypeSpec StationTorqueLimiter() {
   AddTorqueLimiter(t.parameters, 90, 0.7, 2e4, "domain.md s3 (E): 1.5 x 58.8 N m station input torque");
   t.parameters.push_back(Inertia(5e-4, 2e-4, 1e-3, "inertia of the limiter", "estimate: half a station gearbox"));
   t.parameters.push_back(SpanPosition());
+  t.roles = {.lumps_inertia = true, .station_limiter = true};
   return t;
 }
 
@@ -608,6 +630,7 @@ ComponentTypeSpec GearedRotaryActuator() {
   ps.push_back(OptionalStiffness("torsional stiffness referred to the input"));
   AddStribeck(ps, 0.2, 0.1, 0.4, "estimate: about twice a steady bearing");
   ps.push_back(SpanPosition());
+  t.roles = {.actuator = true, .jammable = true, .lumps_inertia = true};
   return t;
 }
 
@@ -647,6 +670,7 @@ ComponentTypeSpec BallscrewActuator() {
   ps.push_back(Backlash("total backlash referred to the input"));
   AddStribeck(ps, 0.2, 0.1, 0.4, "estimate: about twice a steady bearing");
   ps.push_back(SpanPosition());
+  t.roles = {.actuator = true, .jammable = true, .lumps_inertia = true};
   return t;
 }
 
@@ -682,6 +706,7 @@ ComponentTypeSpec WingTipBrake() {
                    .Source("domain.md s3/s6 (E): 50-150 ms"));
   ps.push_back(Inertia(5e-4, 2e-4, 1e-3, "inertia of the brake rotor", "domain.md s3 (E): brake rotor 5e-4 kg m2"));
   ps.push_back(SpanPosition());
+  t.roles = {.tip_brake = true, .lumps_inertia = true};
   return t;
 }
 
@@ -715,6 +740,7 @@ ComponentTypeSpec PositionSensor() {
                    .Source("domain.md s3 (E): 1.3 x w_max"));
   ps.push_back(Inertia(1e-5, 0, 5e-5, "inertia of the sensor shaft", "estimate: small"));
   ps.push_back(SpanPosition());
+  t.roles = {.tip_sensor = true};
   return t;
 }
 
@@ -726,6 +752,7 @@ ComponentTypeSpec Disconnector() {
   t.ports = {Flange("a", "flange nearer the PDU"), Flange("b", "flange farther from the PDU")};
   t.parameters.push_back(OptionalStiffness("torsional stiffness before the rupture"));
   t.parameters.push_back(SpanPosition());
+  t.roles = {.rupturable = true};
   return t;
 }
 
@@ -741,6 +768,7 @@ ComponentTypeSpec Jam() {
                              .Valid(0, 1e12)
                              .Source("estimate: stiff compared with the shaft segments (1.4-3.3 kN*m/rad)"));
   t.parameters.push_back(SpanPosition());
+  t.roles = {.jammable = true, .lumps_inertia = true};
   return t;
 }
 
@@ -779,6 +807,18 @@ const ComponentTypeSpec* FindComponentType(std::string_view name) {
   for (const auto& t : ComponentTypes())
     if (t.name == name) return &t;
   return nullptr;
+}
+
+std::vector<std::string> ComponentTypesWith(bool ComponentRoles::*role) {
+  std::vector<std::string> names;
+  for (const auto& t : ComponentTypes())
+    if (t.roles.*role) names.push_back(t.name);
+  return names;
+}
+
+ComponentRoles RolesOf(std::string_view type) {
+  const ComponentTypeSpec* spec = FindComponentType(type);
+  return spec ? spec->roles : ComponentRoles{};
 }
 
 std::vector<std::string> ComponentTypeNames() {

@@ -26,13 +26,13 @@ inline Dimension HeatCapacity() { return dimensions::Energy() / Temperature(); }
 inline Dimension PerKelvin() { return Dimension{} / Temperature(); }
 
 inline PortSpec Flange(std::string name, std::string description, bool required = true) {
-  return {std::move(name), PortKind::kFlange, required, std::move(description)};
+  return {std::move(name), PortKind::kFlange, required, std::move(description), false, {}};
 }
 inline PortSpec Signal(std::string name, std::string description, bool required = true) {
-  return {std::move(name), PortKind::kSignal, required, std::move(description)};
+  return {std::move(name), PortKind::kSignal, required, std::move(description), false, {}};
 }
 inline PortSpec SignalOutput(std::string name, std::string description) {
-  return {std::move(name), PortKind::kSignal, false, std::move(description), true};
+  return {std::move(name), PortKind::kSignal, false, std::move(description), true, {}};
 }
 inline PortSpec Support() {
   return Flange("support",

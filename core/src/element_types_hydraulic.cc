@@ -15,7 +15,7 @@ namespace highlift::element_types {
 namespace {
 
 PortSpec Hydraulic(std::string name, std::string description, bool required = true) {
-  return {std::move(name), PortKind::kHydraulic, required, std::move(description)};
+  return {std::move(name), PortKind::kHydraulic, required, std::move(description), false, {}};
 }
 
 }  // namespace

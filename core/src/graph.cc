@@ -4,24 +4,35 @@
 #include <deque>
 #include <set>
 
+#include "highlift/core/catalogue.h"
+
 namespace highlift {
 
 namespace {
 const std::vector<GraphEdge> kNoEdges;
 
-bool IsGearbox(const std::string& type) { return type == "angle_gearbox" || type == "branch_gearbox"; }
-
-// Speed of `port` relative to the speed of the "input" port of a gearbox.
+// Speed of `port` relative to the speed of the flange "input", by the type's declaration: a
+// geared flange (PortSpec::speed_ratio) turns 1/ratio as fast.
 double RelativeToInput(const Component& c, std::string_view port, bool* known) {
-  if (!IsGearbox(c.type)) return 1.0;
-  const bool geared = (c.type == "angle_gearbox" && port == "output") || (c.type == "branch_gearbox" && port == "branch");
-  if (!geared) return 1.0;
-  auto it = c.parameters.find("ratio");
+  const ComponentTypeSpec* type = FindComponentType(c.type);
+  const PortSpec* spec = type ? type->FindPort(port) : nullptr;
+  if (!spec || spec->speed_ratio.empty()) return 1.0;
+  auto it = c.parameters.find(spec->speed_ratio);
   if (it == c.parameters.end() || !it->second.nominal || *it->second.nominal == 0.0) {
     if (known) *known = false;
     return 1.0;
   }
   return 1.0 / *it->second.nominal;
+}
+
+bool Geared(const Component& c) {
+  const ComponentTypeSpec* type = FindComponentType(c.type);
+  return type && type->geared();
+}
+
+bool DriveUnit(const Component& c) {
+  const ComponentTypeSpec* type = FindComponentType(c.type);
+  return type && type->roles.drive_unit;
 }
 }  // namespace
 
@@ -33,7 +44,7 @@ double PortSpeedFactor(const Component& component, std::string_view from_port, s
 ComponentGraph::ComponentGraph(const Project& project) {
   Build(project.components, project.connections);
   for (const auto& c : project.components) {
-    if (c.type == "pdu") {
+    if (DriveUnit(c)) {
       pdu_ = c.id;
       break;
     }
@@ -102,7 +113,7 @@ void ComponentGraph::Walk() {
       path.entry_port = e.neighbour.port;
       if (id == pdu_) path.pdu_port = e.port;
       const Component* n = by_id_.at(next);
-      path.reversed = IsGearbox(n->type) && e.neighbour.port != "input";
+      path.reversed = Geared(*n) && e.neighbour.port != "input";
       paths_[next] = std::move(path);
       entered_by[next] = e.connection;
       order_.push_back(next);

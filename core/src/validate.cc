@@ -49,7 +49,21 @@ std::string Join(const std::vector<std::string>& items) {
   return out;
 }
 
-bool IsActuator(const std::string& type) { return type == "geared_rotary_actuator" || type == "ballscrew_actuator"; }
+/// The name of a gear's geared flange (the one turning 1/ratio as fast as "input").
+std::string GearedPort(const Component& c) {
+  if (const ComponentTypeSpec* type = FindComponentType(c.type))
+    for (const auto& p : type->ports)
+      if (!p.speed_ratio.empty()) return p.name;
+  return "output";
+}
+
+bool IsActuator(const std::string& type) { return RolesOf(type).actuator; }
+
+std::string JoinOr(const std::vector<std::string>& items) {
+  std::string out;
+  for (std::size_t i = 0; i < items.size(); ++i) out += (i ? (i + 1 == items.size() ? " or " : ", ") : "") + items[i];
+  return out;
+}
 
 // Element types that ground or drive a network (an island without one floats).
 bool IsAnchor(const std::string& type) {
@@ -220,11 +234,11 @@ class Validator {
     if (project_.components.empty()) return;
     std::vector<const Component*> pdus;
     for (const auto& c : project_.components)
-      if (c.type == "pdu") pdus.push_back(&c);
+      if (RolesOf(c.type).drive_unit) pdus.push_back(&c);
     if (pdus.empty()) {
       Add(Severity::kError, "", "",
-          "the project has components but no power drive unit; add a component of type \"pdu\" that drives the "
-          "transmission",
+          "the project has components but no power drive unit; add a component of type \"" +
+              JoinOr(ComponentTypesWith(&ComponentRoles::drive_unit)) + "\" that drives the transmission",
           {});
       return;
     }
@@ -250,7 +264,7 @@ class Validator {
     for (const auto& id : graph.ReachOrder()) {
       const PowerPath* path = graph.PathTo(id);
       const Component* c = Find(id);
-      if ((c->type == "system_torque_limiter" || c->type == "station_torque_limiter") && path->entry_port == "output")
+      if (RolesOf(c->type).torque_limiter() && path->entry_port == "output")
         Add(Severity::kWarning, id, "output",
             Describe(*c) + ": reached from the PDU through its port 'output'; its extend and retract lock-out torques "
                            "refer to power flowing from 'input' to 'output', so swap the connections of its ports",
@@ -261,7 +275,7 @@ class Validator {
           Describe(*c) + ": inconsistent gear-ratio convention: the gearbox is reached from the PDU through its port '" +
               path->entry_port + "' (from '" + previous +
               "'), but 'input' must be the flange nearer the PDU (ratio = input speed / " +
-              (c->type == "branch_gearbox" ? "branch" : "output") + " speed); swap the connections of its ports",
+              GearedPort(*c) + " speed); swap the connections of its ports",
           c->where);
     }
   }
@@ -279,16 +293,27 @@ class Validator {
   // Geometry a parameter's own range cannot see ------------------------------------------------
   void CheckGeometry() {
     for (const auto& c : project_.components) {
-      if (c.type != "torque_shaft") continue;
-      const auto outer = c.parameters.find("outer_diameter"), wall = c.parameters.find("wall_thickness");
-      if (outer == c.parameters.end() || wall == c.parameters.end() || !outer->second.nominal || !wall->second.nominal)
-        continue;
-      const double D = *outer->second.nominal, t = *wall->second.nominal;
-      if (!(2 * t > D)) continue;
-      Add(Severity::kError, c.id, "",
-          Describe(c) + ": wall_thickness " + FormatNumber(t * 1e3, 6) + " mm is more than the radius (outer_diameter " +
-              FormatNumber(D * 1e3, 6) + " mm / 2); give wall_thickness <= outer_diameter / 2 (equal: a solid shaft)",
-          wall->second.where.empty() ? c.where : wall->second.where);
+      const ComponentTypeSpec* type = FindComponentType(c.type);
+      if (!type) continue;
+      for (const ParameterRelation& r : type->relations) {
+        const auto value = c.parameters.find(r.parameter), bound = c.parameters.find(r.bound);
+        if (value == c.parameters.end() || bound == c.parameters.end() || !value->second.nominal ||
+            !bound->second.nominal)
+          continue;
+        const double v = *value->second.nominal, b = *bound->second.nominal;
+        if (!(v * r.divisor > b)) continue;
+        const ParameterSpec* vs = type->FindParameter(r.parameter);
+        const ParameterSpec* bs = type->FindParameter(r.bound);
+        auto shown = [](double si, const ParameterSpec* spec) {
+          return spec ? FormatNumber(FromSI(si, spec->unit, spec->dimension), 6) + " " + spec->unit : FormatNumber(si, 6);
+        };
+        const std::string divisor = r.divisor == 1.0 ? "" : " / " + FormatNumber(r.divisor, 6);
+        Add(Severity::kError, c.id, "",
+            Describe(c) + ": " + r.parameter + " " + shown(v, vs) + " is more than " + r.meaning + " (" + r.bound + " " +
+                shown(b, bs) + divisor + "); give " + r.parameter + " <= " + r.bound + divisor +
+                (r.note.empty() ? "" : " (" + r.note + ")"),
+            value->second.where.empty() ? c.where : value->second.where);
+      }
     }
   }
 
@@ -333,7 +358,8 @@ class Validator {
         } else if (!IsActuator(c->type) && FindElementType(c->type) == nullptr) {
           Add(Severity::kError, id, "",
               "load case '" + lc.name + "': actuator load on " + Describe(*c) +
-                  ", which is not an actuator; give loads for geared_rotary_actuator or ballscrew_actuator components",
+                  ", which is not an actuator; give loads for " + JoinOr(ComponentTypesWith(&ComponentRoles::actuator)) +
+                  " components",
               lc.where);
         }
       }
@@ -365,9 +391,8 @@ class Validator {
         Add(Severity::kError, "", "",
             "scenario '" + s.name + "': unknown load case '" + s.load_case + "'" + SuggestionHint(s.load_case, load_cases, "load cases"),
             s.where);
-      CheckReference(s, s.jam_component, "jam",
-                     {"jam", "geared_rotary_actuator", "ballscrew_actuator", "station_torque_limiter", "branch_gearbox"});
-      CheckReference(s, s.rupture_component, "rupture", {"disconnector", "torque_shaft"});
+      CheckReference(s, s.jam_component, "jam", ComponentTypesWith(&ComponentRoles::jammable));
+      CheckReference(s, s.rupture_component, "rupture", ComponentTypesWith(&ComponentRoles::rupturable));
       if (s.kind == "jam" && !s.jam_component)
         Add(Severity::kError, "", "", "scenario '" + s.name + "': kind jam without a jammed component", s.where);
       if (s.kind == "rupture" && !s.rupture_component)

@@ -304,9 +304,9 @@ std::vector<ParameterShare> Rank(const detail::Graph& g, const Focus& f, const F
 
 const Component* FindSensor(const detail::Graph& g, const std::vector<int>& nodes) {
   for (int i : nodes)
-    if (g.Type(i) == "position_sensor") return g.nodes[i].component;
+    if (g.Roles(i).tip_sensor) return g.nodes[i].component;
   for (const auto& n : g.nodes)
-    if (n.component->type == "position_sensor") return n.component;
+    if (RolesOf(n.component->type).tip_sensor) return n.component;
   return nullptr;
 }
 
@@ -392,7 +392,7 @@ PeakReport AnalysePeaks(const Project& project, const PeakOptions& options) {
     double static_torque = stall ? detail::NominalValue(pdu, "stall_torque") : 0.0;
     Interval static_bounds = stall ? detail::Read<Interval>(pdu, "stall_torque", bounds.mode) : Interval(0.0);
     for (int k : g.PathToRoot(a))
-      if (g.Type(k) == "system_torque_limiter" && detail::HasValue(*g.nodes[k].component, "lockout_torque_extend")) {
+      if (g.Roles(k).system_limiter && detail::HasValue(*g.nodes[k].component, "lockout_torque_extend")) {
         const Component& stl = *g.nodes[k].component;
         static_torque = std::min(static_torque, detail::NominalValue(stl, "lockout_torque_extend") * speed_ratio[k]);
         static_bounds = detail::Min(static_bounds, detail::Read<Interval>(stl, "lockout_torque_extend", bounds.mode) * bounds.n[k]);
@@ -519,7 +519,7 @@ PeakReport AnalysePeaks(const Project& project, const PeakOptions& options) {
         w.worst_case = pc.name;
         w.torque = torque;
       }
-      if (pc.kind == "jam" && g.Type(k) == "station_torque_limiter" && detail::HasValue(*g.nodes[k].component, "end_stop_torque")) {
+      if (pc.kind == "jam" && g.Roles(k).station_limiter && detail::HasValue(*g.nodes[k].component, "end_stop_torque")) {
         const Component& limiter = *g.nodes[k].component;
         cap = std::min(cap, detail::NominalValue(limiter, "end_stop_torque") * speed_ratio[k]);
         cap_bounds = detail::Min(cap_bounds, detail::Read<Interval>(limiter, "end_stop_torque", bounds.mode) * bounds.n[k]);

@@ -47,6 +47,8 @@ struct Graph {
   }
   const std::string& Id(int i) const { return nodes[i].component->id; }
   const std::string& Type(int i) const { return nodes[i].component->type; }
+  /// The roles of node i's component type (its catalogue declaration).
+  ComponentRoles Roles(int i) const { return RolesOf(Type(i)); }
   bool IsActuator(int i) const { return Has(i, &model::ComponentRoles::actuator); }
   /// True when node i's type has the role.
   bool Has(int i, bool model::ComponentRoles::*role) const {

@@ -37,6 +37,13 @@ double Round(double v) {
 }
 nlohmann::json Number(double v) { return std::isfinite(v) ? nlohmann::json(Round(v)) : nlohmann::json(nullptr); }
 
+/// The components whose torque a sizing case's transient peak and capacity are read at: the
+/// shaft segments and the wing-tip brakes on its load path (as `highlift peak --transient`).
+bool CarriesCaseTorque(const Component& c) {
+  const ComponentRoles r = RolesOf(c.type);
+  return r.segment || r.tip_brake;
+}
+
 // ---------------------------------------------------------------------------------------------
 // Simulations
 
@@ -50,12 +57,15 @@ struct SignalChoice {
 /// limiters, wing-tip brakes and shafts, the monitor's brake command. The shaft columns are cut
 /// down to the one with the largest peak after the run.
 std::vector<SignalChoice> ChooseSignals(const Project& project) {
-  std::vector<SignalChoice> out = {{"pdu.w", "speed"}};
+  std::vector<SignalChoice> out;
   for (const Component& c : project.components)
-    if (c.type == "position_sensor") out.push_back({c.id + ".w", "speed"});
+    if (RolesOf(c.type).drive_unit) out.push_back({c.id + ".w", "speed"});
   for (const Component& c : project.components)
-    if (c.type == "system_torque_limiter" || c.type == "wing_tip_brake" || c.type == "torque_shaft")
-      out.push_back({c.id + ".tau", "torque"});
+    if (RolesOf(c.type).tip_sensor) out.push_back({c.id + ".w", "speed"});
+  for (const Component& c : project.components) {
+    const ComponentRoles r = RolesOf(c.type);
+    if (r.system_limiter || r.tip_brake || r.segment) out.push_back({c.id + ".tau", "torque"});
+  }
   out.push_back({"monitor.wtb", "state"});
   return out;
 }
@@ -173,7 +183,7 @@ nlohmann::json HistoryJson(const Project& project, const SimulationJob& job, int
   double peak = -1;
   for (const sim::PeakTorque& p : job.component_peaks) {
     const Component* c = project.FindComponent(p.element);
-    if (c && c->type == "torque_shaft" && std::abs(p.tau) > peak) {
+    if (c && RolesOf(c->type).segment && std::abs(p.tau) > peak) {
       peak = std::abs(p.tau);
       peak_shaft = p.element;
     }
@@ -183,7 +193,7 @@ nlohmann::json HistoryJson(const Project& project, const SimulationJob& job, int
   for (std::size_t k = 0; k < h.kept().size(); ++k) {
     const std::string& column = h.kept()[k].column;
     const Component* c = project.FindComponent(column.substr(0, column.find('.')));
-    if (c && c->type == "torque_shaft" && column != peak_shaft + ".tau") continue;
+    if (c && RolesOf(c->type).segment && column != peak_shaft + ".tau") continue;
     columns.push_back(k);
     kept_values.push_back(h.values()[k]);
   }
@@ -278,7 +288,7 @@ Capacity CaseCapacity(const Project& project, const reduced_models::PeakCase& pc
   for (const auto& w : peaks.worst) {
     if (w.allowable <= 0 || w.local_torque <= 0 || w.torque.bounds.hi <= 0) continue;
     const Component* c = project.FindComponent(w.component);
-    if (!c || (c->type != "torque_shaft" && c->type != "wing_tip_brake")) continue;
+    if (!c || !CarriesCaseTorque(*c)) continue;
     if (std::find(pc.load_path.begin(), pc.load_path.end(), w.component) == pc.load_path.end()) continue;
     // local_torque is the upper bound of the torque at the component's own speed, torque the same
     // at the shaft speed: their ratio is the speed ratio.
@@ -425,7 +435,7 @@ DesignReport BuildDesignReport(const Project& project, const Project& estimated,
       double best = 0;
       for (const sim::PeakTorque& p : job.component_peaks) {
         const Component* comp = project.FindComponent(p.element);
-        if (!comp || (comp->type != "torque_shaft" && comp->type != "wing_tip_brake")) continue;
+        if (!comp || !CarriesCaseTorque(*comp)) continue;
         if (std::find(pc.load_path.begin(), pc.load_path.end(), p.element) == pc.load_path.end()) continue;
         auto k = job.model.speed_factor.find(p.element);
         const double at_shaft = std::abs(p.tau) * (k == job.model.speed_factor.end() ? 1.0 : k->second);

@@ -4,6 +4,8 @@
 #include <deque>
 #include <map>
 
+#include "highlift/core/catalogue.h"
+
 namespace highlift::report {
 namespace {
 
@@ -13,7 +15,16 @@ std::optional<double> Nominal(const Component& c, const std::string& name) {
   return it->second.nominal;
 }
 
-double Length(const Component& c) { return c.type == "torque_shaft" ? Nominal(c, "length").value_or(0.0) : 0.0; }
+/// A segment's length along the drive line (torque shafts); 0 for the others.
+double Length(const Component& c) { return RolesOf(c.type).segment ? Nominal(c, "length").value_or(0.0) : 0.0; }
+
+/// True when the flange `port` of `c` branches off the drive line to a station: a geared flange
+/// of a type whose drive line passes through it (a branch gearbox's branch).
+bool StationBranch(const Component& c, const std::string& port) {
+  const ComponentTypeSpec* type = FindComponentType(c.type);
+  const PortSpec* spec = type ? type->FindPort(port) : nullptr;
+  return spec && !spec->speed_ratio.empty() && type->FindPort("through") != nullptr;
+}
 
 /// Outboard direction: -1 on the left wing.
 double Outboard(const Component& c, double x) {
@@ -44,7 +55,7 @@ SpanLayout LayOutAlongSpan(const Project& project) {
   std::vector<double> distance(n, NAN);
   std::deque<int> queue;
   for (std::size_t i = 0; i < n; ++i)
-    if (project.components[i].type == "pdu") {
+    if (RolesOf(project.components[i].type).drive_unit) {
       distance[i] = 0;
       queue.push_back(static_cast<int>(i));
     }
@@ -57,7 +68,7 @@ SpanLayout LayOutAlongSpan(const Project& project) {
       const Component& child = project.components[to];
       int lane = out.lane[from];
       if (lane > 0) ++lane;
-      else if (parent.type == "branch_gearbox" && port == "branch") lane = 1;
+      else if (StationBranch(parent, port)) lane = 1;
       out.lane[to] = lane;
       distance[to] = distance[from] + (lane > 0 ? 0.0 : (Length(parent) + Length(child)) / 2);
       queue.push_back(to);
@@ -65,7 +76,7 @@ SpanLayout LayOutAlongSpan(const Project& project) {
   }
   for (std::size_t i = 0; i < n; ++i) {
     const Component& c = project.components[i];
-    if (c.type == "position_sensor") out.lane[i] = -1;
+    if (RolesOf(c.type).tip_sensor) out.lane[i] = -1;
     if (auto given = Nominal(c, "span_position")) {
       out.x[i] = *given;
     } else if (!std::isnan(distance[i])) {

@@ -146,7 +146,7 @@ TEST(Validate, ReferencesInScenariosAndLoadCases) {
             "E [gar.] scenario 'jam': jam of unknown component 'gar'; did you mean 'gra'?\n");
   EXPECT_EQ(Issues(Edit("\"component\": \"disc\"", "\"component\": \"wtb\"")),
             "E [wtb.] scenario 'rupture': rupture of component 'wtb' (wing_tip_brake); it must be one of: "
-            "disconnector, torque_shaft\n");
+            "torque_shaft, disconnector\n");
   EXPECT_EQ(Issues(Edit("\"load_case\": \"lc\"", "\"load_case\": \"lcc\"")),
             "E [.] scenario 'jam': unknown load case 'lcc'; did you mean 'lc'? Load cases: lc\n");
   EXPECT_EQ(Issues(Edit("\"actuator_loads\": {\"gra\"", "\"actuator_loads\": {\"stl\"")),

@@ -14,7 +14,7 @@ constexpr double kJamStiffness = 1e5;  // N*m/rad referred to the actuator input
 
 class ActuatorModel : public NamedModel {
  public:
-  explicit ActuatorModel(std::string_view type) : NamedModel(type, {.actuator = true, .jammable = true, .lumps_inertia = true}) {}
+  explicit ActuatorModel(std::string_view type) : NamedModel(type) {}
 
   PortRatio SpeedRatioLaw(std::string_view from, std::string_view to) const override {
     return GearSpeedRatio("input", from, to);

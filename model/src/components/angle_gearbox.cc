@@ -7,11 +7,8 @@ namespace {
 
 class AngleGearboxModel final : public NamedModel {
  public:
-  AngleGearboxModel() : NamedModel("angle_gearbox", {.lumps_inertia = true}) {}
+  AngleGearboxModel() : NamedModel("angle_gearbox") {}
 
-  PortRatio SpeedRatioLaw(std::string_view from, std::string_view to) const override {
-    return GearSpeedRatio("input", from, to);
-  }
   std::vector<std::string> PowerPorts() const override { return {"output"}; }
 
   /// Steady state: a gear stage (eta = eta_mesh^meshes both ways) plus its Stribeck friction.

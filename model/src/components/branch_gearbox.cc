@@ -7,14 +7,8 @@ namespace {
 
 class BranchGearboxModel final : public NamedModel {
  public:
-  BranchGearboxModel() : NamedModel("branch_gearbox", {.lumps_inertia = true}) {}
+  BranchGearboxModel() : NamedModel("branch_gearbox") {}
 
-  PortRatio SpeedRatioLaw(std::string_view from, std::string_view to) const override {
-    // The branch turns 1/ratio as fast as the through shaft.
-    if (to == "branch" && from != "branch") return {"ratio", -1};
-    if (from == "branch" && to != "branch") return {"ratio", 1};
-    return {};
-  }
   std::vector<std::string> PowerPorts() const override { return {"branch", "through"}; }  // the station first
 
   /// Steady state: the through shaft 1:1, the branch a gear stage, plus its Stribeck friction.

@@ -55,16 +55,14 @@ T MeshEfficiency(const ParameterReader<T>& p) {
   return eta;
 }
 
-/// Helper base: the type name and the roles as constructor arguments.
+/// Helper base: the type name as constructor argument (its roles are in its declaration).
 class NamedModel : public ComponentModel {
  public:
-  NamedModel(std::string_view type, ComponentRoles roles = {}) : type_(type), roles_(roles) {}
+  explicit NamedModel(std::string_view type) : type_(type) {}
   std::string_view type() const override { return type_; }
-  ComponentRoles roles() const override { return roles_; }
 
  private:
   std::string_view type_;
-  ComponentRoles roles_;
 };
 
 /// Two-flange components (ports a and b) that are one element `c.id` with flanges a/b.

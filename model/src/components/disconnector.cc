@@ -10,7 +10,7 @@ constexpr double kDefaultDamping = 100;    // N*m*s/rad
 
 class DisconnectorModel final : public NamedModel {
  public:
-  DisconnectorModel() : NamedModel("disconnector", {.rupturable = true}) {}
+  DisconnectorModel() : NamedModel("disconnector") {}
 
   /// No inertia of its own in the lumped models; its stiffness when given.
   template <class T>

@@ -7,7 +7,7 @@ namespace {
 
 class JamModel final : public NamedModel {
  public:
-  JamModel() : NamedModel("jam", {.jammable = true, .lumps_inertia = true}) {}
+  JamModel() : NamedModel("jam") {}
 
   std::vector<std::string> PowerPorts() const override { return {}; }
 

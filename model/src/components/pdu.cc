@@ -9,7 +9,7 @@ namespace {
 
 class PduModel final : public NamedModel {
  public:
-  PduModel() : NamedModel("pdu", {.drive_unit = true, .lumps_inertia = true}) {}
+  PduModel() : NamedModel("pdu") {}
 
   std::vector<std::string> PowerPorts() const override { return {"left", "right"}; }
 

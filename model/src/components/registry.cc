@@ -62,7 +62,21 @@ void CheckBacklash(const Component& c) {
 
 }  // namespace components
 
-PortRatio ComponentModel::SpeedRatioLaw(std::string_view, std::string_view) const { return {}; }
+ComponentRoles ComponentModel::roles() const { return RolesOf(type()); }
+
+PortRatio ComponentModel::SpeedRatioLaw(std::string_view from, std::string_view to) const {
+  // A geared flange turns 1/value as fast as "input" (and as every flange that is not geared).
+  const ComponentTypeSpec* spec = FindComponentType(type());
+  if (!spec) return {};
+  auto geared = [&](std::string_view port) -> std::string_view {
+    const PortSpec* p = spec->FindPort(port);
+    return p ? std::string_view(p->speed_ratio) : std::string_view();
+  };
+  const std::string_view f = geared(from), t = geared(to);
+  if (!t.empty() && f.empty()) return {t, -1};
+  if (!f.empty() && t.empty()) return {f, 1};
+  return {};
+}
 
 double ComponentModel::SpeedRatio(const Component& c, std::string_view from, std::string_view to) const {
   const PortRatio law = SpeedRatioLaw(from, to);

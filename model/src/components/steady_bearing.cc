@@ -7,7 +7,7 @@ namespace {
 
 class SteadyBearingModel final : public NamedModel {
  public:
-  SteadyBearingModel() : NamedModel("steady_bearing", {.chain_member = true}) {}
+  SteadyBearingModel() : NamedModel("steady_bearing") {}
 
   void Expand(const Component& c, ExpansionContext& x) const override {
     Scalars s = x.Regularised(Stribeck(c));

@@ -50,7 +50,7 @@ ShaftValues ShaftData(const Component& s, double beta) {
 
 class TorqueShaftModel final : public NamedModel {
  public:
-  TorqueShaftModel() : NamedModel("torque_shaft", {.chain_member = true, .rupturable = true, .segment = true}) {}
+  TorqueShaftModel() : NamedModel("torque_shaft") {}
 
   /// The segment at its own speed: stiffness given or the tube law; inertia given, from the
   /// linear density (thin tube, mean radius) or the tube law.

@@ -8,7 +8,7 @@ namespace {
 
 class UniversalJointModel final : public NamedModel {
  public:
-  UniversalJointModel() : NamedModel("universal_joint", {.chain_member = true}) {}
+  UniversalJointModel() : NamedModel("universal_joint") {}
 
   void Expand(const Component& c, ExpansionContext& x) const override {
     CheckBacklash(c);

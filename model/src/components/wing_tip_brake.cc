@@ -7,7 +7,7 @@ namespace {
 
 class WingTipBrakeModel final : public NamedModel {
  public:
-  WingTipBrakeModel() : NamedModel("wing_tip_brake", {.tip_brake = true, .lumps_inertia = true}) {}
+  WingTipBrakeModel() : NamedModel("wing_tip_brake") {}
 
   void Expand(const Component& c, ExpansionContext& x) const override {
     x.Add("WingTipBrake", c.id,

@@ -36,6 +36,31 @@ struct PortSpec {
   bool required = true;     ///< validation reports a required port left open
   std::string description;
   bool output = false;      ///< a signal output (y, phi, w, ...); other signal ports are inputs
+  /// A geared flange: it turns 1/value as fast as the component's flange "input", value being the
+  /// parameter named here (a gear's output: "ratio" = input speed / output speed). Empty: it
+  /// turns with "input" (or the type has no gear). The graph's speed ratios, validation's
+  /// gear-ratio convention and the model layer's speed law between ports read this.
+  std::string speed_ratio;
+};
+
+/// What a component type is in the drive system. Validation, the translation into simulation
+/// elements, the lumped models, the peak cases, the report and the campaign ask these instead of
+/// the type's name (declared once per type, with its ports and parameters).
+struct ComponentRoles {
+  bool drive_unit = false;    ///< the power drive unit: root of the transmission (one per project)
+  bool actuator = false;      ///< drives a surface: carries the load case's airloads, may jam
+  bool chain_member = false;  ///< reduced resolution: lumped with its neighbours into one chain
+  bool rupturable = false;    ///< a rupture scenario may name it
+  bool jammable = false;      ///< a jam scenario may name it
+  bool tip_brake = false;     ///< a wing-tip brake: the monitor applies it, the drive unit then shuts down
+  bool segment = false;       ///< a distributed segment (torque shaft, parameter "length"): in the lumped
+                              ///< models a link with its stiffness and inertia between two points
+  bool lumps_inertia = false; ///< in the lumped models a point of inertia is named after it
+  bool system_limiter = false;   ///< a torque limiter at the PDU output: its lock-out caps a wing's torque
+  bool station_limiter = false;  ///< a torque limiter at a station: its lock-out and end stops cap the station
+  bool tip_sensor = false;    ///< a position sensor (APPU) whose angle and speed the monitor reads
+
+  bool torque_limiter() const { return system_limiter || station_limiter; }
 };
 
 /// What a parameter holds. Scalars (the default) are quantities with a unit and an interval
@@ -58,6 +83,17 @@ struct ParameterSpec {
   bool optional = false;     ///< may be left unknown (e.g. derived from other parameters)
 };
 
+/// A bound of one parameter by another that their own valid ranges cannot express:
+/// parameter <= bound / divisor (a tube's wall_thickness <= outer_diameter / 2). Validation
+/// reports a violation at `parameter`, naming `meaning` and `note`.
+struct ParameterRelation {
+  std::string parameter;  ///< e.g. "wall_thickness"
+  std::string bound;      ///< e.g. "outer_diameter"
+  double divisor = 1.0;   ///< e.g. 2
+  std::string meaning;    ///< what bound / divisor is, e.g. "the radius"
+  std::string note;       ///< said after the fix, e.g. "equal: a solid shaft"
+};
+
 /// Declaration of a component type.
 struct ComponentTypeSpec {
   std::string name;          ///< JSON "type", e.g. "torque_shaft"
@@ -65,8 +101,12 @@ struct ComponentTypeSpec {
   std::string description;
   std::vector<PortSpec> ports;
   std::vector<ParameterSpec> parameters;
+  ComponentRoles roles;
+  std::vector<ParameterRelation> relations;
 
   const PortSpec* FindPort(std::string_view port) const;
+  /// True when a flange has a speed_ratio: the type is a gear, entered at its flange "input".
+  bool geared() const;
   const ParameterSpec* FindParameter(std::string_view parameter) const;
 };
 
@@ -85,6 +125,11 @@ const ComponentTypeSpec* FindElementType(std::string_view name);
 
 /// The names of all component types, in catalogue order (for messages and listings).
 std::vector<std::string> ComponentTypeNames();
+/// The names of the component types with a role, in catalogue order, e.g.
+/// ComponentTypesWith(&ComponentRoles::actuator).
+std::vector<std::string> ComponentTypesWith(bool ComponentRoles::*role);
+/// The roles of component type `type`; none for an unknown type.
+ComponentRoles RolesOf(std::string_view type);
 
 /// The component reference (docs/components.md) as Markdown, generated from the catalogue:
 /// every type with its ports and its parameters with units, defaults, ranges and sources.

@@ -61,7 +61,7 @@ class ComponentGraph {
   const std::vector<GraphEdge>& Neighbours(std::string_view id) const;
   /// The port at the other end of `port`, if it is connected (the first, if connected twice).
   std::optional<PortRef> ConnectedTo(const PortRef& port) const;
-  /// Id of the PDU (the first component of type "pdu"), or "" if there is none.
+  /// Id of the PDU (the first component whose type is the drive unit), or "" if there is none.
   const std::string& pdu() const { return pdu_; }
   /// Components reachable from the PDU, breadth-first, the PDU first.
   const std::vector<std::string>& ReachOrder() const { return order_; }

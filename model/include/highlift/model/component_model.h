@@ -15,6 +15,7 @@
 #include <string_view>
 #include <vector>
 
+#include "highlift/core/catalogue.h"
 #include "highlift/core/project.h"
 #include "highlift/model/interval.h"
 #include "highlift/model/network.h"
@@ -26,18 +27,9 @@ struct DriveModel;
 /// Parameter values of an element in SI, by parameter name.
 using Scalars = std::map<std::string, double>;
 
-/// What a component type is in the drive-system translation and its analyses.
-struct ComponentRoles {
-  bool drive_unit = false;    ///< the power drive unit: root of the transmission (one per project)
-  bool actuator = false;      ///< drives a surface: carries the load case's airloads, may jam
-  bool chain_member = false;  ///< reduced resolution: lumped with its neighbours into one chain
-  bool rupturable = false;    ///< a rupture scenario may name it
-  bool jammable = false;      ///< a jam scenario may name it
-  bool tip_brake = false;     ///< a wing-tip brake: the monitor applies it, the drive unit then shuts down
-  bool segment = false;       ///< a distributed segment (torque shaft): in the lumped models a link
-                              ///< with its stiffness and inertia between two points
-  bool lumps_inertia = false;  ///< in the lumped models a point of inertia is named after it
-};
+/// What a component type is in the drive system: declared with its ports and parameters in the
+/// catalogue (core/catalogue.h), read here through ComponentModel::roles().
+using ComponentRoles = highlift::ComponentRoles;
 
 /// The values of a component's parameters as a law reads them, for scalar T: double (nominal
 /// values) or Interval (domains, for enclosures). Implemented by each analysis over its own
@@ -149,8 +141,10 @@ class ComponentModel {
   virtual ~ComponentModel() = default;
   /// The catalogue name (JSON "type").
   virtual std::string_view type() const = 0;
-  virtual ComponentRoles roles() const { return {}; }
-  /// The speed law between two ports (a shaft: none; a gear: 1/ratio from input to output).
+  /// The roles its catalogue declaration gives it.
+  ComponentRoles roles() const;
+  /// The speed law between two ports. Default: by the declaration's geared flanges
+  /// (PortSpec::speed_ratio; a gear's output turns 1/ratio as fast as its input); none otherwise.
   virtual PortRatio SpeedRatioLaw(std::string_view from, std::string_view to) const;
   /// Speed at port `to` / speed at port `from` by SpeedRatioLaw at the component's nominal
   /// values. Throws InputError when a ratio has no value.
