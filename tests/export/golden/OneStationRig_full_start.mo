@@ -1,0 +1,342 @@
+within HighLift.Models;
+model OneStationRig "one-station rig"
+  HighLift.Mechanical.WingTipBrake wtb(tauB_max=550, tauB_lim=700, t_B=0.03, t_lat=0.1, J=5e-04)
+    annotation (Placement(transformation(extent={{110,-130},{130,-110}})));
+  Modelica.Mechanics.Rotational.Components.Inertia appu(
+    J=1e-05,
+    phi(start=-0.0026857684126048967, fixed=true),
+    w(start=0, fixed=true))
+    annotation (Placement(transformation(extent={{150,-50},{170,-30}})));
+  HighLift.Mechanical.LossyInertia shaft_3_m0(J=9.4621645884443e-05, tau_C=0.1875, w_small=0.1)
+    annotation (Placement(transformation(extent={{510,-50},{530,-30}})));
+  Modelica.Mechanics.Rotational.Components.Inertia shaft_3_m1(
+    J=0.000189243291768886,
+    phi(start=-0.002685768412604904, fixed=true),
+    w(start=0, fixed=true))
+    annotation (Placement(transformation(extent={{430,-50},{450,-30}})));
+  Modelica.Mechanics.Rotational.Components.SpringDamper shaft_3_e1(
+    c=13396.407984444015,
+    d=5.358563193777607)
+    annotation (Placement(transformation(extent={{470,-50},{490,-30}})));
+  Modelica.Mechanics.Rotational.Components.Inertia shaft_3_m2(
+    J=0.000189243291768886,
+    phi(start=-0.0026857684126049, fixed=true),
+    w(start=0, fixed=true))
+    annotation (Placement(transformation(extent={{350,-50},{370,-30}})));
+  Modelica.Mechanics.Rotational.Components.SpringDamper shaft_3_e2(
+    c=13396.407984444015,
+    d=5.358563193777607)
+    annotation (Placement(transformation(extent={{390,-50},{410,-30}})));
+  Modelica.Mechanics.Rotational.Components.Inertia shaft_3_m3(
+    J=0.000189243291768886,
+    phi(start=-0.002685768412604898, fixed=true),
+    w(start=0, fixed=true))
+    annotation (Placement(transformation(extent={{270,-50},{290,-30}})));
+  Modelica.Mechanics.Rotational.Components.SpringDamper shaft_3_e3(
+    c=13396.407984444015,
+    d=5.358563193777607)
+    annotation (Placement(transformation(extent={{310,-50},{330,-30}})));
+  HighLift.Mechanical.LossyInertia shaft_3_m4(J=9.4621645884443e-05, tau_C=0.1875, w_small=0.1)
+    annotation (Placement(transformation(extent={{190,-50},{210,-30}})));
+  Modelica.Mechanics.Rotational.Components.SpringDamper shaft_3_e4(
+    c=13396.407984444015,
+    d=5.358563193777607)
+    annotation (Placement(transformation(extent={{230,-50},{250,-30}})));
+  HighLift.Mechanical.GearedRotaryActuator gra_1(
+    ratio=200,
+    eta_op=0.85,
+    eta_ai=0.7,
+    phi_eta=3.141592653589793,
+    w_eta=0.1,
+    J_in=0.001,
+    J_load=0.0097,
+    tau_C=0.2,
+    d_vis=2e-04,
+    tau_S=0.07,
+    f_exp=10,
+    w_small=0.1)
+    annotation (Placement(transformation(extent={{630,-90},{650,-70}})));
+  HighLift.Mechanical.TorqueLimiter stl_1(
+    tau1_ext=90,
+    tau1_ret=63,
+    tau2_ext=112.5,
+    tau2_ret=78.75,
+    c1=20000,
+    c2=1000,
+    c3=1e+05,
+    d=8,
+    tauB_max=180,
+    J=5e-04)
+    annotation (Placement(transformation(extent={{590,-90},{610,-70}})));
+  HighLift.Mechanical.BranchGearbox gbx_1(
+    ratio=2,
+    elastic=false,
+    J=0.001,
+    tau_C=0.1,
+    d_vis=1e-04,
+    tau_S=0.035,
+    f_exp=10,
+    w_small=0.1,
+    eta_GE=0.97)
+    annotation (Placement(transformation(extent={{550,-50},{570,-30}})));
+  HighLift.Mechanical.LossyInertia shaft_2_m0(J=0.00019229110579574863, tau_C=0.25, w_small=0.1)
+    annotation (Placement(transformation(extent={{510,-10},{530,10}})));
+  Modelica.Mechanics.Rotational.Components.Inertia shaft_2_m1(
+    J=0.00038458221159149726,
+    phi(start=-0.0002369776592855818, fixed=true),
+    w(start=0, fixed=true))
+    annotation (Placement(transformation(extent={{590,-10},{610,10}})));
+  Modelica.Mechanics.Rotational.Components.SpringDamper shaft_2_e1(
+    c=15313.680823552833,
+    d=6.125472329421133)
+    annotation (Placement(transformation(extent={{550,-10},{570,10}})));
+  Modelica.Mechanics.Rotational.Components.Inertia shaft_2_m2(
+    J=0.00038458221159149726,
+    phi(start=-0.001053241243725357, fixed=true),
+    w(start=0, fixed=true))
+    annotation (Placement(transformation(extent={{670,-10},{690,10}})));
+  HighLift.Mechanical.Disconnector shaft_2_e2(
+    c=15313.680823552833,
+    d=6.125472329421133,
+    t_disconnect=1)
+    "rupture of shaft_2"
+    annotation (Placement(transformation(extent={{630,-10},{650,10}})));
+  Modelica.Mechanics.Rotational.Components.Inertia shaft_2_m3(
+    J=0.00038458221159149726,
+    phi(start=-0.0018695048281651323, fixed=true),
+    w(start=0, fixed=true))
+    annotation (Placement(transformation(extent={{670,-50},{690,-30}})));
+  Modelica.Mechanics.Rotational.Components.SpringDamper shaft_2_e3(
+    c=15313.680823552833,
+    d=6.125472329421133)
+    annotation (Placement(transformation(extent={{710,-10},{730,10}})));
+  HighLift.Mechanical.LossyInertia shaft_2_m4(J=0.00019229110579574863, tau_C=0.25, w_small=0.1)
+    annotation (Placement(transformation(extent={{590,-50},{610,-30}})));
+  Modelica.Mechanics.Rotational.Components.SpringDamper shaft_2_e4(
+    c=15313.680823552833,
+    d=6.125472329421133)
+    annotation (Placement(transformation(extent={{630,-50},{650,-30}})));
+  HighLift.Mechanical.LossyInertia brg_1(
+    J=5e-05,
+    tau_C=0.1,
+    d_vis=1e-04,
+    tau_S=0.035,
+    f_exp=10,
+    w_small=0.1)
+    annotation (Placement(transformation(extent={{470,-10},{490,10}})));
+  HighLift.Mechanical.LossyInertia shaft_1_m0(J=0.000288436658693623, tau_C=0.375, w_small=0.1)
+    annotation (Placement(transformation(extent={{110,-10},{130,10}})));
+  Modelica.Mechanics.Rotational.Components.Inertia shaft_1_m1(
+    J=0.000576873317387246,
+    phi(start=0.0042524720551332, fixed=true),
+    w(start=0, fixed=true))
+    annotation (Placement(transformation(extent={{190,-10},{210,10}})));
+  Modelica.Mechanics.Rotational.Components.SpringDamper shaft_1_e1(
+    c=10209.120549035222,
+    d=4.08364821961409)
+    annotation (Placement(transformation(extent={{150,-10},{170,10}})));
+  Modelica.Mechanics.Rotational.Components.Inertia shaft_1_m2(
+    J=0.000576873317387246,
+    phi(start=0.003028076678473529, fixed=true),
+    w(start=0, fixed=true))
+    annotation (Placement(transformation(extent={{270,-10},{290,10}})));
+  Modelica.Mechanics.Rotational.Components.SpringDamper shaft_1_e2(
+    c=10209.120549035222,
+    d=4.08364821961409)
+    annotation (Placement(transformation(extent={{230,-10},{250,10}})));
+  Modelica.Mechanics.Rotational.Components.Inertia shaft_1_m3(
+    J=0.000576873317387246,
+    phi(start=0.001803681301813861, fixed=true),
+    w(start=0, fixed=true))
+    annotation (Placement(transformation(extent={{350,-10},{370,10}})));
+  Modelica.Mechanics.Rotational.Components.SpringDamper shaft_1_e3(
+    c=10209.120549035222,
+    d=4.08364821961409)
+    annotation (Placement(transformation(extent={{310,-10},{330,10}})));
+  HighLift.Mechanical.LossyInertia shaft_1_m4(J=0.000288436658693623, tau_C=0.375, w_small=0.1)
+    annotation (Placement(transformation(extent={{430,-10},{450,10}})));
+  Modelica.Mechanics.Rotational.Components.SpringDamper shaft_1_e4(
+    c=10209.120549035222,
+    d=4.08364821961409)
+    annotation (Placement(transformation(extent={{390,-10},{410,10}})));
+  HighLift.Mechanical.TorqueLimiter stl(
+    tau1_ext=470,
+    tau1_ret=470,
+    tau2_ext=587.5,
+    tau2_ret=587.5,
+    c1=20000,
+    c2=1000,
+    c3=1e+05,
+    d=8,
+    tauB_max=940,
+    J=0.001)
+    annotation (Placement(transformation(extent={{70,-10},{90,10}})));
+  HighLift.Drives.PDU pdu(
+    n_m=2,
+    J_m=3e-04,
+    ratio=20,
+    J_g=0.02,
+    w_max=25.3,
+    tau_stall=1000,
+    P_max=18000,
+    t_ramp=0.4,
+    tauPOB=1100,
+    useStopInput=true)
+    annotation (Placement(transformation(extent={{30,-10},{50,10}})));
+  Modelica.Blocks.Sources.CombiTimeTable pdu_speed_command(
+    table=[0, 0; 0.4, 25.3; 3, 25.3],
+    extrapolation=Modelica.Blocks.Types.Extrapolation.HoldLastPoint)
+    "PDU output speed command [rad/s] of load case extend_opposing"
+    annotation (Placement(transformation(extent={{-10,-10},{10,10}})));
+  Modelica.Mechanics.Rotational.Sources.Torque gra_1_airload
+    "airload on gra_1 (torque on the output, positive in the extend direction: the load case's table times -1, as its positive values oppose the extension)"
+    annotation (Placement(transformation(extent={{670,-90},{690,-70}})));
+  Modelica.Mechanics.Rotational.Sensors.AngleSensor gra_1_output_angle
+    "output angle of gra_1"
+    annotation (Placement(transformation(extent={{670,-130},{690,-110}})));
+  Modelica.Blocks.Tables.CombiTable1Ds gra_1_airload_table(
+    table=[0, -5000; 2.2, -20000],
+    extrapolation=Modelica.Blocks.Types.Extrapolation.HoldLastPoint)
+    "airload [N*m] against the output angle of gra_1 [rad]"
+    annotation (Placement(transformation(extent={{710,-50},{730,-30}})));
+  HighLift.Control.Monitoring monitor(
+    phi_asym=12.566370614359172,
+    w_over=32.89,
+    phi_unc=12.566370614359172,
+    t_detect=0.01)
+    "failure monitoring: asymmetry, overspeed, uncommanded movement"
+    annotation (Placement(transformation(extent={{70,-50},{90,-30}})));
+  Modelica.Mechanics.Rotational.Sensors.AngleSensor appu_angle_sensor
+    "shaft angle at appu"
+    annotation (Placement(transformation(extent={{110,-50},{130,-30}})));
+  Modelica.Mechanics.Rotational.Sensors.SpeedSensor appu_speed_sensor
+    "shaft speed at appu"
+    annotation (Placement(transformation(extent={{110,-90},{130,-70}})));
+  Modelica.Blocks.Continuous.Integrator monitor_commanded_angle
+    "commanded PDU angle"
+    annotation (Placement(transformation(extent={{30,-50},{50,-30}})));
+
+initial equation
+  shaft_3_m0.flange_a.phi = -0.0026857684126049084;
+  der(shaft_3_m0.flange_a.phi) = 0;
+  gra_1.flange_a.phi = -0.0025928842063024527;
+  der(gra_1.flange_a.phi) = 0;
+  shaft_2_m0.flange_a.phi = 0.0005792859251541937;
+  der(shaft_2_m0.flange_a.phi) = 0;
+  shaft_1_m0.flange_a.phi = 0.00547686743179287;
+  der(shaft_1_m0.flange_a.phi) = 0;
+  stl.flange_a.phi = 0.006101867431792867;
+  der(stl.flange_a.phi) = 0;
+
+equation
+  connect(shaft_3_m0.flange_b, shaft_3_e1.flange_a)
+    annotation (Line(points={{530,-40},{470,-40}}));
+  connect(shaft_3_e1.flange_b, shaft_3_m1.flange_a)
+    annotation (Line(points={{490,-40},{430,-40}}));
+  connect(shaft_3_m1.flange_b, shaft_3_e2.flange_a)
+    annotation (Line(points={{450,-40},{390,-40}}));
+  connect(shaft_3_e2.flange_b, shaft_3_m2.flange_a)
+    annotation (Line(points={{410,-40},{350,-40}}));
+  connect(shaft_3_m2.flange_b, shaft_3_e3.flange_a)
+    annotation (Line(points={{370,-40},{310,-40}}));
+  connect(shaft_3_e3.flange_b, shaft_3_m3.flange_a)
+    annotation (Line(points={{330,-40},{270,-40}}));
+  connect(shaft_3_m3.flange_b, shaft_3_e4.flange_a)
+    annotation (Line(points={{290,-40},{230,-40}}));
+  connect(shaft_3_e4.flange_b, shaft_3_m4.flange_a)
+    annotation (Line(points={{250,-40},{190,-40}}));
+  connect(shaft_2_m0.flange_b, shaft_2_e1.flange_a)
+    annotation (Line(points={{530,0},{550,0}}));
+  connect(shaft_2_e1.flange_b, shaft_2_m1.flange_a)
+    annotation (Line(points={{570,0},{590,0}}));
+  connect(shaft_2_m1.flange_b, shaft_2_e2.flange_a)
+    annotation (Line(points={{610,0},{630,0}}));
+  connect(shaft_2_e2.flange_b, shaft_2_m2.flange_a)
+    annotation (Line(points={{650,0},{670,0}}));
+  connect(shaft_2_m2.flange_b, shaft_2_e3.flange_a)
+    annotation (Line(points={{690,0},{710,0}}));
+  connect(shaft_2_e3.flange_b, shaft_2_m3.flange_a)
+    annotation (Line(points={{730,0},{670,-40}}));
+  connect(shaft_2_m3.flange_b, shaft_2_e4.flange_a)
+    annotation (Line(points={{690,-40},{630,-40}}));
+  connect(shaft_2_e4.flange_b, shaft_2_m4.flange_a)
+    annotation (Line(points={{650,-40},{590,-40}}));
+  connect(shaft_1_m0.flange_b, shaft_1_e1.flange_a)
+    annotation (Line(points={{130,0},{150,0}}));
+  connect(shaft_1_e1.flange_b, shaft_1_m1.flange_a)
+    annotation (Line(points={{170,0},{190,0}}));
+  connect(shaft_1_m1.flange_b, shaft_1_e2.flange_a)
+    annotation (Line(points={{210,0},{230,0}}));
+  connect(shaft_1_e2.flange_b, shaft_1_m2.flange_a)
+    annotation (Line(points={{250,0},{270,0}}));
+  connect(shaft_1_m2.flange_b, shaft_1_e3.flange_a)
+    annotation (Line(points={{290,0},{310,0}}));
+  connect(shaft_1_e3.flange_b, shaft_1_m3.flange_a)
+    annotation (Line(points={{330,0},{350,0}}));
+  connect(shaft_1_m3.flange_b, shaft_1_e4.flange_a)
+    annotation (Line(points={{370,0},{390,0}}));
+  connect(shaft_1_e4.flange_b, shaft_1_m4.flange_a)
+    annotation (Line(points={{410,0},{430,0}}));
+  connect(pdu_speed_command.y[1], pdu.w_ref)
+    annotation (Line(points={{0,0},{28,0}}, color={0,0,127}));
+  connect(pdu.flange_left, stl.flange_a)
+    annotation (Line(points={{40,10},{70,0}}));
+  connect(stl.flange_b, shaft_1_m0.flange_a)
+    annotation (Line(points={{90,0},{110,0}}));
+  connect(shaft_1_m4.flange_b, brg_1.flange_a)
+    annotation (Line(points={{450,0},{470,0}}));
+  connect(brg_1.flange_b, shaft_2_m0.flange_a)
+    annotation (Line(points={{490,0},{510,0}}));
+  connect(shaft_2_m4.flange_b, gbx_1.flange_a)
+    annotation (Line(points={{610,-40},{550,-40}}));
+  connect(gbx_1.flange_branch, stl_1.flange_a)
+    annotation (Line(points={{560,-30},{590,-80}}));
+  connect(stl_1.flange_b, gra_1.flange_a)
+    annotation (Line(points={{610,-80},{630,-80}}));
+  connect(gbx_1.flange_b, shaft_3_m0.flange_a)
+    annotation (Line(points={{570,-40},{510,-40}}));
+  connect(shaft_3_m4.flange_b, appu.flange_a)
+    annotation (Line(points={{210,-40},{150,-40}}));
+  connect(appu.flange_b, wtb.flange_a)
+    annotation (Line(points={{170,-40},{110,-120}}));
+  connect(gra_1_airload.flange, gra_1.flange_b)
+    annotation (Line(points={{690,-80},{650,-80}}));
+  connect(gra_1.flange_b, gra_1_output_angle.flange)
+    annotation (Line(points={{650,-80},{690,-120}}));
+  connect(gra_1_output_angle.phi, gra_1_airload_table.u)
+    annotation (Line(points={{691,-126},{708,-40}}, color={0,0,127}));
+  connect(gra_1_airload_table.y[1], gra_1_airload.tau)
+    annotation (Line(points={{720,-40},{668,-80}}, color={0,0,127}));
+  connect(appu.flange_a, appu_angle_sensor.flange)
+    annotation (Line(points={{150,-40},{130,-40}}));
+  connect(appu.flange_a, appu_speed_sensor.flange)
+    annotation (Line(points={{150,-40},{130,-80}}));
+  connect(appu_angle_sensor.phi, monitor.phi_left)
+    annotation (Line(points={{131,-46},{80,-40}}, color={0,0,127}));
+  connect(appu_speed_sensor.w, monitor.w_left)
+    annotation (Line(points={{131,-89},{80,-40}}, color={0,0,127}));
+  connect(appu_angle_sensor.phi, monitor.phi_right)
+    annotation (Line(points={{131,-46},{80,-40}}, color={0,0,127}));
+  connect(appu_speed_sensor.w, monitor.w_right)
+    annotation (Line(points={{131,-89},{80,-40}}, color={0,0,127}));
+  connect(pdu.phi, monitor.phi_pdu)
+    annotation (Line(points={{51,-6},{80,-40}}, color={0,0,127}));
+  connect(pdu_speed_command.y[1], monitor_commanded_angle.u)
+    annotation (Line(points={{0,0},{28,-40}}, color={0,0,127}));
+  connect(monitor_commanded_angle.y, monitor.phi_cmd)
+    annotation (Line(points={{51,-40},{80,-40}}, color={0,0,127}));
+  connect(monitor.wtb, wtb.apply)
+    annotation (Line(points={{80,-40},{120,-108}}, color={0,0,127}));
+  connect(monitor.wtb, pdu.stop)
+    annotation (Line(points={{80,-40},{40,0}}, color={0,0,127}));
+
+  annotation (
+    experiment(StopTime=3, Tolerance=1e-06, Interval=0.001),
+    Diagram(coordinateSystem(preserveAspectRatio=false, extent={{-20,-140},{740,20}})),
+    Documentation(info="<html>
+<p>Drive system of the highlift project <strong>one-station rig</strong>, exported by <code>highlift export</code> at full resolution (each torque shaft split into 4 elements). It is the element network that <code>highlift simulate</code> integrates; instance names are its element ids.</p>
+<p>A PDU drives one wing transmission: system torque limiter, two shaft segments with a steady bearing, a station (T-gearbox, station torque limiter, geared rotary actuator) and the outboard shaft to the APPU and the wing-tip brake. Numbers: domain.md s3 (E) and the catalogue defaults.</p>
+<p>Scenario <strong>rupture_wtb</strong> (rupture), load case <strong>extend_opposing</strong> (extend).</p>
+<p>Positive rotation is the extend direction. The model starts where <code>highlift simulate</code> starts, at rest in the static equilibrium: loads balanced to 5.04951e-15 N*m (fixed start values of one inertia per degree of freedom, initial equations on other flanges).</p>
+</html>"));
+end OneStationRig;
