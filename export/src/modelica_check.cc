@@ -610,6 +610,13 @@ class Checker {
     return out;
   }
 
+  // The class of the library `r` names, or nullptr (and `known` false) when it is none.
+  const ClassInfo* LibraryClass(const Resolved& r, bool& known) const {
+    if (r.where == Resolved::kLibrary) return &classes_[by_path_.at(r.path)];
+    known = false;
+    return nullptr;
+  }
+
   // All names a modifier may use on an instance of a class (its declared and inherited
   // components); `known` is false when the class is not fully known.
   std::set<std::string> ModifierNames(const Resolved& r, bool& known, int depth = 0) const {
@@ -627,16 +634,13 @@ class Checker {
         out.insert(a);
       return out;
     }
-    if (r.where != Resolved::kLibrary) {
-      known = false;
-      return out;
-    }
-    const ClassInfo& info = classes_[by_path_.at(r.path)];
-    for (const Extends& e : info.extends) {
-      auto inherited = ModifierNames(Resolve(e.type, info), known, depth + 1);
+    const ClassInfo* info = LibraryClass(r, known);
+    if (info == nullptr) return out;
+    for (const Extends& e : info->extends) {
+      auto inherited = ModifierNames(Resolve(e.type, *info), known, depth + 1);
       out.insert(inherited.begin(), inherited.end());
     }
-    for (const Declaration& d : info.declarations) out.insert(d.name);
+    for (const Declaration& d : info->declarations) out.insert(d.name);
     return out;
   }
 
@@ -737,19 +741,16 @@ class Checker {
       for (auto& p : msl::RequiredParameters(r.path)) out.insert(p);
       return out;
     }
-    if (r.where != Resolved::kLibrary) {
-      known = false;
-      return out;
-    }
-    const ClassInfo& info = classes_[by_path_.at(r.path)];
-    for (const Extends& e : info.extends) {
-      for (const auto& p : Required(Resolve(e.type, info), known, depth + 1)) {
+    const ClassInfo* info = LibraryClass(r, known);
+    if (info == nullptr) return out;
+    for (const Extends& e : info->extends) {
+      for (const auto& p : Required(Resolve(e.type, *info), known, depth + 1)) {
         const bool bound = std::any_of(e.modifiers.begin(), e.modifiers.end(),
                                        [&](const Modifier& m) { return m.name == p && !m.value.empty(); });
         if (!bound) out.insert(p);
       }
     }
-    for (const Declaration& d : info.declarations)
+    for (const Declaration& d : info->declarations)
       if (d.parameter && !d.binding) out.insert(d.name);
     return out;
   }

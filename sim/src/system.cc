@@ -39,10 +39,27 @@ std::string Join(const std::vector<std::string>& v, const std::string& sep = ", 
 // D = 1 for the values without a guess (guess 0) and 1e-3 for the guessed ones, y of minimum
 // norm (normal equations with a tiny regularization, sparse). A guessed value therefore moves
 // only where the equations determine it (as a Modelica tool prefers the explicit start values).
+Eigen::VectorXd MinimumNormScaled(const std::vector<Element::InitialEquation>& rows,
+                                  const std::vector<int>& unknown, const std::vector<double>& known,
+                                  int n_unknown, const Eigen::VectorXd& guess, const Eigen::VectorXd& D,
+                                  Eigen::VectorXd& d);
+
 Eigen::VectorXd MinimumNorm(const std::vector<Element::InitialEquation>& rows,
                             const std::vector<int>& unknown, const std::vector<double>& known,
                             int n_unknown, const Eigen::VectorXd& guess, const std::vector<char>& guessed,
                             Eigen::VectorXd& d) {
+  Eigen::VectorXd D = Eigen::VectorXd::Ones(n_unknown);
+  for (int k = 0; k < n_unknown; ++k)
+    if (guessed[k]) D[k] = 1e-3;
+  return MinimumNormScaled(rows, unknown, known, n_unknown, guess, D, d);
+}
+
+// The solution x = guess + D y of E x = d with y of minimum norm: an unknown with a small D
+// moves little.
+Eigen::VectorXd MinimumNormScaled(const std::vector<Element::InitialEquation>& rows,
+                                  const std::vector<int>& unknown, const std::vector<double>& known,
+                                  int n_unknown, const Eigen::VectorXd& guess, const Eigen::VectorXd& D,
+                                  Eigen::VectorXd& d) {
   const int m = static_cast<int>(rows.size());
   d.resize(m);
   Eigen::VectorXd x = guess;
@@ -54,9 +71,6 @@ Eigen::VectorXd MinimumNorm(const std::vector<Element::InitialEquation>& rows,
     }
     return x;
   }
-  Eigen::VectorXd D = Eigen::VectorXd::Ones(n_unknown);
-  for (int k = 0; k < n_unknown; ++k)
-    if (guessed[k]) D[k] = 1e-3;
   std::vector<Eigen::Triplet<double>> triplets;
   for (int i = 0; i < m; ++i) {
     double r = rows[i].value;
@@ -907,15 +921,21 @@ std::vector<System::NodeStart> System::StartOfFreeNodes(const double* y, const s
   std::vector<Element::InitialEquation> fixed_angles = holonomic, fixed_speeds = holonomic;
   fixed_angles.insert(fixed_angles.end(), position.begin(), position.end());
   fixed_speeds.insert(fixed_speeds.end(), speed.begin(), speed.end());
-  // Node angles consistent with the twists, nearest to those of y.
+  // Node angles consistent with the twists, nearest to those of y weighted by the inertias
+  // (sum J (phi - phi_y)^2 least): the heavy drive unit keeps its angle, so an angle sensor
+  // there reads what the simulator's reads at the start.
   std::vector<Element::InitialEquation> all = fixed_angles;
   all.insert(all.end(), twists.begin(), twists.end());
-  Eigen::VectorXd phi0(n_unknown);
-  for (std::size_t n = 0; n < nodes_.size(); ++n)
-    if (unknown[n] >= 0) phi0[unknown[n]] = y[nodes_[n].s_phi];
+  Eigen::VectorXd phi0(n_unknown), D(n_unknown);
+  double j_max = 0.0;
+  for (const Node& node : nodes_) j_max = std::max(j_max, node.J);
+  for (std::size_t n = 0; n < nodes_.size(); ++n) {
+    if (unknown[n] < 0) continue;
+    phi0[unknown[n]] = y[nodes_[n].s_phi];
+    D[unknown[n]] = j_max > 0 ? 1.0 / std::sqrt(nodes_[n].J / j_max + 1e-6) : 1.0;
+  }
   Eigen::VectorXd d;
-  const Eigen::VectorXd phi =
-      MinimumNorm(all, unknown, known, n_unknown, phi0, std::vector<char>(n_unknown, 0), d);
+  const Eigen::VectorXd phi = MinimumNormScaled(all, unknown, known, n_unknown, phi0, D, d);
   inconsistency = 0.0;
   for (std::size_t i = 0; i < all.size(); ++i) {
     double r = -d[static_cast<int>(i)];
