@@ -921,18 +921,21 @@ std::vector<System::NodeStart> System::StartOfFreeNodes(const double* y, const s
   std::vector<Element::InitialEquation> fixed_angles = holonomic, fixed_speeds = holonomic;
   fixed_angles.insert(fixed_angles.end(), position.begin(), position.end());
   fixed_speeds.insert(fixed_speeds.end(), speed.begin(), speed.end());
-  // Node angles consistent with the twists, nearest to those of y weighted by the inertias
-  // (sum J (phi - phi_y)^2 least): the heavy drive unit keeps its angle, so an angle sensor
-  // there reads what the simulator's reads at the start.
+  // Node angles consistent with the twists, nearest to those of y, the nodes that a stuck
+  // brake holds in the housing moving least: the parked drive unit keeps its angle (an angle
+  // sensor there reads what the simulator's reads) and the angles outboard follow the twists.
   std::vector<Element::InitialEquation> all = fixed_angles;
   all.insert(all.end(), twists.begin(), twists.end());
-  Eigen::VectorXd phi0(n_unknown), D(n_unknown);
-  double j_max = 0.0;
-  for (const Node& node : nodes_) j_max = std::max(j_max, node.J);
-  for (std::size_t n = 0; n < nodes_.size(); ++n) {
-    if (unknown[n] < 0) continue;
-    phi0[unknown[n]] = y[nodes_[n].s_phi];
-    D[unknown[n]] = j_max > 0 ? 1.0 / std::sqrt(nodes_[n].J / j_max + 1e-6) : 1.0;
+  Eigen::VectorXd phi0(n_unknown), D = Eigen::VectorXd::Ones(n_unknown);
+  for (std::size_t n = 0; n < nodes_.size(); ++n)
+    if (unknown[n] >= 0) phi0[unknown[n]] = y[nodes_[n].s_phi];
+  if (Evaluate(eval_.t, y, nullptr)) {
+    for (const Constraint& c : eval_.constraints) {
+      int moving = 0, node = -1;
+      for (auto [m, coef] : c.row)
+        if (unknown[m] >= 0 && coef != 0.0) ++moving, node = m;
+      if (moving == 1) D[unknown[node]] = 1e-3;  // held against the housing
+    }
   }
   Eigen::VectorXd d;
   const Eigen::VectorXd phi = MinimumNormScaled(all, unknown, known, n_unknown, phi0, D, d);
