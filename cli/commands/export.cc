@@ -1,7 +1,10 @@
 // `highlift export PROJECT.json --modelica OUTDIR [--model full|reduced] [--scenario NAME]
-//  [--model-name NAME] [--tables-in-file] [--json]`: writes the HighLift Modelica package and a
-// Modelica model of the project into OUTDIR. Exit 0 on success, 2 on invalid input (a project
-// that does not read or validate, an unknown scenario, a parameter without a value).
+//  [--model-name NAME] [--tables-in-file] [--start equilibrium|rest] [--json]`: writes the
+// HighLift Modelica package with a Modelica model of the project (HighLift.Models.<name>) into
+// OUTDIR. A drive system starts where `highlift simulate` starts (the simulator computes the
+// start from the network the export writes); `--start rest` writes no start values. Exit 0 on
+// success, 2 on invalid input (a project that does not read or validate, an unknown scenario, a
+// parameter without a value).
 #include <iostream>
 
 #include <nlohmann/json.hpp>
@@ -11,6 +14,7 @@
 #include "highlift/core/project_io.h"
 #include "highlift/core/validate.h"
 #include "highlift/export/modelica.h"
+#include "highlift/sim/drive_network.h"
 
 namespace highlift::cli {
 namespace {
@@ -30,6 +34,12 @@ class ExportCommand : public Command {
                    "Modelica name of the model (default: from the project name)");
     app.add_flag("--tables-in-file", options_.tables_in_file,
                  "Write the scenario tables to <model>.txt, read by CombiTimeTable, instead of inline");
+    app.add_option("--start", start_,
+                   "Start of a drive-system model: 'equilibrium' (where highlift simulate starts: at rest, "
+                   "the loads held by the parked brakes, written as fixed start values) or 'rest' (no start "
+                   "values: untwisted springs)")
+        ->default_val("equilibrium")
+        ->check(CLI::IsMember({"equilibrium", "rest"}));
   }
 
   int Run() override {
@@ -49,12 +59,18 @@ class ExportCommand : public Command {
                    "again ('highlift validate' lists them)\n";
       return kInvalidInput;
     }
+    if (start_ == "equilibrium")
+      options_.start = [&project](const model::DriveModel& model) {
+        return sim::ComputeStartValues(model.network, sim::DriveModel{model}.Options(project));
+      };
     const ModelicaExportReport report = ExportModelica(project, options_, output_dir_);
     if (common_.json) {
       nlohmann::json files = nlohmann::json::array();
       for (const auto& f : report.files) files.push_back(f.path);
       nlohmann::json doc = {{"model", report.model_name},
+                            {"model_path", report.model_path},
                             {"model_file", report.model_file},
+                            {"start", report.start},
                             {"kind", report.kind},
                             {"scenario", report.scenario},
                             {"output_dir", output_dir_},
@@ -65,8 +81,8 @@ class ExportCommand : public Command {
       std::cout << doc.dump(2) << "\n";
     } else {
       std::cout << report.BriefReport() << "\n";
-      std::cout << "written to " << output_dir_ << "/ (load HighLift/package.mo, then "
-                << report.model_file << "; see docs/modelica.md)\n";
+      std::cout << "written to " << output_dir_ << "/ (load HighLift/package.mo, simulate " << report.model_path
+                << "; see docs/modelica.md)\n";
       for (const auto& [from, to] : report.renamed)
         std::cout << "  renamed '" << from << "' -> " << to << "\n";
     }
@@ -78,6 +94,7 @@ class ExportCommand : public Command {
   ModelicaExportOptions options_;
   std::string output_dir_;
   std::string resolution_ = "full";
+  std::string start_ = "equilibrium";
 };
 
 }  // namespace

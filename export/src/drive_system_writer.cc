@@ -4,6 +4,7 @@
 // WriteNetworkModel: HighLift classes for HighLift element types, MSL classes for MSL ones.
 // Instance names are the element ids as Modelica identifiers (shaft_l1.e1 -> shaft_l1_e1), so
 // the columns of `highlift simulate` and the variables of the exported model share their names.
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -32,7 +33,18 @@ ModelOutput WriteDriveSystem(const Project& project, const std::string& model_na
     return out;
   };
 
+  // The start: the caller's (the simulator's, from this very network), else none.
+  std::optional<model::StartValues> start;
+  if (options.start) start = options.start(model);
+  if (start && !start->unreached.empty()) {
+    std::string nodes;
+    for (const auto& n : start->unreached) nodes += (nodes.empty() ? "" : ", ") + n;
+    throw InternalError("the start of the flanges " + nodes +
+                        " (inside composite elements) cannot be written: no flange of the network reaches them");
+  }
+
   NetworkModel network;
+  network.start = start ? &*start : nullptr;
   network.elements = &model.network.elements();
   network.connections = &model.network.connections();
   network.description = project.name;
@@ -58,9 +70,16 @@ ModelOutput WriteDriveSystem(const Project& project, const std::string& model_na
       if (!scenario->description.empty()) doc << " " << HtmlEscape(scenario->description);
       doc << "</p>\n";
     }
-    doc << "<p>Positive rotation is the extend direction. The model starts at rest with untwisted springs "
-           "(the simulator starts from the static equilibrium of the loads held by the parked brakes; "
-           "see docs/modelica.md for the same start in a Modelica tool).</p>\n";
+    doc << "<p>Positive rotation is the extend direction. ";
+    if (start)
+      doc << "The model starts where <code>highlift simulate</code> starts, at rest in the "
+          << HtmlEscape(start->summary)
+          << " (fixed start values of one inertia per degree of freedom, initial equations on other flanges).";
+    else
+      doc << "The model starts at rest with untwisted springs (exported with <code>--start rest</code>; "
+             "<code>highlift simulate</code> starts from the static equilibrium of the loads held by the "
+             "parked brakes).";
+    doc << "</p>\n";
     if (!model.notes.empty()) {
       doc << "<p>Lumped chains (spring-damper or inertia: members):</p>\n<ul>\n";
       for (const auto& n : model.notes) doc << "<li>" << HtmlEscape(n) << "</li>\n";

@@ -207,8 +207,34 @@ ModelOutput WriteNetworkModel(const NetworkModel& network, const std::string& mo
     return {};
   };
 
+  // The start: an Inertia (Mass) gets phi(start, fixed) and w(start, fixed) (s and v), any
+  // other flange initial equations on its angle and its derivative.
+  std::map<std::string, std::vector<Modifier>> start_modifiers;
+  std::vector<std::string> start_equations;
+  if (network.start != nullptr) {
+    for (const model::FlangeStart& f : network.start->flanges) {
+      auto owner = by_id.find(f.flange.component);
+      if (owner == by_id.end())
+        throw InternalError("start value for flange '" + f.flange.ToString() + "', which is in no element");
+      const std::string& type = owner->second->type;
+      const bool translational = type == "Mass" || type.rfind("Translational.", 0) == 0;
+      const std::string what = "start of " + f.flange.ToString();
+      if (type == "Inertia" || type == "Mass") {
+        auto& mods = start_modifiers[f.flange.component];
+        if (f.phi) mods.push_back({translational ? "s" : "phi", "", {{"start", FormatModelicaReal(*f.phi, what)}, {"fixed", "true"}}});
+        if (f.w) mods.push_back({translational ? "v" : "w", "", {{"start", FormatModelicaReal(*f.w, what)}, {"fixed", "true"}}});
+        continue;
+      }
+      const std::string angle = ids.Get(f.flange.component) + "." + ModelicaPort(type, f.flange.port) +
+                                (translational ? ".s" : ".phi");
+      if (f.phi) start_equations.push_back(angle + " = " + FormatModelicaReal(*f.phi, what) + ";");
+      if (f.w) start_equations.push_back("der(" + angle + ") = " + FormatModelicaReal(*f.w, what) + ";");
+    }
+  }
+
   ModelWriter writer(model_name);
   std::ostringstream table_file;
+  writer.SetWithin(kModelsPackage);
   std::vector<std::pair<std::string, std::string>> extra_connects;
   std::vector<std::string> initial_equations;
   for (const auto& e : elements) {
@@ -243,8 +269,9 @@ ModelOutput WriteNetworkModel(const NetworkModel& network, const std::string& mo
             }
             inst.modifiers.push_back({"tableOnFile", "true", {}});
             inst.modifiers.push_back({"tableName", "\"" + EscapeModelicaString(name) + "\"", {}});
-            inst.modifiers.push_back({"fileName", "Modelica.Utilities.Files.loadResource(\"modelica://" + model_name +
-                                                      "/" + model_name + ".txt\")", {}});
+            inst.modifiers.push_back(
+                {"fileName", "Modelica.Utilities.Files.loadResource(\"modelica://" + std::string(kModelsFolder) + "/" +
+                                     model_name + ".txt\")", {}});
           } else {
             inst.modifiers.push_back({p.name, FormatMatrix(t->second, "element '" + e.id + "' table '" + p.name + "'"), {}});
           }
@@ -298,6 +325,14 @@ ModelOutput WriteNetworkModel(const NetworkModel& network, const std::string& mo
         }
       }
     }
+    if (auto it = start_modifiers.find(e.id); it != start_modifiers.end()) {
+      for (const Modifier& m : it->second) {
+        const bool taken = std::any_of(inst.modifiers.begin(), inst.modifiers.end(),
+                                       [&](const Modifier& x) { return x.name == m.name; });
+        HIGHLIFT_CHECK(!taken, "element '" + e.id + "': a start value of " + m.name + " given twice");
+        inst.modifiers.push_back(m);
+      }
+    }
     // A connected support switches its useSupport on (useSupportR, useSupportT of the
     // rotational-translational gears).
     for (const char* support : {"support", "supportR", "supportT"})
@@ -329,6 +364,7 @@ ModelOutput WriteNetworkModel(const NetworkModel& network, const std::string& mo
   }
   for (auto& [a, b] : extra_connects) writer.AddConnect(a, b);
   for (auto& e : initial_equations) writer.AddInitialEquation(std::move(e));
+  for (auto& e : start_equations) writer.AddInitialEquation(std::move(e));
 
   writer.SetExperiment(network.experiment);
   writer.SetDescription(network.description);
@@ -338,7 +374,9 @@ ModelOutput WriteNetworkModel(const NetworkModel& network, const std::string& mo
   out.text = writer.Render();
   out.instances = writer.instance_count();
   out.connects = writer.connect_count();
-  if (network.tables_in_file) out.extra_files.push_back({model_name + ".txt", "#1\n" + table_file.str()});
+  if (network.tables_in_file)
+    out.extra_files.push_back({std::string(kModelsFolder) + "/" + model_name + ".txt", "#1\n" + table_file.str()});
+  if (network.start != nullptr) out.start = network.start->summary;
   return out;
 }
 

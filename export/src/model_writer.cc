@@ -166,6 +166,7 @@ std::map<std::string, ModelWriter::Position> ModelWriter::Layout() const {
 std::string ModelWriter::Render() const {
   const auto position = Layout();
   std::ostringstream out;
+  if (!within_.empty()) out << "within " << within_ << ";\n";
   out << "model " << name_;
   if (!description_.empty()) out << " \"" << EscapeModelicaString(description_) << "\"";
   out << "\n";

@@ -46,6 +46,8 @@ class ModelWriter {
   void AddInitialEquation(std::string equation);
   void SetExperiment(Experiment experiment) { experiment_ = experiment; }
   void SetDescription(std::string description) { description_ = std::move(description); }
+  /// The enclosing package: Render() starts with `within <package>;` (empty: a top-level class).
+  void SetWithin(std::string package) { within_ = std::move(package); }
   /// HTML body of the Documentation(info=...) annotation (escaped on output).
   void SetDocumentation(std::string html) { documentation_ = std::move(html); }
 
@@ -53,7 +55,7 @@ class ModelWriter {
   int instance_count() const { return static_cast<int>(instances_.size()); }
   int connect_count() const { return static_cast<int>(connects_.size()); }
 
-  /// The complete model text (a top-level class, no `within`).
+  /// The complete model text.
   std::string Render() const;
 
  private:
@@ -64,6 +66,7 @@ class ModelWriter {
   std::map<std::string, Position> Layout() const;
 
   std::string name_;
+  std::string within_;
   std::string description_;
   std::string documentation_;
   std::vector<Instance> instances_;

@@ -132,13 +132,19 @@ const std::set<std::string_view> kBuiltinTypes = {"Real",      "Integer",     "B
 struct Modifier {
   std::string name;
   int line;
+  std::string value;  // the text after `name=` (tokens joined), empty for `name(...)`
 };
 
 struct Declaration {
   std::string type;  // as written
   std::string name;
   std::vector<Modifier> modifiers;
-  int line;
+  int line = 0;
+  bool parameter = false;  // parameter or constant
+  bool is_protected = false;  // declared in a protected section
+  bool binding = false;    // `= value` after the name (and its modifiers)
+  std::string binding_value;  // its text (tokens joined), up to the comment
+  std::string condition;   // `if <condition>` of a conditional component (tokens joined)
 };
 
 struct Extends {
@@ -157,6 +163,7 @@ struct Connect {
 };
 
 struct ClassInfo {
+  std::vector<std::pair<std::string, std::string>> assigned;  // `a.b = ...` equations: (a, b)
   std::string path;   // full name, e.g. HighLift.Mechanical.ShaftBrake
   std::string scope;  // enclosing package path ("" at top level)
   std::string kind;   // model, block, connector, ...
@@ -305,8 +312,25 @@ class Collector {
           expect_name = false;  // a redeclaration is not checked
           continue;
         }
-        mods.push_back({tok.text, tok.line});
+        mods.push_back({tok.text, tok.line, {}});
         expect_name = false;
+        if (q + 1 < end && Is(t_[q + 1], "=")) {  // the value, up to ',' or ')' at this depth
+          std::size_t v = q + 2;
+          int inner = 0;
+          for (; v < end; ++v) {
+            const std::string& s = t_[v].text;
+            if (t_[v].kind == TokenKind::kSymbol) {
+              if (s == "(" || s == "[" || s == "{") ++inner;
+              if (s == ")" || s == "]" || s == "}") {
+                if (inner == 0) break;
+                --inner;
+              }
+              if (s == "," && inner == 0) break;
+            }
+            mods.back().value += (mods.back().value.empty() ? "" : " ") + s;
+          }
+          q = v - 1;
+        }
       } else if (depth == 1) {
         expect_name = false;
       }
@@ -355,7 +379,7 @@ class Collector {
     }
     const std::size_t index = classes_.size();
     classes_.push_back(info);
-    bool equations = false;
+    bool equations = false, is_protected = false;
     while (pos_ < t_.size()) {
       const Token& tok = t_[pos_];
       if (Is(tok, "end") && pos_ + 1 < t_.size() && t_[pos_ + 1].kind == TokenKind::kIdent &&
@@ -392,6 +416,7 @@ class Collector {
       }
       if (Is(tok, "public") || Is(tok, "protected")) {
         equations = false;
+        is_protected = Is(tok, "protected");
         ++pos_;
         continue;
       }
@@ -409,7 +434,7 @@ class Collector {
         if (p < end && Is(t_[p], "(")) e.modifiers = Modifiers(p, SkipGroup(p));
         classes_[index].extends.push_back(std::move(e));
       } else {
-        CollectDeclaration(start, end, classes_[index]);
+        CollectDeclaration(start, end, classes_[index], is_protected);
       }
     }
     Issue(info.line, info.kind + " '" + name + "' is never closed: add 'end " + name + ";'");
@@ -429,15 +454,24 @@ class Collector {
     }
   }
 
-  void CollectDeclaration(std::size_t p, std::size_t end, ClassInfo& info) {
-    while (p < end && t_[p].kind == TokenKind::kIdent && kComponentPrefixes.count(t_[p].text)) ++p;
+  void CollectDeclaration(std::size_t p, std::size_t end, ClassInfo& info, bool is_protected) {
+    bool parameter = false;
+    while (p < end && t_[p].kind == TokenKind::kIdent && kComponentPrefixes.count(t_[p].text)) {
+      parameter = parameter || t_[p].text == "parameter" || t_[p].text == "constant";
+      ++p;
+    }
     if (p >= end || !(t_[p].kind == TokenKind::kIdent || Is(t_[p], "."))) return;
     const int line = t_[p].line;
     const std::string type = DottedName(p);
     if (p < end && Is(t_[p], "[")) p = SkipGroup(p);
     // One or more component names, separated by commas at depth 0.
     while (p < end && t_[p].kind == TokenKind::kIdent) {
-      Declaration d{type, t_[p].text, {}, line};
+      Declaration d;
+      d.type = type;
+      d.name = t_[p].text;
+      d.line = line;
+      d.parameter = parameter;
+      d.is_protected = is_protected;
       ++p;
       if (p < end && Is(t_[p], "[")) p = SkipGroup(p);
       if (p < end && Is(t_[p], "(")) {
@@ -445,22 +479,43 @@ class Collector {
         d.modifiers = Modifiers(p, close);
         p = close;
       }
-      info.declarations.push_back(std::move(d));
-      // Skip the binding, condition, comment and annotation up to a ',' or ';' at depth 0.
+      d.binding = p < end && Is(t_[p], "=");
+      // Skip the binding, condition, comment and annotation up to a ',' or ';' at depth 0; keep
+      // the condition.
+      bool in_condition = false;
       while (p < end && !Is(t_[p], ",") && !Is(t_[p], ";")) {
+        if (Is(t_[p], "if") && !d.binding) {
+          in_condition = true;
+          ++p;
+          continue;
+        }
+        if (t_[p].kind == TokenKind::kString || Is(t_[p], "annotation")) in_condition = false;
+        if (d.binding && d.binding_value.empty() && Is(t_[p], "=") && p + 1 < end &&
+            t_[p + 1].kind != TokenKind::kString)
+          d.binding_value = t_[p + 1].text;  // the first token: enough for true/false
         if (Is(t_[p], "(") || Is(t_[p], "[") || Is(t_[p], "{")) {
           p = SkipGroup(p);
         } else {
+          if (in_condition) d.condition += (d.condition.empty() ? "" : " ") + t_[p].text;
           ++p;
         }
       }
+      info.declarations.push_back(std::move(d));
       if (p < end && Is(t_[p], ",")) ++p;
       else break;
     }
   }
 
-  // connect(a.b, c.d) anywhere in an equation statement (also inside for/if).
+  // connect(a.b, c.d) anywhere in an equation statement (also inside for/if), and equations
+  // that give a component's connector a value (`motor.tau = tau_drive;`).
   void CollectConnects(std::size_t p, std::size_t end, ClassInfo& info) {
+    for (std::size_t q = p; q + 3 < end; ++q) {
+      const bool statement_start = q == p || Is(t_[q - 1], ";") || Is(t_[q - 1], "then") ||
+                                   Is(t_[q - 1], "else") || Is(t_[q - 1], "loop");
+      if (statement_start && t_[q].kind == TokenKind::kIdent && Is(t_[q + 1], ".") &&
+          t_[q + 2].kind == TokenKind::kIdent && Is(t_[q + 3], "="))
+        info.assigned.emplace_back(t_[q].text, t_[q + 2].text);
+    }
     for (; p + 1 < end; ++p) {
       if (!(Is(t_[p], "connect") && Is(t_[p + 1], "("))) continue;
       const int line = t_[p].line;
@@ -555,6 +610,13 @@ class Checker {
     return out;
   }
 
+  // The class of the library `r` names, or nullptr (and `known` false) when it is none.
+  const ClassInfo* LibraryClass(const Resolved& r, bool& known) const {
+    if (r.where == Resolved::kLibrary) return &classes_[by_path_.at(r.path)];
+    known = false;
+    return nullptr;
+  }
+
   // All names a modifier may use on an instance of a class (its declared and inherited
   // components); `known` is false when the class is not fully known.
   std::set<std::string> ModifierNames(const Resolved& r, bool& known, int depth = 0) const {
@@ -572,16 +634,13 @@ class Checker {
         out.insert(a);
       return out;
     }
-    if (r.where != Resolved::kLibrary) {
-      known = false;
-      return out;
-    }
-    const ClassInfo& info = classes_[by_path_.at(r.path)];
-    for (const Extends& e : info.extends) {
-      auto inherited = ModifierNames(Resolve(e.type, info), known, depth + 1);
+    const ClassInfo* info = LibraryClass(r, known);
+    if (info == nullptr) return out;
+    for (const Extends& e : info->extends) {
+      auto inherited = ModifierNames(Resolve(e.type, *info), known, depth + 1);
       out.insert(inherited.begin(), inherited.end());
     }
-    for (const Declaration& d : info.declarations) out.insert(d.name);
+    for (const Declaration& d : info->declarations) out.insert(d.name);
     return out;
   }
 
@@ -602,6 +661,12 @@ class Checker {
 
   void Run() {
     for (const ClassInfo& info : classes_) CheckClass(info);
+  }
+
+  /// The completeness checks of the classes defined in `files` (CheckModelicaCompleteness).
+  void RunCompleteness(const std::set<std::string>& files) {
+    for (const ClassInfo& info : classes_)
+      if (files.count(info.file)) CheckCompleteness(info);
   }
 
  private:
@@ -664,6 +729,151 @@ class Checker {
       if (a && b && *a && *b && !msl::Compatible(**a, **b))
         Issue(info, c.line, "connect(" + Join(c.a) + ", " + Join(c.b) + ") in '" + info.path +
                                 "' joins a " + msl::ToString(**a) + " to a " + msl::ToString(**b));
+    }
+  }
+
+  // Parameters of a class that have no value: its own declarations without a binding and the
+  // inherited ones the extends clause does not bind. `known` is false for an unknown class.
+  std::set<std::string> Required(const Resolved& r, bool& known, int depth = 0) const {
+    std::set<std::string> out;
+    if (depth > 20 || r.where == Resolved::kBuiltin) return out;
+    if (r.where == Resolved::kMsl) {
+      for (auto& p : msl::RequiredParameters(r.path)) out.insert(p);
+      return out;
+    }
+    const ClassInfo* info = LibraryClass(r, known);
+    if (info == nullptr) return out;
+    for (const Extends& e : info->extends) {
+      for (const auto& p : Required(Resolve(e.type, *info), known, depth + 1)) {
+        const bool bound = std::any_of(e.modifiers.begin(), e.modifiers.end(),
+                                       [&](const Modifier& m) { return m.name == p && !m.value.empty(); });
+        if (!bound) out.insert(p);
+      }
+    }
+    for (const Declaration& d : info->declarations)
+      if (d.parameter && !d.binding) out.insert(d.name);
+    return out;
+  }
+
+  // The default of a Boolean parameter of a class: "true", "false" or "" (unknown).
+  std::string BooleanDefault(const Resolved& r, const std::string& name, int depth = 0) const {
+    if (depth > 20) return "";
+    if (r.where == Resolved::kMsl) {
+      for (const auto& c : msl::ConditionalConnectors(r.path))
+        if (c.parameter == name) return c.default_value ? "true" : "false";
+      return "";
+    }
+    if (r.where != Resolved::kLibrary) return "";
+    const ClassInfo& info = classes_[by_path_.at(r.path)];
+    for (const Declaration& d : info.declarations)
+      if (d.name == name) return d.binding_value == "true" || d.binding_value == "false" ? d.binding_value : "";
+    for (const Extends& e : info.extends) {
+      for (const Modifier& m : e.modifiers)
+        if (m.name == name && (m.value == "true" || m.value == "false")) return m.value;
+      const std::string v = BooleanDefault(Resolve(e.type, info), name, depth + 1);
+      if (!v.empty()) return v;
+    }
+    return "";
+  }
+
+  // Components a class declares protected (its own and inherited ones).
+  std::set<std::string> ProtectedNames(const Resolved& r, int depth = 0) const {
+    std::set<std::string> out;
+    if (depth > 20 || r.where != Resolved::kLibrary) return out;
+    const ClassInfo& info = classes_[by_path_.at(r.path)];
+    for (const Extends& e : info.extends) {
+      auto inherited = ProtectedNames(Resolve(e.type, info), depth + 1);
+      out.insert(inherited.begin(), inherited.end());
+    }
+    for (const Declaration& d : info.declarations)
+      if (d.is_protected) out.insert(d.name);
+    return out;
+  }
+
+  // Conditional connectors of a class (declared and inherited): connector -> condition.
+  std::map<std::string, std::string> ConditionalConnectorsOf(const Resolved& r, int depth = 0) const {
+    std::map<std::string, std::string> out;
+    if (depth > 20) return out;
+    if (r.where == Resolved::kMsl) {
+      for (const auto& c : msl::ConditionalConnectors(r.path)) out[c.connector] = c.parameter;
+      return out;
+    }
+    if (r.where != Resolved::kLibrary) return out;
+    const ClassInfo& info = classes_[by_path_.at(r.path)];
+    for (const Extends& e : info.extends)
+      for (auto& [k, v] : ConditionalConnectorsOf(Resolve(e.type, info), depth + 1)) out[k] = v;
+    for (const Declaration& d : info.declarations) {
+      std::optional<msl::ConnectorKind> kind;
+      if (!d.condition.empty() && IsConnector(Resolve(d.type, info), kind)) out[d.name] = d.condition;
+    }
+    return out;
+  }
+
+  // The value of a condition ("useSupport", "not elastic") on an instance: "true", "false" or
+  // "" when it cannot be told (an expression, a parameter without a literal default).
+  std::string Evaluate(const std::string& condition, const Declaration& d, const Resolved& type) const {
+    std::string name = condition;
+    bool negate = false;
+    if (name.rfind("not ", 0) == 0) {
+      negate = true;
+      name = name.substr(4);
+    }
+    if (name.find(' ') != std::string::npos) return "";
+    std::string value;
+    for (const Modifier& m : d.modifiers)
+      if (m.name == name) value = m.value;
+    if (value.empty()) value = BooleanDefault(type, name);
+    if (value != "true" && value != "false") return "";
+    return (value == "true") != negate ? "true" : "false";
+  }
+
+  void CheckCompleteness(const ClassInfo& info) {
+    // A class a user simulates (an example, an exported model) gives every parameter a value.
+    const bool simulated = info.kind == "model" && (info.path.rfind("HighLift.Examples.", 0) == 0 ||
+                                                    info.path.rfind("HighLift.Models.", 0) == 0 ||
+                                                    info.path.find('.') == std::string::npos);
+    std::set<std::pair<std::string, std::string>> connected(info.assigned.begin(), info.assigned.end());
+    for (const Connect& c : info.connects)
+      for (const ConnectRef* r : {&c.a, &c.b})
+        if (r->parts.size() >= 2) connected.insert({r->parts[0], r->parts[1]});
+    for (const Declaration& d : info.declarations) {
+      if (simulated && d.parameter && !d.binding)
+        Issue(info, d.line, "parameter '" + d.name + "' of " + info.kind + " '" + info.path +
+                                "' has no value: give it a binding (= value)");
+      const Resolved type = Resolve(d.type, info);
+      if (type.where != Resolved::kMsl && type.where != Resolved::kLibrary) continue;
+      std::optional<msl::ConnectorKind> own_kind;
+      if (IsConnector(type, own_kind)) continue;  // a connector of the class itself
+      const std::string what = "instance '" + d.name + "' (" + type.path + ") in '" + info.path + "'";
+      bool known = true;
+      for (const auto& p : Required(type, known)) {
+        const bool given = std::any_of(d.modifiers.begin(), d.modifiers.end(),
+                                       [&](const Modifier& m) { return m.name == p && !m.value.empty(); });
+        if (!given)
+          Issue(info, d.line, what + ": parameter '" + p + "' has no value (no default in " + type.path +
+                                  " and no modifier): give it, e.g. " + d.name + "(" + p + "=...)");
+      }
+      if (!d.condition.empty()) continue;  // a conditional instance: its connections are conditional too
+      const auto conditional = ConditionalConnectorsOf(type);
+      const auto hidden = ProtectedNames(type);
+      for (const auto& [connector, kind] : Connectors(type)) {
+        if (hidden.count(connector)) continue;  // internal (the MSL pattern of conditional inputs)
+        const bool is_connected = connected.count({d.name, connector}) > 0;
+        auto cond = conditional.find(connector);
+        if (cond != conditional.end()) {
+          const std::string enabled = Evaluate(cond->second, d, type);
+          if (enabled == "false" && is_connected)
+            Issue(info, d.line, what + ": connector '" + connector + "' is connected but disabled (" +
+                                    cond->second + " is false): set it true or remove the connection");
+          if (enabled == "true" && !is_connected)
+            Issue(info, d.line, what + ": connector '" + connector + "' is enabled (" + cond->second +
+                                    ") but not connected: connect it or disable it");
+          continue;
+        }
+        const bool input = kind && (*kind == msl::ConnectorKind::kRealInput || *kind == msl::ConnectorKind::kBooleanInput);
+        if (input && !is_connected)
+          Issue(info, d.line, what + ": input '" + connector + "' is not connected: connect it to a signal source");
+      }
     }
   }
 
@@ -817,6 +1027,28 @@ std::vector<std::string> MslConnectors(std::string_view class_path) {
   if (const auto* c = msl::Find(class_path))
     for (const auto& con : c->connectors) out.push_back(con.name);
   return out;
+}
+
+std::vector<ModelicaIssue> CheckModelicaCompleteness(const std::vector<GeneratedFile>& files,
+                                                     const std::vector<GeneratedFile>& library) {
+  std::vector<ModelicaIssue> ignored;  // syntax and names: CheckModelica
+  std::vector<ClassInfo> classes;
+  std::set<std::string> checked_paths;
+  for (const auto& f : files) checked_paths.insert(f.path);
+  auto collect = [&](const GeneratedFile& f) {
+    if (f.path.size() < 3 || f.path.substr(f.path.size() - 3) != ".mo") return;
+    Tokenised tok = Tokenise(f.path, f.content);
+    Collector(f.path, tok.tokens, ignored, classes).Run();
+  };
+  for (const auto& f : library)
+    if (!checked_paths.count(f.path)) collect(f);
+  for (const auto& f : files) collect(f);
+  std::vector<ModelicaIssue> issues;
+  Checker(classes, issues).RunCompleteness(checked_paths);
+  std::stable_sort(issues.begin(), issues.end(), [](const ModelicaIssue& a, const ModelicaIssue& b) {
+    return std::tie(a.file, a.line) < std::tie(b.file, b.line);
+  });
+  return issues;
 }
 
 std::vector<ModelicaIssue> CheckModelica(const std::vector<GeneratedFile>& files,

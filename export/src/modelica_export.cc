@@ -76,6 +76,22 @@ std::string ModelNameFromProject(const std::string& project_name) {
   return SanitizeModelicaIdentifier(name);
 }
 
+// HighLift/Models/package.mo: the package of the exported models.
+std::string ModelsPackageText() {
+  return "within HighLift;\n"
+         "package Models \"Models of highlift projects, written by highlift export\"\n"
+         "  extends Modelica.Icons.Package;\n"
+         "\n"
+         "  annotation (Documentation(info=\"<html>\n"
+         "<p>\n"
+         "The models of drive systems and element networks that <code>highlift export</code> wrote into\n"
+         "this copy of the library, one class per export. Each is the element network that\n"
+         "<code>highlift simulate</code> integrates; see its documentation for the scenario and the start.\n"
+         "</p>\n"
+         "</html>\"));\n"
+         "end Models;\n";
+}
+
 void WriteFileAtomically(const std::filesystem::path& path, const std::string& content) {
   std::error_code ec;
   std::filesystem::create_directories(path.parent_path(), ec);
@@ -108,8 +124,8 @@ std::string ModelicaExportReport::BriefReport() const {
   std::ostringstream s;
   s << "Modelica model '" << model_name << "' (" << kind;
   if (!scenario.empty()) s << ", scenario '" << scenario << "'";
-  s << "): " << component_count << " instances, " << connection_count << " connections; " << files.size()
-    << " files (" << model_file << " and the HighLift package)";
+  s << "): " << component_count << " instances, " << connection_count << " connections; start: " << start
+    << "; " << files.size() << " files (the HighLift package with " << model_path << ")";
   return s.str();
 }
 
@@ -129,12 +145,19 @@ ModelicaExportReport GenerateModelica(const Project& project, const ModelicaExpo
                      "' has neither components nor elements: there is nothing to export; add "
                      "'components' (a drive system) or 'elements' (an element network)");
   }
-  report.model_file = report.model_name + ".mo";
+  report.model_path = std::string(modelica_detail::kModelsPackage) + "." + report.model_name;
+  report.model_file = std::string(modelica_detail::kModelsFolder) + "/" + report.model_name + ".mo";
+  report.start = model.start;
   report.scenario = model.scenario;
   report.renamed = model.renamed;
   report.component_count = model.instances;
   report.connection_count = model.connects;
   report.files = HighLiftLibraryFiles();
+  // The model is a class of HighLift.Models: one top-level class, loaded with HighLift.
+  for (auto& f : report.files)
+    if (f.path == "HighLift/package.order") f.content += "Models\n";
+  report.files.push_back({std::string(modelica_detail::kModelsFolder) + "/package.mo", ModelsPackageText()});
+  report.files.push_back({std::string(modelica_detail::kModelsFolder) + "/package.order", report.model_name + "\n"});
   report.files.push_back({report.model_file, model.text});
   for (auto& f : model.extra_files) report.files.push_back(std::move(f));
   std::sort(report.files.begin(), report.files.end(),

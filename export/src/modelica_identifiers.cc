@@ -117,7 +117,19 @@ std::string FormatModelicaReal(double value, std::string_view what) {
   std::array<char, 64> buffer{};
   auto [end, ec] = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
   HIGHLIFT_CHECK(ec == std::errc(), "to_chars failed");
-  return std::string(buffer.data(), end);
+  std::string shortest(buffer.data(), end);
+  // A value computed from decimal data (a share of a friction torque, a unit conversion) is
+  // often one or two units in the last place off its decimal: 0.15 * 0.5 * ... gives
+  // 0.034999999999999996. The 15-digit text is taken when it reads back within 2 ulp.
+  auto [end15, ec15] = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value,
+                                     std::chars_format::general, 15);
+  HIGHLIFT_CHECK(ec15 == std::errc(), "to_chars failed");
+  std::string rounded(buffer.data(), end15);
+  if (rounded.size() >= shortest.size()) return shortest;
+  double back = 0.0;
+  std::from_chars(rounded.data(), rounded.data() + rounded.size(), back);
+  const double ulp = std::nextafter(std::abs(value), HUGE_VAL) - std::abs(value);
+  return std::abs(back - value) <= 2 * ulp ? rounded : shortest;
 }
 
 }  // namespace highlift

@@ -316,6 +316,124 @@ bool ConnectorClassKind(std::string_view path, ConnectorKind& kind) {
   return false;
 }
 
+namespace {
+
+// Parameters without a default (a `start` value only) in MSL 4.0.0, per class we instantiate;
+// taken from the 4.0.0 sources (e.g. Inertia: `parameter SI.Inertia J(min=0, start=1)`,
+// Gain: `parameter Real k(start=1, unit="1")`). Parameters with a default are not listed.
+struct Required {
+  const char* path;
+  const char* parameters;
+};
+const Required kRequired[] = {
+    {"Modelica.Mechanics.Rotational.Components.Inertia", "J"},
+    {"Modelica.Mechanics.Rotational.Components.Spring", "c"},
+    {"Modelica.Mechanics.Rotational.Components.Damper", "d"},
+    {"Modelica.Mechanics.Rotational.Components.SpringDamper", "c d"},
+    {"Modelica.Mechanics.Rotational.Components.ElastoBacklash", "c d"},
+    {"Modelica.Mechanics.Rotational.Components.ElastoBacklash2", "c d"},
+    {"Modelica.Mechanics.Rotational.Components.IdealGear", "ratio"},
+    {"Modelica.Mechanics.Rotational.Components.IdealPlanetary", "ratio"},
+    {"Modelica.Mechanics.Rotational.Components.LossyGear", "ratio"},
+    {"Modelica.Mechanics.Rotational.Components.IdealGearR2T", "ratio"},
+    {"Modelica.Mechanics.Rotational.Components.IdealRollingWheel", "radius"},
+    {"Modelica.Mechanics.Rotational.Components.Brake", "fn_max"},
+    {"Modelica.Mechanics.Rotational.Components.Clutch", "fn_max"},
+    {"Modelica.Mechanics.Rotational.Components.OneWayClutch", "fn_max"},
+    {"Modelica.Mechanics.Rotational.Sources.ConstantTorque", "tau_constant"},
+    {"Modelica.Mechanics.Rotational.Sources.ConstantSpeed", "w_fixed"},
+    {"Modelica.Mechanics.Rotational.Sources.TorqueStep", "stepTorque offsetTorque"},
+    {"Modelica.Mechanics.Rotational.Sources.LinearSpeedDependentTorque", "tau_nominal w_nominal"},
+    {"Modelica.Mechanics.Rotational.Sources.QuadraticSpeedDependentTorque", "tau_nominal w_nominal"},
+    {"Modelica.Mechanics.Rotational.Sources.SignTorque", "tau_nominal"},
+    {"Modelica.Mechanics.Rotational.Sources.EddyCurrentTorque", "tau_max w_max"},
+    {"Modelica.Mechanics.Translational.Components.Mass", "m"},
+    {"Modelica.Mechanics.Translational.Components.Spring", "c"},
+    {"Modelica.Mechanics.Translational.Components.Damper", "d"},
+    {"Modelica.Mechanics.Translational.Components.SpringDamper", "c d"},
+    {"Modelica.Thermal.HeatTransfer.Components.HeatCapacitor", "C"},
+    {"Modelica.Blocks.Sources.Constant", "k"},
+    {"Modelica.Blocks.Sources.Ramp", "duration"},
+    {"Modelica.Blocks.Sources.Sine", "f"},
+    {"Modelica.Blocks.Sources.Cosine", "f"},
+    {"Modelica.Blocks.Sources.Pulse", "width period"},
+    {"Modelica.Blocks.Math.Gain", "k"},
+    {"Modelica.Blocks.Nonlinear.Limiter", "uMax"},
+    {"Modelica.Blocks.Continuous.FirstOrder", "T"},
+};
+
+// Conditional connectors: class, connector, switch, its default.
+struct Conditional {
+  const char* path;
+  const char* connector;
+  const char* parameter;
+  bool default_value;
+};
+const Conditional kConditional[] = {
+    {"Modelica.Mechanics.Rotational.Components.IdealGear", "support", "useSupport", false},
+    {"Modelica.Mechanics.Rotational.Components.LossyGear", "support", "useSupport", false},
+    {"Modelica.Mechanics.Rotational.Components.LossyGear", "heatPort", "useHeatPort", false},
+    {"Modelica.Mechanics.Rotational.Components.IdealGearR2T", "supportR", "useSupportR", false},
+    {"Modelica.Mechanics.Rotational.Components.IdealGearR2T", "supportT", "useSupportT", false},
+    {"Modelica.Mechanics.Rotational.Components.IdealRollingWheel", "supportR", "useSupportR", false},
+    {"Modelica.Mechanics.Rotational.Components.IdealRollingWheel", "supportT", "useSupportT", false},
+    {"Modelica.Mechanics.Rotational.Components.Damper", "heatPort", "useHeatPort", false},
+    {"Modelica.Mechanics.Rotational.Components.SpringDamper", "heatPort", "useHeatPort", false},
+    {"Modelica.Mechanics.Rotational.Components.ElastoBacklash", "heatPort", "useHeatPort", false},
+    {"Modelica.Mechanics.Rotational.Components.ElastoBacklash2", "heatPort", "useHeatPort", false},
+    {"Modelica.Mechanics.Rotational.Components.BearingFriction", "support", "useSupport", false},
+    {"Modelica.Mechanics.Rotational.Components.BearingFriction", "heatPort", "useHeatPort", false},
+    {"Modelica.Mechanics.Rotational.Components.Brake", "support", "useSupport", false},
+    {"Modelica.Mechanics.Rotational.Components.Brake", "heatPort", "useHeatPort", false},
+    {"Modelica.Mechanics.Rotational.Components.Clutch", "heatPort", "useHeatPort", false},
+    {"Modelica.Mechanics.Rotational.Components.OneWayClutch", "heatPort", "useHeatPort", false},
+    {"Modelica.Mechanics.Rotational.Sources.Torque", "support", "useSupport", false},
+    {"Modelica.Mechanics.Rotational.Sources.Speed", "support", "useSupport", false},
+    {"Modelica.Mechanics.Rotational.Sources.Position", "support", "useSupport", false},
+    {"Modelica.Mechanics.Rotational.Sources.Accelerate", "support", "useSupport", false},
+    {"Modelica.Mechanics.Rotational.Sources.Move", "support", "useSupport", false},
+    {"Modelica.Mechanics.Rotational.Sources.ConstantTorque", "support", "useSupport", false},
+    {"Modelica.Mechanics.Rotational.Sources.ConstantSpeed", "support", "useSupport", false},
+    {"Modelica.Mechanics.Rotational.Sources.TorqueStep", "support", "useSupport", false},
+    {"Modelica.Mechanics.Rotational.Sources.LinearSpeedDependentTorque", "support", "useSupport", false},
+    {"Modelica.Mechanics.Rotational.Sources.QuadraticSpeedDependentTorque", "support", "useSupport", false},
+    {"Modelica.Mechanics.Rotational.Sources.SignTorque", "support", "useSupport", false},
+    {"Modelica.Mechanics.Rotational.Sources.EddyCurrentTorque", "support", "useSupport", false},
+    {"Modelica.Mechanics.Rotational.Sources.EddyCurrentTorque", "heatPort", "useHeatPort", false},
+    {"Modelica.Mechanics.Translational.Components.Damper", "heatPort", "useHeatPort", false},
+    {"Modelica.Mechanics.Translational.Components.SpringDamper", "heatPort", "useHeatPort", false},
+    {"Modelica.Mechanics.Translational.Sources.Force", "support", "useSupport", false},
+    {"Modelica.Blocks.Continuous.Integrator", "reset", "use_reset", false},
+    {"Modelica.Blocks.Continuous.Integrator", "set", "use_set", false},  // if use_reset and use_set
+    // The partial classes the HighLift classes extend.
+    {"Modelica.Mechanics.Rotational.Interfaces.PartialTwoFlangesAndSupport", "support", "useSupport", false},
+    {"Modelica.Mechanics.Rotational.Interfaces.PartialOneFlangeAndSupport", "support", "useSupport", false},
+    {"Modelica.Mechanics.Rotational.Interfaces.PartialElementaryTwoFlangesAndSupport2", "support", "useSupport", false},
+    {"Modelica.Mechanics.Rotational.Interfaces.PartialElementaryOneFlangeAndSupport2", "support", "useSupport", false},
+    {"Modelica.Mechanics.Rotational.Interfaces.PartialTorque", "support", "useSupport", false},
+    {"Modelica.Thermal.HeatTransfer.Interfaces.PartialElementaryConditionalHeatPortWithoutT", "heatPort", "useHeatPort",
+     false},
+};
+
+}  // namespace
+
+std::vector<std::string> RequiredParameters(std::string_view path) {
+  std::vector<std::string> out;
+  for (const Required& r : kRequired) {
+    if (path != r.path) continue;
+    std::istringstream names(r.parameters);
+    for (std::string n; names >> n;) out.push_back(n);
+  }
+  return out;
+}
+
+std::vector<ConditionalConnector> ConditionalConnectors(std::string_view path) {
+  std::vector<ConditionalConnector> out;
+  for (const Conditional& c : kConditional)
+    if (path == c.path) out.push_back({c.connector, c.parameter, c.default_value});
+  return out;
+}
+
 std::string ToString(ConnectorKind kind) {
   switch (kind) {
     case ConnectorKind::kRotational: return "rotational flange";

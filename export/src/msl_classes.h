@@ -44,6 +44,20 @@ const MslClass* Find(std::string_view path);
 /// connector type; sets `kind`.
 bool ConnectorClassKind(std::string_view path, ConnectorKind& kind);
 
+/// Parameters of an MSL 4.0.0 class that have no default (declared with a `start` value only,
+/// such as Inertia.J or Gain.k): an instance must give them. Empty for a class without any or
+/// one not in the list.
+std::vector<std::string> RequiredParameters(std::string_view path);
+
+/// A connector that exists only when a Boolean parameter is true (`Flange_a support if
+/// useSupport`): the connector, the parameter and its default.
+struct ConditionalConnector {
+  std::string connector;
+  std::string parameter;
+  bool default_value = false;
+};
+std::vector<ConditionalConnector> ConditionalConnectors(std::string_view path);
+
 /// "rotational flange", "Real input", ... for messages.
 std::string ToString(ConnectorKind kind);
 

@@ -11,12 +11,14 @@
 
 #include "highlift/export/modelica.h"
 #include "highlift/model/network.h"
+#include "highlift/model/start_values.h"
 #include "model_writer.h"
 
 namespace highlift::modelica_detail {
 
 struct ModelOutput {
   std::string text;                        // the model file
+  std::string start = "rest";              // the start written (StartValues::summary)
   std::vector<GeneratedFile> extra_files;  // e.g. the scenario tables for CombiTimeTable
   std::map<std::string, std::string> renamed;
   std::string scenario;
@@ -33,7 +35,10 @@ struct NetworkModel {
   const std::vector<model::NetworkConnection>* connections = nullptr;
   std::string description;      ///< the model's description string
   Experiment experiment;
-  bool tables_in_file = false;  ///< tables of CombiTimeTable/CombiTable1Ds in <model>.txt
+  bool tables_in_file = false;  ///< tables of CombiTimeTable/CombiTable1Ds in HighLift/Models/<model>.txt
+  /// The start to write (fixed start values of inertias, initial equations on other flanges);
+  /// null: the model starts as the classes' defaults say.
+  const model::StartValues* start = nullptr;
   /// The HTML documentation, given the ids renamed to Modelica identifiers (id -> name).
   std::function<std::string(const std::map<std::string, std::string>&)> documentation;
 };
@@ -48,6 +53,10 @@ ModelOutput WriteElementNetwork(const Project& project, const std::string& model
 /// (model::BuildDriveModel, the one the simulator integrates) written by WriteNetworkModel.
 ModelOutput WriteDriveSystem(const Project& project, const std::string& model_name,
                              const ModelicaExportOptions& options);
+
+/// The package of the exported models, "HighLift.Models", and its folder "HighLift/Models".
+inline constexpr const char* kModelsPackage = "HighLift.Models";
+inline constexpr const char* kModelsFolder = "HighLift/Models";
 
 /// The HighLift library files, embedded at build time (generated source).
 const std::vector<std::pair<std::string_view, std::string_view>>& EmbeddedLibrary();

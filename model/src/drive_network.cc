@@ -329,8 +329,10 @@ std::vector<const Component*> Builder::EmissionOrder() const {
 }
 
 // Actuator loads of the load case: a torque on each actuator output, from a table against time
-// or against flap position (the output angle over the travel). Positive table values oppose
-// the commanded motion.
+// or against flap position (the output angle over the travel). In the project file positive
+// table values oppose the commanded motion; the element network's tables hold the torque on the
+// output flange in the network's sign convention (positive drives in the extend direction),
+// that is the project's values times -1 when extending and +1 when retracting.
 void Builder::EmitLoads() {
   if (!load_case_) return;
   for (const auto& [actuator_id, table] : load_case_->actuator_loads) {
@@ -342,7 +344,10 @@ void Builder::EmitLoads() {
                        load_case_->where);
     const double sign = -direction_;
     const std::string torque = a->id + ".airload";
-    Add("Torque", torque, {}, a->id, {}, "airload on " + a->id + " (positive table values oppose the motion)");
+    Add("Torque", torque, {}, a->id, {},
+        "airload on " + a->id + " (torque on the output, positive in the extend direction: the load case's "
+        "table times " + (direction_ > 0 ? "-1" : "+1") + ", as its positive values oppose the " +
+        (direction_ > 0 ? "extension" : "retraction") + ")");
     Connect(torque + ".flange", a->id + ".flange_b");
     std::vector<std::vector<double>> rows;
     const std::string lookup = a->id + ".airload_table";

@@ -16,9 +16,9 @@ std::optional<Composite> Expand(const NetworkElement& e) {
   return std::nullopt;
 }
 
-Network FlattenOnce(const Network& network, bool& expanded) {
+Network FlattenOnce(const Network& network, bool& expanded,
+                    std::map<std::string, std::vector<std::string>>& alias) {  // "composite.port" -> inner ports
   Network out;
-  std::map<std::string, std::vector<std::string>> alias;  // "composite.port" -> inner ports
   for (const NetworkElement& e : network.elements()) {
     std::optional<Composite> c = Expand(e);
     if (!c) {
@@ -57,12 +57,26 @@ Network FlattenOnce(const Network& network, bool& expanded) {
 
 }  // namespace
 
-Network FlattenComposites(const Network& network) {
+Network FlattenComposites(const Network& network, std::map<std::string, std::vector<std::string>>* ports) {
   Network current = network;
   for (int depth = 0; depth < kMaxDepth; ++depth) {
     bool expanded = false;
-    Network next = FlattenOnce(current, expanded);
+    std::map<std::string, std::vector<std::string>> alias;
+    Network next = FlattenOnce(current, expanded, alias);
     if (!expanded) return current;
+    if (ports != nullptr) {
+      // The ports of earlier levels that led to a composite of this level go on to its parts.
+      for (auto& [outer, inner] : *ports) {
+        std::vector<std::string> resolved;
+        for (const auto& p : inner) {
+          auto it = alias.find(p);
+          if (it == alias.end()) resolved.push_back(p);
+          else resolved.insert(resolved.end(), it->second.begin(), it->second.end());
+        }
+        inner = std::move(resolved);
+      }
+      for (auto& [outer, inner] : alias) ports->emplace(outer, inner);
+    }
     current = std::move(next);
   }
   throw InputError("composite elements nest deeper than " + std::to_string(kMaxDepth) +

@@ -31,7 +31,10 @@ std::optional<Composite> ExpandHydraulicComposite(const NetworkElement& element)
 
 /// `network` with every composite replaced by its parts (recursively, at most 8 levels).
 /// Throws InputError when an expansion is inconsistent (a part id outside the composite's name
-/// space, a connected port the composite does not map).
-Network FlattenComposites(const Network& network);
+/// space, a connected port the composite does not map). With `ports`, each port "element.port"
+/// of a composite of `network` (at any level) is mapped to the inner ports of the flat network
+/// it became.
+Network FlattenComposites(const Network& network,
+                          std::map<std::string, std::vector<std::string>>* ports = nullptr);
 
 }  // namespace highlift::sim::detail

@@ -237,6 +237,13 @@ class Element {
   }
   /// Holonomic constraints that hold for the angles too (gears).
   virtual void HolonomicRows(std::vector<InitialEquation>& rows) const { (void)rows; }
+  /// The relative angles of the element's own twist states at the state y as equations on the
+  /// node angles (a spring: phi[b] - phi[a] = phi_rel), whether the start value was given or
+  /// not: with them the node angles agree with the twists (the start written to Modelica).
+  virtual void TwistRows(const double* y, std::vector<InitialEquation>& rows) const {
+    (void)y;
+    (void)rows;
+  }
   /// Initial values of the element's own states, given node angles and speeds.
   virtual void InitStates(const Eval& e, double* y) const {
     (void)e;

@@ -187,6 +187,9 @@ class Compliant : public TwoFlange {
   void InitStates(const Eval& e, double* y) const override {
     y[state_offset] = std::isnan(phi_rel_start) ? e.phi[b] - e.phi[a] : phi_rel_start;
   }
+  void TwistRows(const double* y, std::vector<InitialEquation>& rows) const override {
+    rows.push_back({{{b, 1.0}, {a, -1.0}}, y[state_offset]});
+  }
   double PhiRel(const Eval& e) const { return e.y[state_offset]; }
   void Forces(Eval& e) override {
     tau = Tau(PhiRel(e), WRel(e));
@@ -692,6 +695,9 @@ class Clutch : public SurfaceFriction {
   }
   void InitStates(const Eval& e, double* y) const override {
     y[state_offset] = std::isnan(phi_rel_start) ? e.phi[p] - e.phi[m] : phi_rel_start;
+  }
+  void TwistRows(const double* y, std::vector<InitialEquation>& rows) const override {
+    rows.push_back({{{p, 1.0}, {m, -1.0}}, y[state_offset]});
   }
   void Derivatives(Eval& e) override { e.ydot[state_offset] = WF(e); }
   std::vector<std::string> OutputNames() const override {

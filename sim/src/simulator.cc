@@ -111,6 +111,57 @@ std::string CheckStructure(const Network& network, double start_time) {
   }
 }
 
+namespace {
+bool StartState(System& sys, const SimulationOptions& options, std::vector<double>& y,
+                std::vector<SimulationEvent>& events, std::string& error);
+}  // namespace
+
+model::StartValues ComputeStartValues(const Network& network, const SimulationOptions& options) {
+  System sys(network);
+  std::vector<double> y = sys.InitialState(options.start_time);
+  std::vector<SimulationEvent> events;
+  std::string error;
+  if (!StartState(sys, options, y, events, error))
+    throw InputError("the model cannot start at t = " + std::to_string(options.start_time) + " s: " + error);
+  model::StartValues out;
+  out.summary = "rest: the springs untwisted, the speeds the initial ones";
+  for (const auto& e : events)
+    if (e.element.empty()) out.summary = e.what;
+  // The flanges of the network by node, an Inertia's (or a Mass's) first: its phi and w are
+  // the natural start values in Modelica.
+  std::vector<std::vector<PortRef>> at_node(sys.nodes().size());
+  for (int pass = 0; pass < 2; ++pass)
+    for (const auto& e : network.elements()) {
+      const bool body = e.type == "Inertia" || e.type == "Mass";
+      if ((pass == 0) != body || e.spec == nullptr) continue;
+      for (const auto& port : e.spec->ports) {
+        if (port.kind != PortKind::kFlange) continue;
+        const int node = sys.NodeOfPort(e.id + "." + port.name);
+        if (node >= 0) at_node[node].push_back({e.id, port.name});
+      }
+    }
+  std::vector<int> candidates;
+  for (int pass = 0; pass < 2; ++pass)
+    for (std::size_t n = 0; n < at_node.size(); ++n) {
+      if (at_node[n].empty()) continue;
+      const NetworkElement* owner = network.Find(at_node[n].front().component);
+      const bool body = owner != nullptr && (owner->type == "Inertia" || owner->type == "Mass");
+      if ((pass == 0) == body) candidates.push_back(static_cast<int>(n));
+    }
+  for (const auto& s : sys.StartOfFreeNodes(y.data(), candidates, out.inconsistency)) {
+    if (!s.fix_phi && !s.fix_w) {
+      out.unreached.push_back(sys.nodes()[s.node].name);
+      continue;
+    }
+    model::FlangeStart f;
+    f.flange = at_node[s.node].front();
+    if (s.fix_phi) f.phi = s.phi;
+    if (s.fix_w) f.w = s.w;
+    out.flanges.push_back(f);
+  }
+  return out;
+}
+
 struct Simulator::Impl {
   explicit Impl(const Network& network) : system(network) {}
   System system;
@@ -300,6 +351,37 @@ int RootFunction(sunrealtype t, N_Vector y, sunrealtype* g, void* user) {
   }
 }
 
+// The start of a run, shared by Simulator::Run and ComputeStartValues: the initial event (modes
+// at t0, consistent speeds) and, with options.initial_equilibrium, the static equilibrium and
+// the event iteration at it. `y` holds InitialState on entry and the start on return; false
+// with `error` when the model cannot start.
+bool StartState(System& sys, const SimulationOptions& options, std::vector<double>& y,
+                std::vector<SimulationEvent>& events, std::string& error) {
+  std::vector<std::string> changes, who;
+  if (!sys.HandleEvent(options.start_time, y.data(), true, &changes, &who)) {
+    error = sys.error();
+    return false;
+  }
+  for (std::size_t i = 0; i < who.size(); ++i) events.push_back({options.start_time, "initial", who[i], changes[i]});
+  if (!options.initial_equilibrium) return true;
+  bool found = false;
+  const double imbalance = sys.SolveEquilibrium(options.start_time, y.data(), found);
+  std::ostringstream what;
+  if (found) {
+    what << "static equilibrium: loads balanced to " << imbalance << " N*m";
+    changes.clear();
+    who.clear();
+    if (!sys.HandleEvent(options.start_time, y.data(), true, &changes, &who)) {
+      error = sys.error();
+      return false;
+    }
+  } else {
+    what << "no static equilibrium (largest torque imbalance " << imbalance << " N*m): the springs start untwisted";
+  }
+  events.push_back({options.start_time, "initial", "", what.str()});
+  return true;
+}
+
 class Cvode {
  public:
   Cvode() = default;
@@ -417,35 +499,17 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
   };
 
   sink.Begin(columns);
-  // Initial event: modes at t0, consistent speeds.
+  // Initial event: modes at t0, consistent speeds; the static equilibrium if asked for.
   {
-    std::vector<std::string> changes, who;
-    if (!sys.HandleEvent(options.start_time, y0.data(), true, &changes, &who)) {
+    std::vector<SimulationEvent> initial;
+    std::string error;
+    if (!StartState(sys, options, y0, initial, error)) {
+      report.events.insert(report.events.end(), initial.begin(), initial.end());
       report.element = sys.error_element();
-      fail(SimulationStatus::kModelError, sys.error(), options.start_time);
+      fail(SimulationStatus::kModelError, error, options.start_time);
       return finish();
     }
-    for (std::size_t i = 0; i < who.size(); ++i)
-      report.events.push_back({options.start_time, "initial", who[i], changes[i]});
-    if (options.initial_equilibrium) {
-      bool found = false;
-      const double imbalance = sys.SolveEquilibrium(options.start_time, y0.data(), found);
-      std::ostringstream what;
-      if (found) {
-        what << "static equilibrium: loads balanced to " << imbalance << " N*m";
-        changes.clear();
-        who.clear();
-        if (!sys.HandleEvent(options.start_time, y0.data(), true, &changes, &who)) {
-          report.element = sys.error_element();
-          fail(SimulationStatus::kModelError, sys.error(), options.start_time);
-          return finish();
-        }
-      } else {
-        what << "no static equilibrium (largest torque imbalance " << imbalance
-             << " N*m): the springs start untwisted";
-      }
-      report.events.push_back({options.start_time, "initial", "", what.str()});
-    }
+    report.events.insert(report.events.end(), initial.begin(), initial.end());
     sample_and_row(options.start_time);
     sys.AfterEventRow();
   }

@@ -39,10 +39,27 @@ std::string Join(const std::vector<std::string>& v, const std::string& sep = ", 
 // D = 1 for the values without a guess (guess 0) and 1e-3 for the guessed ones, y of minimum
 // norm (normal equations with a tiny regularization, sparse). A guessed value therefore moves
 // only where the equations determine it (as a Modelica tool prefers the explicit start values).
+Eigen::VectorXd MinimumNormScaled(const std::vector<Element::InitialEquation>& rows,
+                                  const std::vector<int>& unknown, const std::vector<double>& known,
+                                  int n_unknown, const Eigen::VectorXd& guess, const Eigen::VectorXd& D,
+                                  Eigen::VectorXd& d);
+
 Eigen::VectorXd MinimumNorm(const std::vector<Element::InitialEquation>& rows,
                             const std::vector<int>& unknown, const std::vector<double>& known,
                             int n_unknown, const Eigen::VectorXd& guess, const std::vector<char>& guessed,
                             Eigen::VectorXd& d) {
+  Eigen::VectorXd D = Eigen::VectorXd::Ones(n_unknown);
+  for (int k = 0; k < n_unknown; ++k)
+    if (guessed[k]) D[k] = 1e-3;
+  return MinimumNormScaled(rows, unknown, known, n_unknown, guess, D, d);
+}
+
+// The solution x = guess + D y of E x = d with y of minimum norm: an unknown with a small D
+// moves little.
+Eigen::VectorXd MinimumNormScaled(const std::vector<Element::InitialEquation>& rows,
+                                  const std::vector<int>& unknown, const std::vector<double>& known,
+                                  int n_unknown, const Eigen::VectorXd& guess, const Eigen::VectorXd& D,
+                                  Eigen::VectorXd& d) {
   const int m = static_cast<int>(rows.size());
   d.resize(m);
   Eigen::VectorXd x = guess;
@@ -54,9 +71,6 @@ Eigen::VectorXd MinimumNorm(const std::vector<Element::InitialEquation>& rows,
     }
     return x;
   }
-  Eigen::VectorXd D = Eigen::VectorXd::Ones(n_unknown);
-  for (int k = 0; k < n_unknown; ++k)
-    if (guessed[k]) D[k] = 1e-3;
   std::vector<Eigen::Triplet<double>> triplets;
   for (int i = 0; i < m; ++i) {
     double r = rows[i].value;
@@ -95,7 +109,8 @@ Eigen::VectorXd MinimumNorm(const std::vector<Element::InitialEquation>& rows,
 
 System::System(const Network& original) {
   // Composite types become their parts.
-  const Network network = FlattenComposites(original);
+  std::map<std::string, std::vector<std::string>> composite_ports;
+  const Network network = FlattenComposites(original, &composite_ports);
   // Elements.
   std::map<std::string, int> element_index;
   for (const auto& ne : network.elements()) {
@@ -190,6 +205,10 @@ System::System(const Network& original) {
       n.phi0 = FixedAngle(*el);
       n.name = el->id + ".flange";
     }
+  for (std::size_t p = 0; p < port_name.size(); ++p) port_node_[port_name[p]] = port_node[p];
+  for (const auto& [outer, inner] : composite_ports)
+    if (!inner.empty())
+      if (auto it = port_index.find(inner.front()); it != port_index.end()) port_node_[outer] = port_node[it->second];
   // Bind ports.
   for (auto& el : elements_) {
     auto node_of = [&](const std::string& port) { return port_node[port_index.at(el->id + "." + port)]; };
@@ -830,6 +849,124 @@ double System::SolveEquilibrium(double t, double* y, bool& found) {
   }
   Evaluate(t, y, nullptr);
   return best;
+}
+
+int System::NodeOfPort(const std::string& port) const {
+  auto it = port_node_.find(port);
+  return it == port_node_.end() ? -1 : it->second;
+}
+
+namespace {
+
+// Gram-Schmidt on the rows of a null-space basis: picks, in the order given, the coordinates
+// that are independent of those picked before (at most the dimension of the basis).
+class IndependentRows {
+ public:
+  explicit IndependentRows(Eigen::MatrixXd basis) : basis_(std::move(basis)) {}
+  int dimension() const { return static_cast<int>(basis_.cols()); }
+  bool full() const { return static_cast<int>(picked_.size()) >= dimension(); }
+  /// True (and the row is kept) when row k adds a direction.
+  bool Pick(int k) {
+    if (full()) return false;
+    Eigen::VectorXd v = basis_.row(k).transpose();
+    const double size = v.norm();
+    if (!(size > 0)) return false;
+    for (const auto& q : picked_) v -= q.dot(v) * q;
+    for (const auto& q : picked_) v -= q.dot(v) * q;  // twice is enough (Kahan)
+    if (!(v.norm() > 1e-9 * size)) return false;
+    picked_.push_back(v / v.norm());
+    return true;
+  }
+
+ private:
+  Eigen::MatrixXd basis_;
+  std::vector<Eigen::VectorXd> picked_;
+};
+
+// A basis of the null space of the rows (restricted to the unknown nodes), n x d.
+Eigen::MatrixXd NullSpace(const std::vector<Element::InitialEquation>& rows, const std::vector<int>& unknown,
+                          int n_unknown) {
+  if (rows.empty()) return Eigen::MatrixXd::Identity(n_unknown, n_unknown);
+  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(static_cast<int>(rows.size()), n_unknown);
+  for (std::size_t i = 0; i < rows.size(); ++i)
+    for (auto [node, coef] : rows[i].row)
+      if (unknown[node] >= 0) A(static_cast<int>(i), unknown[node]) += coef;
+  Eigen::FullPivLU<Eigen::MatrixXd> lu(A);
+  lu.setThreshold(1e-10);
+  if (lu.rank() == 0) return Eigen::MatrixXd::Identity(n_unknown, n_unknown);
+  if (lu.rank() == n_unknown) return Eigen::MatrixXd(n_unknown, 0);
+  return lu.kernel();
+}
+
+}  // namespace
+
+std::vector<System::NodeStart> System::StartOfFreeNodes(const double* y, const std::vector<int>& candidates,
+                                                        double& inconsistency) {
+  std::vector<int> unknown(nodes_.size(), -1);
+  std::vector<double> known(nodes_.size(), 0.0);
+  int n_unknown = 0;
+  for (std::size_t n = 0; n < nodes_.size(); ++n) {
+    if (nodes_[n].ground) known[n] = nodes_[n].phi0;
+    else unknown[n] = n_unknown++;
+  }
+  // What fixes angles and speeds already: the gears and the elements' own initial equations
+  // (given start values, a Modelica class's fixed start values); the twists on top of them.
+  eval_.y = y;
+  std::vector<Element::InitialEquation> holonomic, position, speed, twists;
+  for (const auto& el : elements_) {
+    el->HolonomicRows(holonomic);
+    el->InitialEquationsAt(eval_, position, speed);
+    el->TwistRows(y, twists);
+  }
+  std::vector<Element::InitialEquation> fixed_angles = holonomic, fixed_speeds = holonomic;
+  fixed_angles.insert(fixed_angles.end(), position.begin(), position.end());
+  fixed_speeds.insert(fixed_speeds.end(), speed.begin(), speed.end());
+  // Node angles consistent with the twists, nearest to those of y, the nodes that a stuck
+  // brake holds in the housing moving least: the parked drive unit keeps its angle (an angle
+  // sensor there reads what the simulator's reads) and the angles outboard follow the twists.
+  std::vector<Element::InitialEquation> all = fixed_angles;
+  all.insert(all.end(), twists.begin(), twists.end());
+  Eigen::VectorXd phi0(n_unknown), D = Eigen::VectorXd::Ones(n_unknown);
+  for (std::size_t n = 0; n < nodes_.size(); ++n)
+    if (unknown[n] >= 0) phi0[unknown[n]] = y[nodes_[n].s_phi];
+  if (Evaluate(eval_.t, y, nullptr)) {
+    for (const Constraint& c : eval_.constraints) {
+      int moving = 0, node = -1;
+      for (auto [m, coef] : c.row)
+        if (unknown[m] >= 0 && coef != 0.0) ++moving, node = m;
+      if (moving == 1) D[unknown[node]] = 1e-3;  // held against the housing
+    }
+  }
+  Eigen::VectorXd d;
+  const Eigen::VectorXd phi = MinimumNormScaled(all, unknown, known, n_unknown, phi0, D, d);
+  inconsistency = 0.0;
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    double r = -d[static_cast<int>(i)];
+    for (auto [node, coef] : all[i].row)
+      if (unknown[node] >= 0) r += coef * phi[unknown[node]];
+    inconsistency = std::max(inconsistency, std::abs(r));
+  }
+  IndependentRows angles(NullSpace(fixed_angles, unknown, n_unknown));
+  IndependentRows speeds(NullSpace(fixed_speeds, unknown, n_unknown));
+  std::vector<NodeStart> out;
+  std::vector<char> seen(nodes_.size(), 0);
+  for (int n : candidates) {
+    if (n < 0 || seen[n] || unknown[n] < 0 || nodes_[n].massless) continue;
+    seen[n] = 1;
+    NodeStart s;
+    s.node = n;
+    s.fix_phi = angles.Pick(unknown[n]);
+    s.fix_w = speeds.Pick(unknown[n]);
+    s.phi = phi[unknown[n]];
+    s.w = y[nodes_[n].s_w];
+    if (s.fix_phi || s.fix_w) out.push_back(s);
+  }
+  // Free nodes no candidate reaches (reported, not fixed).
+  for (std::size_t n = 0; n < nodes_.size(); ++n) {
+    if (seen[n] || unknown[n] < 0 || nodes_[n].massless) continue;
+    if (angles.Pick(unknown[n]) || speeds.Pick(unknown[n])) out.push_back({static_cast<int>(n), false, false, phi[unknown[n]], y[nodes_[n].s_w]});
+  }
+  return out;
 }
 
 std::vector<double> System::AbsoluteTolerances(double absolute, double torque_tolerance) const {

@@ -45,6 +45,28 @@ class System {
   /// instance nothing holds the loads).
   double SolveEquilibrium(double t, double* y, bool& found);
 
+  /// The start of one node for a Modelica tool (StartOfFreeNodes).
+  struct NodeStart {
+    int node = -1;
+    bool fix_phi = false;  ///< the angle is one of the independent free ones
+    bool fix_w = false;    ///< the speed is one of the independent free ones
+    double phi = 0.0;      ///< rad (m), consistent with the twists and gears
+    double w = 0.0;        ///< rad/s (m/s)
+  };
+  /// The start at y (after InitialState and the initial events) as start values of nodes: the
+  /// node angles made consistent with the twist states of the compliant elements and with the
+  /// gears (the solution nearest to the angles of y; `inconsistency` is the largest residual,
+  /// rad), and an independent set of nodes, taken in the order of `candidates`, whose angles
+  /// (speeds) the gears and the elements' own initial values leave free: fixing those determines
+  /// every angle (speed). Free nodes that `candidates` leaves out (other than massless nodes,
+  /// whose angle is no state) are appended with node >= 0 and neither flag.
+  std::vector<NodeStart> StartOfFreeNodes(const double* y, const std::vector<int>& candidates,
+                                          double& inconsistency);
+  /// The node of a flange "element.port" of the network given to the constructor (a composite's
+  /// port included); -1 when there is none.
+  int NodeOfPort(const std::string& port) const;
+  const std::vector<Node>& nodes() const { return nodes_; }
+
   /// Full evaluation at (t, y). ydot may be null. Returns false with `error` set on failure.
   bool Evaluate(double t, const double* y, double* ydot);
   /// Root functions (after Evaluate at the same point).
@@ -116,6 +138,7 @@ class System {
   bool phases_pruned_ = false;
   void PrunePhases();
   std::vector<Node> nodes_;
+  std::map<std::string, int> port_node_;  ///< flange "element.port" -> node (flat and composite)
   std::vector<int> massless_;                        ///< massless nodes
   std::vector<std::vector<int>> massless_elements_;  ///< the compliant elements on each
   std::vector<int> massless_local_;                  ///< node -> index in massless_ (-1)

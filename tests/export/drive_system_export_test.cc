@@ -3,11 +3,14 @@
 // reduced model, tables in a file, and a structural check of the A380-class example.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <regex>
 
 #include "export_test_util.h"
 #include "highlift/core/error.h"
+#include "highlift/sim/drive_network.h"
+#include "highlift/sim/simulator.h"
 
 namespace highlift {
 namespace {
@@ -44,13 +47,47 @@ TEST(DriveSystemExport, FullModelMatchesGolden) {
   const auto report = Export(ModelResolution::kFull);
   EXPECT_EQ(report.model_name, "OneStationRig");
   EXPECT_EQ(report.scenario, "rupture_wtb");
-  ExpectGolden("OneStationRig_full.mo", FileOf(report, "OneStationRig.mo").content);
+  ExpectGolden("OneStationRig_full.mo", FileOf(report, "HighLift/Models/OneStationRig.mo").content);
   EXPECT_EQ(CheckIssues(report), "");
+}
+
+// The export as `highlift export` writes it by default: the simulator's start (static
+// equilibrium, PDU parked), one fixed angle and one fixed speed per start flange: start values
+// of an Inertia, else initial equations on the flange. (No golden file: the start values are
+// the last digits of an iterative solve.)
+TEST(DriveSystemExport, FullModelWritesEveryStartOfTheSimulatorOnce) {
+  const Project& project = SmallDrive();
+  model::StartValues start;
+  ModelicaExportOptions options;
+  options.start = [&](const model::DriveModel& model) {
+    start = sim::ComputeStartValues(model.network, sim::DriveModel{model}.Options(project));
+    return start;
+  };
+  const auto report = GenerateModelica(project, options);
+  EXPECT_NE(report.start.find("static equilibrium"), std::string::npos) << report.start;
+  EXPECT_EQ(CheckIssues(report), "");
+  const std::string text = testing::Flatten(FileOf(report, "HighLift/Models/OneStationRig.mo").content);
+  auto count = [&](const std::string& what) {
+    int n = 0;
+    for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+    return n;
+  };
+  ASSERT_GT(start.flanges.size(), 5u);
+  const int angles = count("phi(start=") + count(".phi = ");
+  const int speeds = count("w(start=") + count("der(");
+  EXPECT_EQ(angles, static_cast<int>(start.flanges.size()));
+  EXPECT_EQ(speeds, static_cast<int>(start.flanges.size()));
+  for (const auto& f : start.flanges) {
+    std::string name = f.flange.component;
+    std::replace(name.begin(), name.end(), '.', '_');
+    const bool written = text.find(" " + name + "(") != std::string::npos || text.find(name + ".") != std::string::npos;
+    EXPECT_TRUE(written) << name;
+  }
 }
 
 TEST(DriveSystemExport, ReducedModelMatchesGolden) {
   const auto report = Export(ModelResolution::kReduced);
-  ExpectGolden("OneStationRig_reduced.mo", FileOf(report, "OneStationRig.mo").content);
+  ExpectGolden("OneStationRig_reduced.mo", FileOf(report, "HighLift/Models/OneStationRig.mo").content);
   EXPECT_EQ(CheckIssues(report), "");
   EXPECT_LT(report.component_count, Export(ModelResolution::kFull).component_count);
 }
@@ -63,7 +100,7 @@ TEST(DriveSystemExport, FullModelSplitsShaftsIntoSettingsElementsAtLeastFour) {
   // sim::BuildDriveNetwork): springs with 4 c, end masses with J/8, inner masses J/4.
   {
     const auto report = Export(ModelResolution::kFull, "jam_gra_1");
-    const std::string text = testing::Flatten(FileOf(report, "OneStationRig.mo").content);
+    const std::string text = testing::Flatten(FileOf(report, "HighLift/Models/OneStationRig.mo").content);
     EXPECT_NEAR(ModifierValue(text, "shaft_1_e1", "c"), 4 * c, 1e-9 * c);
     EXPECT_NEAR(ModifierValue(text, "shaft_1_e4", "c"), 4 * c, 1e-9 * c);
     EXPECT_NEAR(ModifierValue(text, "shaft_1_m0", "J"), J / 8, 1e-12);
@@ -76,7 +113,7 @@ TEST(DriveSystemExport, FullModelSplitsShaftsIntoSettingsElementsAtLeastFour) {
   project.settings.shaft_elements = 6;
   ModelicaExportOptions options;
   options.scenario = "jam_gra_1";
-  const std::string text = testing::Flatten(FileOf(GenerateModelica(project, options), "OneStationRig.mo").content);
+  const std::string text = testing::Flatten(FileOf(GenerateModelica(project, options), "HighLift/Models/OneStationRig.mo").content);
   EXPECT_NEAR(ModifierValue(text, "shaft_1_e6", "c"), 6 * c, 1e-9 * c);
   EXPECT_NEAR(ModifierValue(text, "shaft_1_m6", "J"), J / 12, 1e-12);
   EXPECT_EQ(text.find("shaft_1_e7"), std::string::npos);
@@ -86,19 +123,19 @@ TEST(DriveSystemExport, FullModelSplitsShaftsIntoSettingsElementsAtLeastFour) {
 // interior masses are plain inertias, as in the simulator. (The inertias are the shared tube law
 // of model/laws.h, pi/8 (D^2 + d^2)(D - t) t: the last digits differ from pi/32 (D^4 - d^4).)
 TEST(DriveSystemExport, ShaftDragActsAtTheEndMassesWithRegularisedFriction) {
-  const std::string text = testing::Flatten(FileOf(Export(ModelResolution::kFull), "OneStationRig.mo").content);
-  EXPECT_NE(text.find("HighLift.Mechanical.LossyInertia shaft_1_m0(J=0.00028843665869362296, tau_C=0.375, w_small=0.1)"),
+  const std::string text = testing::Flatten(FileOf(Export(ModelResolution::kFull), "HighLift/Models/OneStationRig.mo").content);
+  EXPECT_NE(text.find("HighLift.Mechanical.LossyInertia shaft_1_m0(J=0.000288436658693623, tau_C=0.375, w_small=0.1)"),
             std::string::npos)
       << text;
-  EXPECT_NE(text.find("Modelica.Mechanics.Rotational.Components.Inertia shaft_1_m1(J=0.0005768733173872459)"),
+  EXPECT_NE(text.find("Modelica.Mechanics.Rotational.Components.Inertia shaft_1_m1(J=0.000576873317387246)"),
             std::string::npos);
-  EXPECT_NE(text.find("HighLift.Mechanical.LossyInertia shaft_1_m4(J=0.00028843665869362296, tau_C=0.375, w_small=0.1)"),
+  EXPECT_NE(text.find("HighLift.Mechanical.LossyInertia shaft_1_m4(J=0.000288436658693623, tau_C=0.375, w_small=0.1)"),
             std::string::npos);
 }
 
 TEST(DriveSystemExport, ReducedModelLumpsChainsWithSeriesStiffness) {
   const auto report = Export(ModelResolution::kReduced, "jam_gra_1");
-  const std::string text = testing::Flatten(FileOf(report, "OneStationRig.mo").content);
+  const std::string text = testing::Flatten(FileOf(report, "HighLift/Models/OneStationRig.mo").content);
   const double G = 44e9, D = 0.05, d = 0.046;
   const double polar = M_PI / 32 * (std::pow(D, 4) - std::pow(d, 4));
   const double c1 = G * polar / 3.0, c2 = G * polar / 2.0;
@@ -115,7 +152,7 @@ TEST(DriveSystemExport, ReducedModelLumpsChainsWithSeriesStiffness) {
 TEST(DriveSystemExport, RuptureScenarioInsertsADisconnectorAndTheMonitor) {
   for (auto resolution : {ModelResolution::kFull, ModelResolution::kReduced}) {
     const auto report = Export(resolution, "rupture_wtb");
-    const std::string text = testing::Flatten(FileOf(report, "OneStationRig.mo").content);
+    const std::string text = testing::Flatten(FileOf(report, "HighLift/Models/OneStationRig.mo").content);
     EXPECT_NE(text.find("HighLift.Mechanical.Disconnector"), std::string::npos) << ToString(resolution);
     EXPECT_NE(text.find("t_disconnect=1"), std::string::npos);
     EXPECT_NE(text.find("HighLift.Control.Monitoring monitor("), std::string::npos);
@@ -129,7 +166,7 @@ TEST(DriveSystemExport, RuptureScenarioInsertsADisconnectorAndTheMonitor) {
 
 TEST(DriveSystemExport, JamScenarioJamsTheActuatorOutputAndTimesTheWtb) {
   const auto report = Export(ModelResolution::kFull, "jam_gra_1");
-  const std::string text = testing::Flatten(FileOf(report, "OneStationRig.mo").content);
+  const std::string text = testing::Flatten(FileOf(report, "HighLift/Models/OneStationRig.mo").content);
   // Stiffness 1e5 N*m/rad at the input (x 200^2 at the output), structural damping beta*c.
   EXPECT_NE(text.find("HighLift.Mechanical.Jam gra_1_jam(c=4e+09, d=1600000, t_jam=1)"), std::string::npos) << text;
   EXPECT_NE(text.find("connect(gra_1.flange_b, gra_1_jam.flange)"), std::string::npos);
@@ -143,7 +180,7 @@ TEST(DriveSystemExport, JamScenarioJamsTheActuatorOutputAndTimesTheWtb) {
 
 TEST(DriveSystemExport, LoadsAgainstPositionUseTheOutputAngle) {
   const auto report = Export(ModelResolution::kFull);
-  const std::string text = testing::Flatten(FileOf(report, "OneStationRig.mo").content);
+  const std::string text = testing::Flatten(FileOf(report, "HighLift/Models/OneStationRig.mo").content);
   // 5 -> 20 kN*m over the travel angle 2.2 rad, opposing the extension (negative).
   EXPECT_NE(text.find("gra_1_airload_table(table=[0, -5000; 2.2, -20000]"), std::string::npos) << text;
   EXPECT_NE(text.find("connect(gra_1_output_angle.phi, gra_1_airload_table.u)"), std::string::npos);
@@ -154,12 +191,12 @@ TEST(DriveSystemExport, TablesInFileAreReadByCombiTimeTable) {
   ModelicaExportOptions options;
   options.tables_in_file = true;
   const auto report = GenerateModelica(SmallDrive(), options);
-  const std::string& table = FileOf(report, "OneStationRig.txt").content;
+  const std::string& table = FileOf(report, "HighLift/Models/OneStationRig.txt").content;
   EXPECT_EQ(table.rfind("#1\ndouble pdu_speed_command(3,2)\n0 0\n0.4 25.3\n3 25.3\n", 0), 0u) << table;
   EXPECT_NE(table.find("double gra_1_airload_table(2,2)\n0 -5000\n2.2 -20000\n"), std::string::npos) << table;
-  const std::string text = testing::Flatten(FileOf(report, "OneStationRig.mo").content);
+  const std::string text = testing::Flatten(FileOf(report, "HighLift/Models/OneStationRig.mo").content);
   EXPECT_NE(text.find("tableOnFile=true"), std::string::npos);
-  EXPECT_NE(text.find("Modelica.Utilities.Files.loadResource(\"modelica://OneStationRig/OneStationRig.txt\")"),
+  EXPECT_NE(text.find("Modelica.Utilities.Files.loadResource(\"modelica://HighLift/Models/OneStationRig.txt\")"),
             std::string::npos);
   EXPECT_EQ(CheckIssues(report), "");
 }

@@ -27,15 +27,15 @@ TEST(ElementNetworkExport, FirstMatchesGolden) {
   EXPECT_EQ(report.kind, "element network");
   EXPECT_EQ(report.component_count, 9);
   EXPECT_EQ(report.connection_count, 10);
-  ExpectGolden("First.mo", FileOf(report, "First.mo").content);
+  ExpectGolden("First.mo", FileOf(report, "HighLift/Models/First.mo").content);
   EXPECT_EQ(CheckIssues(report), "");
 }
 
 TEST(ElementNetworkExport, FrictionMatchesGolden) {
   const auto report = ExportFile("friction.json");
-  ExpectGolden("Friction.mo", FileOf(report, "Friction.mo").content);
+  ExpectGolden("Friction.mo", FileOf(report, "HighLift/Models/Friction.mo").content);
   EXPECT_EQ(CheckIssues(report), "");
-  const std::string text = testing::Flatten(FileOf(report, "Friction.mo").content);
+  const std::string text = testing::Flatten(FileOf(report, "HighLift/Models/Friction.mo").content);
   // Supports connected to the ground switch useSupport on; start values are fixed.
   EXPECT_NE(text.find("Modelica.Mechanics.Rotational.Components.Brake brake(fn_max=1600, useSupport=true)"),
             std::string::npos);
@@ -53,7 +53,7 @@ TEST(ElementNetworkExport, InstanceNamesCoverTheReferenceColumns) {
     std::getline(csv, header);
     ASSERT_FALSE(header.empty()) << example;
     const auto report = ExportFile(example == "First" ? "first.json" : "friction.json");
-    const std::string& text = FileOf(report, example + ".mo").content;
+    const std::string& text = FileOf(report, "HighLift/Models/" + example + ".mo").content;
     std::size_t pos = 0;
     int columns = 0;
     while ((pos = header.find('"', pos)) != std::string::npos) {
@@ -111,7 +111,7 @@ TEST(ElementNetworkExport, KeywordNamesAreRenamedAndDocumented) {
   EXPECT_EQ(report.model_name, "KeywordTestNet");
   EXPECT_EQ(report.renamed.at("end"), "end_");
   EXPECT_EQ(report.renamed.at("time"), "time_2");
-  const std::string text = testing::Flatten(FileOf(report, "KeywordTestNet.mo").content);
+  const std::string text = testing::Flatten(FileOf(report, "HighLift/Models/KeywordTestNet.mo").content);
   EXPECT_NE(text.find("model KeywordTestNet \"keyword \\\"test\\\" <net>\""), std::string::npos) << text;
   EXPECT_NE(text.find("connect(time_2.flange_b, end_.flange_a)"), std::string::npos) << text;
   EXPECT_NE(text.find("keyword \\\"test\\\" &lt;net&gt;"), std::string::npos) << text;
@@ -173,7 +173,7 @@ TEST(ElementNetworkExport, EveryElementTypeExportsToKnownClassesAndModifiers) {
   const auto report = GenerateModelica(project, ModelicaExportOptions{});
   EXPECT_EQ(CheckIssues(report), "");
   EXPECT_EQ(report.component_count, n + 1);  // plus the heat capacitor of the eddy current brake
-  const std::string text = FileOf(report, "AllElementTypes.mo").content;
+  const std::string text = FileOf(report, "HighLift/Models/AllElementTypes.mo").content;
   EXPECT_NE(text.find("initial equation"), std::string::npos);  // Spring's w_rel_start
   EXPECT_NE(text.find("Modelica.Thermal.HeatTransfer.Components.HeatCapacitor"), std::string::npos);
 }
@@ -209,7 +209,7 @@ TEST(ElementNetworkExport, ConnectedPduStopInputIsSwitchedOn) {
   })");
   const auto report = GenerateModelica(project, ModelicaExportOptions{});
   EXPECT_EQ(CheckIssues(report), "");
-  const std::string text = testing::Flatten(FileOf(report, "Shutdown.mo").content);
+  const std::string text = testing::Flatten(FileOf(report, "HighLift/Models/Shutdown.mo").content);
   EXPECT_NE(text.find("HighLift.Drives.PDU pdu(useStopInput=true)"), std::string::npos) << text;
   EXPECT_NE(text.find("HighLift.Drives.PDU spare\n"), std::string::npos) << text;
   EXPECT_NE(text.find("connect(monitor.wtb, pdu.stop)"), std::string::npos);

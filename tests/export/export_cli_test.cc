@@ -26,22 +26,40 @@ TEST(ExportCli, ExportsAnElementNetworkWithAFlangeConnectedTwice) {
   const auto dir = TempDir("first");
   const auto r = RunCli({"export", "tests/export/first.json", "--modelica", dir.string()});
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_EQ(ReadText(dir / "First.mo"), ReadText(testing::ExportTestDir() / "golden" / "First.mo"));
+  EXPECT_EQ(ReadText(dir / "HighLift" / "Models" / "First.mo"), ReadText(testing::ExportTestDir() / "golden" / "First.mo"));
   std::filesystem::remove_all(dir);
 }
 
 TEST(ExportCli, WritesLibraryAndModel) {
+  // --start rest: the model as the library writes it without a start (the golden file).
   const auto dir = TempDir("rig");
-  const auto r = RunCli({"export", "tests/export/small_drive.json", "--modelica", dir.string()});
+  const auto r = RunCli({"export", "tests/export/small_drive.json", "--modelica", dir.string(), "--start", "rest"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("Modelica model 'OneStationRig' (drive system, full, scenario 'rupture_wtb')"),
             std::string::npos)
       << r.out;
+  EXPECT_NE(r.out.find("load HighLift/package.mo, simulate HighLift.Models.OneStationRig"), std::string::npos) << r.out;
   EXPECT_TRUE(std::filesystem::exists(dir / "HighLift" / "package.mo"));
   EXPECT_TRUE(std::filesystem::exists(dir / "HighLift" / "Mechanical" / "TorqueLimiter.mo"));
-  EXPECT_EQ(ReadText(dir / "OneStationRig.mo"),
+  EXPECT_EQ(ReadText(dir / "HighLift" / "Models" / "OneStationRig.mo"),
             ReadText(testing::ExportTestDir() / "golden" / "OneStationRig_full.mo"));
+  // Only the package at the top of the folder: one file to load.
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) EXPECT_EQ(entry.path().filename(), "HighLift");
   std::filesystem::remove_all(dir);
+}
+
+TEST(ExportCli, StartsWhereTheSimulatorStartsByDefault) {
+  const auto dir = TempDir("start");
+  const auto r = RunCli({"export", "tests/export/small_drive.json", "--modelica", dir.string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("start: static equilibrium: loads balanced to"), std::string::npos) << r.out;
+  const std::string model = ReadText(dir / "HighLift" / "Models" / "OneStationRig.mo");
+  EXPECT_NE(model.find("fixed=true"), std::string::npos);
+  EXPECT_NE(model.find("The model starts where <code>highlift simulate</code> starts"), std::string::npos);
+  std::filesystem::remove_all(dir);
+  const auto bad = RunCli({"export", "tests/export/small_drive.json", "--modelica", dir.string(), "--start", "settled"});
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("--start"), std::string::npos) << bad.err;
 }
 
 TEST(ExportCli, JsonReportListsTheFiles) {
@@ -51,12 +69,14 @@ TEST(ExportCli, JsonReportListsTheFiles) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto doc = nlohmann::json::parse(r.out);
   EXPECT_EQ(doc["model"], "OneStationRig");
+  EXPECT_EQ(doc["model_path"], "HighLift.Models.OneStationRig");
+  EXPECT_EQ(doc["model_file"], "HighLift/Models/OneStationRig.mo");
   EXPECT_EQ(doc["scenario"], "jam_gra_1");
   EXPECT_EQ(doc["kind"], "drive system, reduced");
   bool has_model = false;
   for (const auto& f : doc["files"]) {
     EXPECT_TRUE(std::filesystem::exists(dir / f.get<std::string>())) << f;
-    has_model = has_model || f == "OneStationRig.mo";
+    has_model = has_model || f == "HighLift/Models/OneStationRig.mo";
   }
   EXPECT_TRUE(has_model);
   std::filesystem::remove_all(dir);

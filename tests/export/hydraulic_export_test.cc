@@ -83,7 +83,7 @@ TEST(HydraulicExport, ServoValveSpoolModelsExportWithTheirParameters) {
   })");
   const ModelicaExportReport report = GenerateModelica(project, ModelicaExportOptions{});
   EXPECT_EQ(CheckIssues(report), "");
-  const std::string text = Flatten(FileOf(report, "Valves.mo").content);
+  const std::string text = Flatten(FileOf(report, "HighLift/Models/Valves.mo").content);
   EXPECT_NE(text.find("HighLift.Hydraulics.ServoValve direct(order=0)"), std::string::npos) << text;
   EXPECT_NE(text.find("HighLift.Hydraulics.ServoValve lagged(order=1, T_v=0.004)"), std::string::npos) << text;
   EXPECT_NE(text.find("HighLift.Hydraulics.ServoValve second(order=2, w_v=300, D_v=0.5)"), std::string::npos)

@@ -11,8 +11,8 @@
 //
 // One motor lost (the scenario value `motor_lost_time`, passed in by the drive network): the
 // last motor's displacement is commanded to 0 and its pressure-off brake (Brake, holding
-// brake_torque/ratio at the motor) holds it; the differential then delivers half the speed of
-// the remaining motor at the full torque.
+// brake_torque/(n_m*ratio) at the motor, brake_torque at the output) holds it; the differential
+// then delivers half the speed of the remaining motor at the full torque.
 #include "highlift/model/hydraulic_pdu.h"
 
 #include <cmath>
@@ -195,11 +195,15 @@ PduPorts AddHydraulicPdu(Network& net, const Component& pdu, std::optional<doubl
           "pressure-off brake of motor " + n + ": applied when the motor is out of operation");
       net.Connect(port("one", "y"), port("pob_command" + n, "u1"));
       net.Connect(active, port("pob_command" + n, "u2"));
-      // Brake: tau = cgeo*mu*fn_max*f_normalized with mu = 0.5: the POB torque at the motor.
-      add("Brake", part("pob" + n),
-                     {{{"fn_max", 2.0 * Value(pdu, "brake_torque") / ratio}, {"cgeo", 1.0}},
-                      {{"mu_pos", {{0.0, 0.5}}}}},
-          "pressure-off brake of motor " + n + " (brake_torque at the output)");
+      // Brake: tau = cgeo*mu*fn_max*f_normalized with mu = 0.5. brake_torque is the holding
+      // torque of the PDU at its output: each of the n_m brakes holds brake_torque/(n_m*ratio)
+      // at its motor, since through the speed-summing differential each motor carries 1/n_m of
+      // the gear input torque (the brakes together, or a lost motor's brake against the running
+      // motor, hold brake_torque at the output).
+      const double holding = Value(pdu, "brake_torque") / (n_m * ratio);
+      add("Brake", part("pob" + n), {{{"fn_max", 2.0 * holding}, {"cgeo", 1.0}}, {{"mu_pos", {{0.0, 0.5}}}}},
+          "pressure-off brake of motor " + n +
+              " (brake_torque/(n_m*ratio) at the motor: the brakes hold brake_torque at the output)");
       net.Connect(port("pob_command" + n, "y"), port("pob" + n, "f_normalized"));
       net.Connect(port("rotor" + n, "flange_b"), port("pob" + n, "flange_a"));
     } else {

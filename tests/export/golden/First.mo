@@ -1,3 +1,4 @@
+within HighLift.Models;
 model First "First"
   Modelica.Mechanics.Rotational.Components.Fixed fixed
     annotation (Placement(transformation(extent={{190,-130},{210,-110}})));

@@ -1,3 +1,4 @@
+within HighLift.Models;
 model Friction "Friction"
   Modelica.Mechanics.Rotational.Components.Fixed fixed
     annotation (Placement(transformation(extent={{70,-130},{90,-110}})));

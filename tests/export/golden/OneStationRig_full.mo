@@ -1,29 +1,30 @@
+within HighLift.Models;
 model OneStationRig "one-station rig"
   HighLift.Mechanical.WingTipBrake wtb(tauB_max=550, tauB_lim=700, t_B=0.03, t_lat=0.1, J=5e-04)
     annotation (Placement(transformation(extent={{110,-130},{130,-110}})));
   Modelica.Mechanics.Rotational.Components.Inertia appu(J=1e-05)
     annotation (Placement(transformation(extent={{150,-50},{170,-30}})));
-  HighLift.Mechanical.LossyInertia shaft_3_m0(J=9.462164588444299e-05, tau_C=0.1875, w_small=0.1)
+  HighLift.Mechanical.LossyInertia shaft_3_m0(J=9.4621645884443e-05, tau_C=0.1875, w_small=0.1)
     annotation (Placement(transformation(extent={{510,-50},{530,-30}})));
-  Modelica.Mechanics.Rotational.Components.Inertia shaft_3_m1(J=0.00018924329176888598)
+  Modelica.Mechanics.Rotational.Components.Inertia shaft_3_m1(J=0.000189243291768886)
     annotation (Placement(transformation(extent={{430,-50},{450,-30}})));
   Modelica.Mechanics.Rotational.Components.SpringDamper shaft_3_e1(
     c=13396.407984444015,
     d=5.358563193777607)
     annotation (Placement(transformation(extent={{470,-50},{490,-30}})));
-  Modelica.Mechanics.Rotational.Components.Inertia shaft_3_m2(J=0.00018924329176888598)
+  Modelica.Mechanics.Rotational.Components.Inertia shaft_3_m2(J=0.000189243291768886)
     annotation (Placement(transformation(extent={{350,-50},{370,-30}})));
   Modelica.Mechanics.Rotational.Components.SpringDamper shaft_3_e2(
     c=13396.407984444015,
     d=5.358563193777607)
     annotation (Placement(transformation(extent={{390,-50},{410,-30}})));
-  Modelica.Mechanics.Rotational.Components.Inertia shaft_3_m3(J=0.00018924329176888598)
+  Modelica.Mechanics.Rotational.Components.Inertia shaft_3_m3(J=0.000189243291768886)
     annotation (Placement(transformation(extent={{270,-50},{290,-30}})));
   Modelica.Mechanics.Rotational.Components.SpringDamper shaft_3_e3(
     c=13396.407984444015,
     d=5.358563193777607)
     annotation (Placement(transformation(extent={{310,-50},{330,-30}})));
-  HighLift.Mechanical.LossyInertia shaft_3_m4(J=9.462164588444299e-05, tau_C=0.1875, w_small=0.1)
+  HighLift.Mechanical.LossyInertia shaft_3_m4(J=9.4621645884443e-05, tau_C=0.1875, w_small=0.1)
     annotation (Placement(transformation(extent={{190,-50},{210,-30}})));
   Modelica.Mechanics.Rotational.Components.SpringDamper shaft_3_e4(
     c=13396.407984444015,
@@ -39,15 +40,15 @@ model OneStationRig "one-station rig"
     J_load=0.0097,
     tau_C=0.2,
     d_vis=2e-04,
-    tau_S=0.06999999999999999,
+    tau_S=0.07,
     f_exp=10,
     w_small=0.1)
     annotation (Placement(transformation(extent={{630,-90},{650,-70}})));
   HighLift.Mechanical.TorqueLimiter stl_1(
     tau1_ext=90,
-    tau1_ret=62.99999999999999,
+    tau1_ret=63,
     tau2_ext=112.5,
-    tau2_ret=78.74999999999999,
+    tau2_ret=78.75,
     c1=20000,
     c2=1000,
     c3=1e+05,
@@ -61,7 +62,7 @@ model OneStationRig "one-station rig"
     J=0.001,
     tau_C=0.1,
     d_vis=1e-04,
-    tau_S=0.034999999999999996,
+    tau_S=0.035,
     f_exp=10,
     w_small=0.1,
     eta_GE=0.97)
@@ -98,35 +99,35 @@ model OneStationRig "one-station rig"
     J=5e-05,
     tau_C=0.1,
     d_vis=1e-04,
-    tau_S=0.034999999999999996,
+    tau_S=0.035,
     f_exp=10,
     w_small=0.1)
     annotation (Placement(transformation(extent={{470,-10},{490,10}})));
-  HighLift.Mechanical.LossyInertia shaft_1_m0(J=0.00028843665869362296, tau_C=0.375, w_small=0.1)
+  HighLift.Mechanical.LossyInertia shaft_1_m0(J=0.000288436658693623, tau_C=0.375, w_small=0.1)
     annotation (Placement(transformation(extent={{110,-10},{130,10}})));
-  Modelica.Mechanics.Rotational.Components.Inertia shaft_1_m1(J=0.0005768733173872459)
+  Modelica.Mechanics.Rotational.Components.Inertia shaft_1_m1(J=0.000576873317387246)
     annotation (Placement(transformation(extent={{190,-10},{210,10}})));
   Modelica.Mechanics.Rotational.Components.SpringDamper shaft_1_e1(
     c=10209.120549035222,
-    d=4.083648219614089)
+    d=4.08364821961409)
     annotation (Placement(transformation(extent={{150,-10},{170,10}})));
-  Modelica.Mechanics.Rotational.Components.Inertia shaft_1_m2(J=0.0005768733173872459)
+  Modelica.Mechanics.Rotational.Components.Inertia shaft_1_m2(J=0.000576873317387246)
     annotation (Placement(transformation(extent={{270,-10},{290,10}})));
   Modelica.Mechanics.Rotational.Components.SpringDamper shaft_1_e2(
     c=10209.120549035222,
-    d=4.083648219614089)
+    d=4.08364821961409)
     annotation (Placement(transformation(extent={{230,-10},{250,10}})));
-  Modelica.Mechanics.Rotational.Components.Inertia shaft_1_m3(J=0.0005768733173872459)
+  Modelica.Mechanics.Rotational.Components.Inertia shaft_1_m3(J=0.000576873317387246)
     annotation (Placement(transformation(extent={{350,-10},{370,10}})));
   Modelica.Mechanics.Rotational.Components.SpringDamper shaft_1_e3(
     c=10209.120549035222,
-    d=4.083648219614089)
+    d=4.08364821961409)
     annotation (Placement(transformation(extent={{310,-10},{330,10}})));
-  HighLift.Mechanical.LossyInertia shaft_1_m4(J=0.00028843665869362296, tau_C=0.375, w_small=0.1)
+  HighLift.Mechanical.LossyInertia shaft_1_m4(J=0.000288436658693623, tau_C=0.375, w_small=0.1)
     annotation (Placement(transformation(extent={{430,-10},{450,10}})));
   Modelica.Mechanics.Rotational.Components.SpringDamper shaft_1_e4(
     c=10209.120549035222,
-    d=4.083648219614089)
+    d=4.08364821961409)
     annotation (Placement(transformation(extent={{390,-10},{410,10}})));
   HighLift.Mechanical.TorqueLimiter stl(
     tau1_ext=470,
@@ -158,7 +159,7 @@ model OneStationRig "one-station rig"
     "PDU output speed command [rad/s] of load case extend_opposing"
     annotation (Placement(transformation(extent={{-10,-10},{10,10}})));
   Modelica.Mechanics.Rotational.Sources.Torque gra_1_airload
-    "airload on gra_1 (positive table values oppose the motion)"
+    "airload on gra_1 (torque on the output, positive in the extend direction: the load case's table times -1, as its positive values oppose the extension)"
     annotation (Placement(transformation(extent={{670,-90},{690,-70}})));
   Modelica.Mechanics.Rotational.Sensors.AngleSensor gra_1_output_angle
     "output angle of gra_1"
@@ -294,6 +295,6 @@ equation
 <p>Drive system of the highlift project <strong>one-station rig</strong>, exported by <code>highlift export</code> at full resolution (each torque shaft split into 4 elements). It is the element network that <code>highlift simulate</code> integrates; instance names are its element ids.</p>
 <p>A PDU drives one wing transmission: system torque limiter, two shaft segments with a steady bearing, a station (T-gearbox, station torque limiter, geared rotary actuator) and the outboard shaft to the APPU and the wing-tip brake. Numbers: domain.md s3 (E) and the catalogue defaults.</p>
 <p>Scenario <strong>rupture_wtb</strong> (rupture), load case <strong>extend_opposing</strong> (extend).</p>
-<p>Positive rotation is the extend direction. The model starts at rest with untwisted springs (the simulator starts from the static equilibrium of the loads held by the parked brakes; see docs/modelica.md for the same start in a Modelica tool).</p>
+<p>Positive rotation is the extend direction. The model starts at rest with untwisted springs (exported with <code>--start rest</code>; <code>highlift simulate</code> starts from the static equilibrium of the loads held by the parked brakes).</p>
 </html>"));
 end OneStationRig;

@@ -1,12 +1,10 @@
+within HighLift.Models;
 model OneStationRig "one-station rig"
   HighLift.Mechanical.WingTipBrake wtb(tauB_max=550, tauB_lim=700, t_B=0.03, t_lat=0.1, J=5e-04)
     annotation (Placement(transformation(extent={{110,-130},{130,-110}})));
   Modelica.Mechanics.Rotational.Components.Inertia appu(J=1e-05)
     annotation (Placement(transformation(extent={{150,-50},{170,-30}})));
-  HighLift.Mechanical.LossyInertia shaft_3_mass_a(
-    J=0.00037848658353777196,
-    tau_C=0.1875,
-    w_small=0.1)
+  HighLift.Mechanical.LossyInertia shaft_3_mass_a(J=0.000378486583537772, tau_C=0.1875, w_small=0.1)
     "lumped: shaft_3"
     annotation (Placement(transformation(extent={{270,-50},{290,-30}})));
   Modelica.Mechanics.Rotational.Components.SpringDamper shaft_3_spring(
@@ -14,10 +12,7 @@ model OneStationRig "one-station rig"
     d=1.3396407984444016)
     "series stiffness of shaft_3"
     annotation (Placement(transformation(extent={{230,-50},{250,-30}})));
-  HighLift.Mechanical.LossyInertia shaft_3_mass_b(
-    J=0.00037848658353777196,
-    tau_C=0.1875,
-    w_small=0.1)
+  HighLift.Mechanical.LossyInertia shaft_3_mass_b(J=0.000378486583537772, tau_C=0.1875, w_small=0.1)
     "lumped: shaft_3"
     annotation (Placement(transformation(extent={{190,-50},{210,-30}})));
   HighLift.Mechanical.GearedRotaryActuator gra_1(
@@ -30,15 +25,15 @@ model OneStationRig "one-station rig"
     J_load=0.0097,
     tau_C=0.2,
     d_vis=2e-04,
-    tau_S=0.06999999999999999,
+    tau_S=0.07,
     f_exp=10,
     w_small=0.1)
     annotation (Placement(transformation(extent={{310,-10},{330,10}})));
   HighLift.Mechanical.TorqueLimiter stl_1(
     tau1_ext=90,
-    tau1_ret=62.99999999999999,
+    tau1_ret=63,
     tau2_ext=112.5,
-    tau2_ret=78.74999999999999,
+    tau2_ret=78.75,
     c1=20000,
     c2=1000,
     c3=1e+05,
@@ -52,7 +47,7 @@ model OneStationRig "one-station rig"
     J=0.001,
     tau_C=0.1,
     d_vis=1e-04,
-    tau_S=0.034999999999999996,
+    tau_S=0.035,
     f_exp=10,
     w_small=0.1,
     eta_GE=0.97)
@@ -105,7 +100,7 @@ model OneStationRig "one-station rig"
     "PDU output speed command [rad/s] of load case extend_opposing"
     annotation (Placement(transformation(extent={{-10,-10},{10,10}})));
   Modelica.Mechanics.Rotational.Sources.Torque gra_1_airload
-    "airload on gra_1 (positive table values oppose the motion)"
+    "airload on gra_1 (torque on the output, positive in the extend direction: the load case's table times -1, as its positive values oppose the extension)"
     annotation (Placement(transformation(extent={{350,-10},{370,10}})));
   Modelica.Mechanics.Rotational.Sensors.AngleSensor gra_1_output_angle
     "output angle of gra_1"
@@ -197,7 +192,7 @@ equation
 <p>Drive system of the highlift project <strong>one-station rig</strong>, exported by <code>highlift export</code> at reduced resolution (inertias lumped at gearboxes and stations). It is the element network that <code>highlift simulate</code> integrates; instance names are its element ids.</p>
 <p>A PDU drives one wing transmission: system torque limiter, two shaft segments with a steady bearing, a station (T-gearbox, station torque limiter, geared rotary actuator) and the outboard shaft to the APPU and the wing-tip brake. Numbers: domain.md s3 (E) and the catalogue defaults.</p>
 <p>Scenario <strong>rupture_wtb</strong> (rupture), load case <strong>extend_opposing</strong> (extend).</p>
-<p>Positive rotation is the extend direction. The model starts at rest with untwisted springs (the simulator starts from the static equilibrium of the loads held by the parked brakes; see docs/modelica.md for the same start in a Modelica tool).</p>
+<p>Positive rotation is the extend direction. The model starts at rest with untwisted springs (exported with <code>--start rest</code>; <code>highlift simulate</code> starts from the static equilibrium of the loads held by the parked brakes).</p>
 <p>Lumped chains (spring-damper or inertia: members):</p>
 <ul>
 <li>shaft_3: shaft_3</li>

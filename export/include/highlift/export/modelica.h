@@ -1,5 +1,7 @@
 // Modelica export: writes the hand-written HighLift Modelica library and a model of a project
-// (Modelica 3.x text on top of the Modelica Standard Library 4.0.0).
+// (Modelica 3.x text on top of the Modelica Standard Library 4.0.0). The model is a class of
+// the package HighLift.Models, so the output folder holds one top-level class: a tool loads
+// HighLift/package.mo and simulates HighLift.Models.<name>.
 //
 // - An element network ("elements"/"element_connections") becomes a model that uses the MSL
 //   classes directly, with the project's instance names and parameters, so that a Modelica tool
@@ -14,12 +16,15 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "highlift/core/project.h"
+#include "highlift/model/drive_network.h"
+#include "highlift/model/start_values.h"
 
 namespace highlift {
 
@@ -40,6 +45,13 @@ struct ModelicaExportOptions {
   std::string model_name;           // Modelica name of the model; empty: from the project name
   bool tables_in_file = false;      // scenario tables in <model>.txt read by CombiTimeTable
                                     // (else inline `table=[...]`)
+  /// Drive systems: the start of the model, computed from the very element network the export
+  /// writes. `highlift export` passes the simulator's start (sim::ComputeStartValues: static
+  /// equilibrium of the loads held by the parked brakes), written as fixed start values and
+  /// initial equations. Empty: no start values (the model starts at rest, springs untwisted,
+  /// as the classes' defaults; `highlift export --start rest`). Element networks carry their
+  /// own start values (the project's phi_start, w_start, ...) and ignore it.
+  std::function<model::StartValues(const model::DriveModel&)> start;
 
   /// Throws InputError when an option is invalid (e.g. a model name that is no identifier).
   void Validate() const;
@@ -54,7 +66,10 @@ struct GeneratedFile {
 /// What the export produced.
 struct ModelicaExportReport {
   std::string model_name;              ///< Modelica name of the project model
+  std::string model_path;              ///< its full name, "HighLift.Models.<model_name>"
   std::string model_file;              ///< its path relative to the output folder
+                                       ///< ("HighLift/Models/<model_name>.mo")
+  std::string start;                   ///< the start written ("rest", or how it was found)
   std::string kind;                    ///< "element network" or "drive system"
   std::string scenario;                ///< scenario used (empty for element networks / none)
   std::vector<GeneratedFile> files;    ///< every file written, in path order
@@ -118,7 +133,9 @@ class IdentifierMap {
 std::string EscapeModelicaString(std::string_view text);
 
 /// A Modelica real literal for a finite value: the shortest text that reads back to the same
-/// double ("0.1", "10000", "1e-06", "-2.5"). Throws InputError for inf/nan naming `what`.
+/// double ("0.1", "10000", "1e-06", "-2.5"), or the 15-digit text when that reads back within
+/// 2 units in the last place (0.034999999999999996 -> "0.035": the noise of arithmetic on
+/// decimal data). Throws InputError for inf/nan naming `what`.
 std::string FormatModelicaReal(double value, std::string_view what = "value");
 
 }  // namespace highlift

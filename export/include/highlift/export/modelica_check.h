@@ -35,6 +35,19 @@ struct ModelicaIssue {
 std::vector<ModelicaIssue> CheckModelica(const std::vector<GeneratedFile>& files,
                                          const std::vector<GeneratedFile>& library = {});
 
+/// The completeness of the models in `files` (read with the classes of `library`), beyond the
+/// structure CheckModelica checks:
+/// - every parameter of every instance has a value: a modifier, or a default in its class
+///   (the MSL parameters without a default are listed in export/src/msl_classes.cc from the
+///   4.0.0 sources; the HighLift ones are read from the library text), and a model a user
+///   simulates (HighLift.Examples.*, HighLift.Models.*, a top-level model) binds its own;
+/// - every conditional connector (`support if useSupport`) that the instance enables is
+///   connected, and none that it disables is;
+/// - every input connector (Real or Boolean) of an instance is connected.
+/// Returns every issue found; empty means complete.
+std::vector<ModelicaIssue> CheckModelicaCompleteness(const std::vector<GeneratedFile>& files,
+                                                     const std::vector<GeneratedFile>& library = {});
+
 /// True when `path` (e.g. "Modelica.Mechanics.Rotational.Components.Inertia") is in the list of
 /// MSL 4.0.0 names the exporter and the library may use.
 bool IsKnownMslName(std::string_view path);

@@ -7,8 +7,8 @@ model BranchGearbox "T-gearbox or down-drive: 1:1 through-drive and a geared bra
   parameter Boolean elastic = false
     "= true, if the branch has a stiffness (and backlash)"
     annotation (Evaluate=true, choices(checkBox=true));
-  parameter SI.RotationalSpringConstant c(min=Modelica.Constants.small, start=1e4)
-    "Torsional stiffness of the branch, referred to the input" annotation (Dialog(enable=elastic));
+  parameter SI.RotationalSpringConstant c(min=Modelica.Constants.small) = 1e4
+    "Torsional stiffness of the branch, referred to the input (used only when elastic = true: give it then)" annotation (Dialog(enable=elastic));
   parameter SI.RotationalDampingConstant d(min=0) = 0 "Damping of the branch"
     annotation (Dialog(enable=elastic));
   parameter SI.Angle b(min=0) = 0 "Total backlash of the branch, referred to the input"

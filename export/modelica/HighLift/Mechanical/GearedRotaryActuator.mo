@@ -14,8 +14,8 @@ model GearedRotaryActuator "Geared rotary actuator: single-stage gearbox whose e
   parameter SI.Inertia J_load(min=0) = 0 "Flap inertia reflected to the input";
   parameter Boolean elastic = false "= true, if the actuator has a stiffness (and backlash)"
     annotation (Evaluate=true, choices(checkBox=true));
-  parameter SI.RotationalSpringConstant c(min=Modelica.Constants.small, start=1e4)
-    "Torsional stiffness referred to the input" annotation (Dialog(enable=elastic));
+  parameter SI.RotationalSpringConstant c(min=Modelica.Constants.small) = 1e4
+    "Torsional stiffness referred to the input (used only when elastic = true: give it then)" annotation (Dialog(enable=elastic));
   parameter SI.RotationalDampingConstant d(min=0) = 0 "Damping referred to the input"
     annotation (Dialog(enable=elastic));
   parameter SI.Angle b(min=0) = 0 "Total backlash referred to the input"

@@ -6,8 +6,8 @@ model GeneralRotationalElement "General rotational element: ElastoBacklash, Loss
   parameter Boolean elastic = true
     "= true, if the element has a stiffness (and backlash); otherwise rigid"
     annotation (Evaluate=true, choices(checkBox=true));
-  parameter SI.RotationalSpringConstant c(min=Modelica.Constants.small, start=1e4)
-    "Torsional stiffness" annotation (Dialog(enable=elastic));
+  parameter SI.RotationalSpringConstant c(min=Modelica.Constants.small) = 1e4
+    "Torsional stiffness (used only when elastic = true: give it then)" annotation (Dialog(enable=elastic));
   parameter SI.RotationalDampingConstant d(min=0) = 0 "Structural damping"
     annotation (Dialog(enable=elastic));
   parameter SI.Angle b(min=0) = 0 "Total backlash" annotation (Dialog(enable=elastic));

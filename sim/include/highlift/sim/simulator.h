@@ -23,6 +23,7 @@
 #include <string>
 #include <vector>
 
+#include "highlift/model/start_values.h"
 #include "highlift/sim/network.h"
 
 namespace highlift::sim {
@@ -187,6 +188,12 @@ struct SimulationReport {
 /// Returns "" when the network can be simulated, else the message naming the element and the
 /// remedy. `highlift validate` and `highlift simulate` use this one check, so they agree.
 std::string CheckStructure(const Network& network, double start_time = 0.0);
+
+/// The start of a run with `options` (start_time, initial_equilibrium) as start values of the
+/// network's flanges (highlift/model/start_values.h): the state Simulator::Run starts from,
+/// computed by the same start sequence, for the Modelica export. Throws InputError when the
+/// network cannot be assembled or started.
+model::StartValues ComputeStartValues(const Network& network, const SimulationOptions& options);
 
 /// Progress callback: fraction of the time span done in [0, 1].
 using ProgressCallback = void (*)(double fraction, void* user);
