@@ -5,7 +5,7 @@ namespace highlift::model::components {
 namespace {
 class StationTorqueLimiterModel final : public TorqueLimiterModel {
  public:
-  StationTorqueLimiterModel() : TorqueLimiterModel("station_torque_limiter") {}
+  StationTorqueLimiterModel() : TorqueLimiterModel("station_torque_limiter", {.lumps_inertia = true, .station_limiter = true}) {}
 };
 }  // namespace
 }  // namespace highlift::model::components

@@ -5,7 +5,7 @@ namespace highlift::model::components {
 namespace {
 class SystemTorqueLimiterModel final : public TorqueLimiterModel {
  public:
-  SystemTorqueLimiterModel() : TorqueLimiterModel("system_torque_limiter") {}
+  SystemTorqueLimiterModel() : TorqueLimiterModel("system_torque_limiter", {.lumps_inertia = true, .wing_limiter = true}) {}
 };
 }  // namespace
 }  // namespace highlift::model::components

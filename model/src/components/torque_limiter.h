@@ -8,7 +8,7 @@ namespace highlift::model::components {
 
 class TorqueLimiterModel : public NamedModel {
  public:
-  explicit TorqueLimiterModel(std::string_view type) : NamedModel(type, {.lumps_inertia = true}) {}
+  TorqueLimiterModel(std::string_view type, ComponentRoles roles) : NamedModel(type, roles) {}
 
   std::vector<std::string> PowerPorts() const override { return {"output"}; }
 
