@@ -383,8 +383,14 @@ class Builder {
     }
     return x;
   }
+  /// Inboard(1, id): the speed reduction w_pdu / w_id, built once per component.
+  const Sym& Reduction(const std::string& id) const {
+    auto it = reduction_.find(id);
+    if (it == reduction_.end()) it = reduction_.emplace(id, Inboard(Sym(1.0), id)).first;
+    return it->second;
+  }
   /// w_id / w_pdu.
-  Sym SpeedRatioOf(const std::string& id) const { return Sym(1.0) / Inboard(Sym(1.0), id); }
+  Sym SpeedRatioOf(const std::string& id) const { return Sym(1.0) / Reduction(id); }
   /// The steady-state law of component `c` (ComponentModel::InputTorque): what it passes on at
   /// its ports (`torques` by child id), the actuator load `load`, its input speed `w`.
   Sym InputTorque(const Component& c, const std::vector<std::pair<std::string, Sym>>& torques, const Sym& load,
@@ -652,7 +658,7 @@ class Builder {
       } else if (const model::ComponentModel* m = ModelOf(c)) {
         lumped = m->LumpedAtInput(Reader(*this, c));
       }
-      const Sym gears = Inboard(Sym(1.0), c.id);
+      const Sym& gears = Reduction(c.id);
       auto reflect = [&](const Sym& x) { return x / pow(gears, 2); };
       double J0 = 0.0;
       if (!(lumped.J.constant(&J0) && J0 == 0.0))  // no inertia of its own (a jam, a disconnector)
@@ -1057,6 +1063,7 @@ class Builder {
   std::map<std::string, std::string> parent_port_;  // component id -> the port of its parent it hangs on
   std::map<std::string, std::string> entry_port_;   // component id -> its own port towards its parent
   std::map<std::string, Sign> sign_;                 // variable -> the signs it can take (see SignOf)
+  mutable std::map<std::string, Sym> reduction_;     // component id -> Reduction(id)
   std::map<std::string, std::vector<std::string>> children_;
   std::vector<std::string> order_;
   std::vector<std::pair<const Component*, const Component*>> stations_;  // actuator, branch gearbox
