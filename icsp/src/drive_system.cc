@@ -737,20 +737,17 @@ class Builder {
         // As reduced_models' setting rules: a system limiter against the largest wing torque of
         // every case, a station limiter against its largest extending torque.
         const bool station = roles.station_limiter;
-        const Sym through = Define(p + "torque_through", "N*m",
-                                   station ? "operating torque through the limiter, the largest of the extending load cases"
-                                           : "operating torque through the limiter, the largest of the load cases",
-                                   operating(i, station ? "extend" : ""));
-        Define(p + "margin", "N*m", "limiter margin, lockout setting minus operating torque",
-               Var(p + "lockout_torque_extend") - through, Whole());
-        if (HasParam(c, "lockout_torque_retract")) {
-          const Sym retract = Define(p + "torque_through_retract", "N*m",
-                                     station ? "operating torque through the limiter, the largest of the retracting load cases"
+        auto setting = [&](const std::string& suffix, const std::string& lockout, const std::string& direction,
+                           const std::string& in) {
+          const Sym through = Define(p + "torque_through" + suffix, "N*m",
+                                     station ? "operating torque through the limiter, the largest of the " + direction + "ing load cases"
                                              : "operating torque through the limiter, the largest of the load cases",
-                                     operating(i, station ? "retract" : ""));
-          Define(p + "margin_retract", "N*m", "limiter margin in retract, lockout setting minus operating torque",
-                 Var(p + "lockout_torque_retract") - retract, Whole());
-        }
+                                     operating(i, station ? direction : ""));
+          Define(p + "margin" + suffix, "N*m", "limiter margin" + in + ", lockout setting minus operating torque",
+                 Var(p + lockout) - through, Whole());
+        };
+        setting("", "lockout_torque_extend", "extend", "");
+        if (HasParam(c, "lockout_torque_retract")) setting("_retract", "lockout_torque_retract", "retract", " in retract");
       } else if (roles.tip_brake && HasParam(c, "static_capacity")) {
         // Holding: the airloads of the wing's actuators back-drive the shaft through their aiding
         // efficiencies, friction neglected (as reduced_models' rule for the static capacity).
