@@ -407,7 +407,7 @@ ComponentTypeSpec SystemTorqueLimiter() {
   AddTorqueLimiter(t.parameters, 470, 1.0, 2e4, "domain.md s3 (E): 1.3 x 360 N m root torque");
   t.parameters.push_back(Inertia(1e-3, 5e-4, 2e-3, "inertia of the limiter", "estimate: comparable to a station gearbox"));
   t.parameters.push_back(SpanPosition());
-  t.roles = {.lumps_inertia = true, .system_limiter = true};
+  t.roles = {.lumps_inertia = true, .wing_limiter = true};
   return t;
 }
 

@@ -13,6 +13,8 @@
 #include "highlift/core/catalogue.h"
 #include "highlift/core/units.h"
 #include "highlift/icsp/parser.h"
+#include "highlift/model/component_model.h"
+#include "highlift/model/laws.h"
 #include "highlift/reduced_models/analyses.h"
 #include "highlift/reduced_models/lumped_model.h"
 #include "highlift/reduced_models/modal.h"
@@ -31,6 +33,9 @@ double ToDisplay(double si, const std::string& unit) {
 }
 
 namespace {
+
+using model::Sign;
+using model::Sym;
 
 /// Smallest eigenvalue w1 [rad/s] of K v = w^2 M v for a forest of free nodes in breadth-first
 /// `order` (parent before child; `parent` -1 at a root), diagonal K, off-diagonal -c_parent
@@ -274,8 +279,8 @@ class Builder {
       peaks_error_ = e.message();
     }
     for (const Component& c : project_.components) {
-      if (c.type == "torque_shaft") Shaft(c);
-      else if (c.type == "geared_rotary_actuator" || c.type == "ballscrew_actuator") Actuator(c);
+      if (HasRole(c, &model::ComponentRoles::segment)) Shaft(c);
+      else if (HasRole(c, &model::ComponentRoles::actuator)) Actuator(c);
     }
     Reflected();
     SeriesStiffness();
@@ -298,6 +303,103 @@ class Builder {
   void Law(const std::string& label, const std::string& description, const std::string& text) {
     AddConstraintText(net(), text, {label, description, ConstraintRole::kPhysics});
     ++out_.physics_constraints;
+  }
+
+  // ---------------------------------------------------------------------------------------------
+  // The component laws (model/src/components) read through the symbolic scalar: each law is the
+  // one its type writes for double and Interval, instantiated with model::Sym over the variables
+  // of the network, and rendered as a constraint.
+
+  static const model::ComponentModel* ModelOf(const Component& c) { return model::FindComponentModel(c.type); }
+  static bool HasRole(const Component& c, bool model::ComponentRoles::*role) {
+    const model::ComponentModel* m = ModelOf(c);
+    return m && m->roles().*role;
+  }
+
+  /// The signs the variable `name` can take: its recorded sign (a parameter's domain or
+  /// declaration, a derived variable's law), else its initial domain.
+  Sign SignOf(const std::string& name) const {
+    if (auto it = sign_.find(name); it != sign_.end()) return it->second;
+    const VariableId v = out_.network.FindVariable(name);
+    if (v.value < 0) return Sign::Unknown();
+    const Interval& d = out_.network.variable(v).initial;
+    return IsEmpty(d) ? Sign::Unknown() : Sign::OfRange(d.lower(), d.upper());
+  }
+  /// The variable `name` as a symbolic value.
+  Sym Var(const std::string& name) const { return Sym::Variable(name, SignOf(name)); }
+
+  /// A component's parameters as the network's variables (model::ParameterReader<Sym>): its own
+  /// parameter is its variable; one it does not give is the catalogue default as a constant, as
+  /// the reduced models read it; one without either is missing (the law that needs it is left out).
+  class Reader final : public model::ParameterReader<Sym> {
+   public:
+    Reader(const Builder& b, const Component& c) : b_(b), c_(c) {}
+    Sym operator()(std::string_view name) const override {
+      const std::string var = c_.id + "." + std::string(name);
+      if (b_.Has(var)) return b_.Var(var);
+      if (reduced_models::HasReducedModelValue(c_, name)) return Sym(reduced_models::ReducedModelValue(c_, name));
+      return Sym::Missing(var);
+    }
+    bool Has(std::string_view name) const override {
+      return b_.Has(c_.id + "." + std::string(name)) || reduced_models::HasReducedModelValue(c_, name);
+    }
+    double Nominal(std::string_view name) const override { return reduced_models::ReducedModelValue(c_, name); }
+
+   private:
+    const Builder& b_;
+    const Component& c_;
+  };
+
+  /// Derived variable `name` == `law`, with the signs of its law where its domain allows both;
+  /// the variable, or the missing value when the law lacks a parameter (then nothing is added).
+  Sym Define(const std::string& name, const std::string& unit, const std::string& description, const Sym& law,
+             Interval domain = Interval(0.0, kInf), const Sym::Names& names = {}) {
+    if (law.missing()) return law;
+    Derived(name, unit, domain);
+    Sign sign = Sign::OfRange(domain.lower(), domain.upper());
+    if (law.sign().known()) sign = Sign(sign.bits() & law.sign().bits());
+    sign_[name] = sign.known() ? sign : law.sign();
+    Law(name, description, name + " == " + law.Text(names));
+    return Var(name);
+  }
+
+  /// The speed law of the stage between component `id` and its parent: the parent's
+  /// SpeedRatioLaw from its own entry port to the port `id` hangs on.
+  model::PortRatio GearOf(const std::string& id) const {
+    const std::string& up = parent_.at(id);
+    const Component* parent = Find(up);
+    const model::ComponentModel* m = parent ? ModelOf(*parent) : nullptr;
+    return m ? m->SpeedRatioLaw(entry_port_.at(up), parent_port_.at(id)) : model::PortRatio{};
+  }
+  /// `x` times w_pdu / w_id: times the speed reduction of every stage between the PDU and `id`
+  /// (its own entry stage included), one stage after the other from `id` inwards (a travel at
+  /// `id` taken to the PDU; 1 / Inboard(1, id) is the speed ratio w_id / w_pdu).
+  Sym Inboard(Sym x, const std::string& id) const {
+    for (std::string u = id; parent_.count(u) && !parent_.at(u).empty(); u = parent_.at(u)) {
+      const model::PortRatio law = GearOf(u);
+      if (law.parameter.empty() || law.power == 0) continue;
+      const Sym ratio = Reader(*this, *Find(parent_.at(u)))(law.parameter);
+      x = law.power < 0 ? x * ratio : x / ratio;
+    }
+    return x;
+  }
+  /// Inboard(1, id): the speed reduction w_pdu / w_id, built once per component.
+  const Sym& Reduction(const std::string& id) const {
+    auto it = reduction_.find(id);
+    if (it == reduction_.end()) it = reduction_.emplace(id, Inboard(Sym(1.0), id)).first;
+    return it->second;
+  }
+  /// w_id / w_pdu.
+  Sym SpeedRatioOf(const std::string& id) const { return Sym(1.0) / Reduction(id); }
+  /// The steady-state law of component `c` (ComponentModel::InputTorque): what it passes on at
+  /// its ports (`torques` by child id), the actuator load `load`, its input speed `w`.
+  Sym InputTorque(const Component& c, const std::vector<std::pair<std::string, Sym>>& torques, const Sym& load,
+                  const Sym& w, double friction) const {
+    Sym through(0.0), branch(0.0);
+    for (const auto& [child, tau] : torques) (parent_port_.at(child) == "branch" ? branch : through) += tau;
+    const model::ComponentModel* m = ModelOf(c);
+    if (!m) return through;
+    return m->InputTorque(Reader(*this, c), model::SteadyFlow<Sym>{through, branch, load, w, Sym(friction)});
   }
 
   void AddParameters() {
@@ -325,29 +427,35 @@ class Builder {
 
   /// The drive line as a tree rooted at the PDU (connections are undirected flange links).
   void BuildTree() {
-    std::map<std::string, std::vector<std::string>> adj;
+    struct Link {
+      std::string other, port, other_port;
+    };
+    std::map<std::string, std::vector<Link>> adj;
     for (const Connection& k : project_.connections) {
-      adj[k.a.component].push_back(k.b.component);
-      adj[k.b.component].push_back(k.a.component);
+      adj[k.a.component].push_back({k.b.component, k.a.port, k.b.port});
+      adj[k.b.component].push_back({k.a.component, k.b.port, k.a.port});
     }
     std::string root;
     for (const Component& c : project_.components) {
-      if (c.type == "pdu") root = c.id;
+      if (HasRole(c, &model::ComponentRoles::drive_unit)) root = c.id;
     }
     if (root.empty()) return;
     root_ = root;
     std::queue<std::string> q;
     q.push(root);
     parent_[root] = "";
+    entry_port_[root] = "";
     while (!q.empty()) {
       const std::string u = q.front();
       q.pop();
       order_.push_back(u);
-      for (const std::string& v : adj[u]) {
-        if (parent_.count(v)) continue;
-        parent_[v] = u;
-        children_[u].push_back(v);
-        q.push(v);
+      for (const Link& v : adj[u]) {
+        if (parent_.count(v.other)) continue;
+        parent_[v.other] = u;
+        parent_port_[v.other] = v.port;
+        entry_port_[v.other] = v.other_port;
+        children_[u].push_back(v.other);
+        q.push(v.other);
       }
     }
   }
@@ -364,13 +472,14 @@ class Builder {
     }
     return out;
   }
-  /// The branch gearbox feeding an actuator (nearest inboard one).
-  const Component* BranchOf(const std::string& id) const {
+  /// The gear stage that feeds the station of actuator `id` from the drive line (the nearest
+  /// inboard component with a speed ratio towards it, a branch gearbox), and the component of the
+  /// station that hangs on it.
+  std::pair<const Component*, std::string> StationStage(const std::string& id) const {
     for (std::string u = id; parent_.count(u) && !parent_.at(u).empty(); u = parent_.at(u)) {
-      const Component* c = Find(parent_.at(u));
-      if (c && c->type == "branch_gearbox") return c;
+      if (!GearOf(u).parameter.empty()) return {Find(parent_.at(u)), u};
     }
-    return nullptr;
+    return {nullptr, ""};
   }
   // ---------------------------------------------------------------------------------------------
   // What the reduced models read of a component, as text over the network's variables.
@@ -389,15 +498,6 @@ class Builder {
     return "";
   }
   bool HasValue(const Component& c, const std::string& name) const { return !Value(c, name).empty(); }
-  /// Value, or `otherwise` (a number) when the parameter has none.
-  std::string ValueOr(const Component& c, const std::string& name, double otherwise) const {
-    const std::string v = Value(c, name);
-    return v.empty() ? Num(otherwise) : v;
-  }
-  /// Like Value, but a nominal constant for parameters that only count things (motor_count, meshes).
-  double Count(const Component& c, const std::string& name, double otherwise) const {
-    return reduced_models::HasReducedModelValue(c, name) ? reduced_models::ReducedModelValue(c, name) : otherwise;
-  }
   /// Variable `name` for the text `expression` ("name" itself when it already is a variable).
   std::string VariableFor(const std::string& name, const std::string& unit, const std::string& expression,
                           const std::string& description) {
@@ -407,47 +507,38 @@ class Builder {
     return name;
   }
 
+  /// A segment (torque shaft): its tube polar moment, mass and torque capacity (laws.h), and its
+  /// stiffness c and inertia J by its type's lumped law, each a variable of the network.
   void Shaft(const Component& s) {
     const std::string p = s.id + ".";
+    const Reader R(*this, s);
     const bool tube = HasParam(s, "outer_diameter") && HasParam(s, "wall_thickness") && HasParam(s, "length");
-    const std::string D = p + "outer_diameter", t = p + "wall_thickness", L = p + "length";
+    const Sym D = R("outer_diameter"), t = R("wall_thickness"), L = R("length");
+    Sym::Names names;
     if (tube) {
-      Derived(p + "polar_moment", "m^4");
-      // pi/32 (D^4 - d^4) factored as pi/8 (D^2 + d^2)(D - t) t, as reduced_models writes it
-      // (every factor positive: tighter enclosures).
-      Law(p + "polar_moment", "tube polar moment Ip = pi/32 (D^4 - d^4) = pi/8 (D^2 + d^2)(D - t) t",
-          p + "polar_moment == 0.39269908169872414 * (" + D + "^2 + (" + D + " - 2 * " + t + ")^2) * (" + D + " - " +
-              t + ") * " + t);
+      const Sym Ip = model::TubePolarMoment(D, t);
+      // pi/32 (D^4 - d^4) factored as pi/8 (D^2 + d^2)(D - t) t (every factor positive: tighter
+      // enclosures); the laws below name it.
+      names.push_back({Ip, p + "polar_moment"});
+      Define(p + "polar_moment", "m^4", "tube polar moment Ip = pi/32 (D^4 - d^4) = pi/8 (D^2 + d^2)(D - t) t", Ip);
     }
-    // Stiffness and inertia as the reduced models take them: given values override the tube.
-    if (HasValue(s, "stiffness")) {
-      Derived(p + "c", "N*m/rad");
-      Law(p + "c", "segment stiffness, given", p + "c == " + Value(s, "stiffness"));
-    } else if (tube && HasValue(s, "shear_modulus")) {
-      Derived(p + "c", "N*m/rad");
-      Law(p + "c", "tube stiffness c = G Ip / L", p + "c == " + Value(s, "shear_modulus") + " * " + p + "polar_moment / " + L);
-    }
-    if (HasValue(s, "inertia")) {
-      Derived(p + "J", "kg*m^2");
-      Law(p + "J", "segment inertia, given", p + "J == " + Value(s, "inertia"));
-    } else if (tube && HasValue(s, "linear_density")) {
-      Derived(p + "J", "kg*m^2");
-      Law(p + "J", "thin tube inertia J = m' L r^2, r the mean radius",
-          p + "J == " + Value(s, "linear_density") + " * " + L + " * ((" + D + " - " + t + ") * 0.5)^2");
-    } else if (tube && HasValue(s, "density")) {
-      Derived(p + "J", "kg*m^2");
-      Law(p + "J", "tube inertia J = rho Ip L", p + "J == " + Value(s, "density") + " * " + p + "polar_moment * " + L);
-    }
-    if (tube && HasParam(s, "density")) {
-      Derived(p + "mass", "kg");
-      Law(p + "mass", "tube mass m = rho pi (D - t) t L",
-          p + "mass == " + p + "density * 3.141592653589793 * (" + D + " - " + t + ") * " + t + " * " + L);
-    }
-    if (tube && HasParam(s, "allowable_shear_stress")) {
-      Derived(p + "torque_capacity", "N*m");
-      Law(p + "torque_capacity", "torque at the allowable shear stress, tau_allow 2 Ip / D",
-          p + "torque_capacity == " + p + "allowable_shear_stress * 2 * " + p + "polar_moment / " + D);
-    }
+    // Stiffness and inertia as the reduced models take them (its type's lumped law): given
+    // values override the tube.
+    const model::Lumped<Sym> lumped = ModelOf(s)->LumpedAtInput(R);
+    if (lumped.c)
+      Define(p + "c", "N*m/rad", R.Has("stiffness") ? "segment stiffness, given" : "tube stiffness c = G Ip / L", *lumped.c,
+             Interval(0.0, kInf), names);
+    Define(p + "J", "kg*m^2",
+           R.Has("inertia")          ? "segment inertia, given"
+           : R.Has("linear_density") ? "thin tube inertia J = m' L r^2, r the mean radius"
+                                     : "tube inertia J = rho Ip L",
+           lumped.J, Interval(0.0, kInf), names);
+    if (!tube) return;
+    if (HasParam(s, "density"))
+      Define(p + "mass", "kg", "tube mass m = rho pi (D - t) t L", model::ShaftMass(R("density"), D, t, L));
+    if (HasParam(s, "allowable_shear_stress"))
+      Define(p + "torque_capacity", "N*m", "torque at the allowable shear stress, tau_allow 2 Ip / D",
+             model::TubeTorqueCapacity(R("allowable_shear_stress"), D, Var(p + "polar_moment")));
   }
 
   void Actuator(const Component& g) {
@@ -462,29 +553,22 @@ class Builder {
     }
     if (!any || !HasParam(g, "ratio")) return;
     // The airload at the actuator output (a ballscrew's load is its screw torque, as
-    // reduced_models reads it).
+    // reduced_models reads it), through its steady-state law without friction: opposing, and
+    // aiding (its magnitude).
     Derived(p + "max_load", "N*m", Interval(load, load));
-    if (HasParam(g, "eta_opposing")) {
-      Derived(p + "input_torque_opposing", "N*m");
-      Law(p + "input_torque_opposing", "actuator input torque against the airload, T_out / (i eta_opp)",
-          p + "input_torque_opposing == " + p + "max_load / (" + p + "ratio * " + p + "eta_opposing)");
-    }
-    if (HasParam(g, "eta_aiding")) {
-      Derived(p + "input_torque_aiding", "N*m");
-      Law(p + "input_torque_aiding", "actuator input torque with an aiding airload, T_out eta_aid / i",
-          p + "input_torque_aiding == " + p + "max_load * " + p + "eta_aiding / " + p + "ratio");
-    }
-    const Component* branch = BranchOf(g.id);
-    if (branch && HasParam(*branch, "ratio") && Has(p + "input_torque_opposing")) {
-      const std::string b = branch->id + ".";
-      const int meshes = static_cast<int>(Count(*branch, "meshes", 1.0));
-      const std::string eta = HasParam(*branch, "eta_mesh")
-                                  ? " * " + b + "eta_mesh" + (meshes != 1 ? "^" + std::to_string(meshes) : "")
-                                  : "";
-      Derived(b + "station_torque", "N*m");
-      Law(b + "station_torque", "station input torque on the drive shaft, T_act / (i_branch eta^meshes)",
-          b + "station_torque == " + p + "input_torque_opposing / (" + b + "ratio" + eta + ")");
-      stations_.push_back({&g, branch});
+    const Sym max_load = Var(p + "max_load");
+    if (HasParam(g, "eta_opposing"))
+      Define(p + "input_torque_opposing", "N*m", "actuator input torque against the airload, T_out / (i eta_opp)",
+             InputTorque(g, {}, max_load, Sym(0.0), 0.0));
+    if (HasParam(g, "eta_aiding"))
+      Define(p + "input_torque_aiding", "N*m", "actuator input torque with an aiding airload, T_out eta_aid / i",
+             -InputTorque(g, {}, -max_load, Sym(0.0), 0.0));
+    // The station's input torque on the drive line: through the gear stage that feeds it.
+    const auto [stage, station] = StationStage(g.id);
+    if (stage && HasParam(*stage, "ratio") && Has(p + "input_torque_opposing")) {
+      Define(stage->id + ".station_torque", "N*m", "station input torque on the drive shaft, T_act / (i_branch eta^meshes)",
+             InputTorque(*stage, {{station, Var(p + "input_torque_opposing")}}, Sym(0.0), Sym(0.0), 0.0));
+      stations_.push_back({&g, stage});
     }
   }
 
@@ -500,14 +584,9 @@ class Builder {
     // Travel at the actuator input: a GRA's output angle x its ratio; a ballscrew's stroke / lead
     // (lead in m/rad) x its gear ratio.
     const Component& g = *stations_.front().first;
-    std::string input_travel;
-    if (g.type == "geared_rotary_actuator" && HasParam(g, "travel_angle")) {
-      input_travel = g.id + ".travel_angle * " + g.id + ".ratio";
-    } else if (g.type == "ballscrew_actuator" && HasParam(g, "stroke") && HasParam(g, "lead")) {
-      input_travel = g.id + ".stroke / " + g.id + ".lead * " + g.id + ".ratio";
-    }
-    if (input_travel.empty()) return;
-    std::string travel = input_travel + GearProduct(g.id);
+    const Sym input_travel = ModelOf(g)->InputTravel(Reader(*this, g));
+    if (input_travel.missing()) return;
+    const std::string travel = Inboard(input_travel, g.id).Text();
     std::vector<std::string> extend;
     for (const LoadCase& lc : project_.load_cases) {
       const std::string name = "travel_time." + lc.name;
@@ -547,22 +626,6 @@ class Builder {
     Law("travel_time.extension", "extension time, the longest extending load case", "travel_time.extension == " + longest);
   }
 
-  /// " * r1.ratio * r2.ratio" for the gear stages between the PDU and `id` (speed reduction).
-  std::string GearProduct(const std::string& id) const {
-    std::string r;
-    if (!peaks_) return r;
-    const auto it = node_index_.find(id);
-    if (it == node_index_.end()) return r;
-    for (int k = it->second; k >= 0; k = peaks_->nodes[k].parent) {
-      const std::string& gear = peaks_->nodes[k].gear;
-      if (!gear.empty()) {
-        const Component* gb = Find(gear);
-        if (gb && HasValue(*gb, "ratio")) r += " * " + Value(*gb, "ratio");
-      }
-    }
-    return r;
-  }
-
   /// The PDU speed the load cases run at (rad/s): the PDU's maximum speed scaled by the load
   /// cases' peak over its nominal value (1 when the profile is written for the nominal speed).
   std::string OperatingSpeed() {
@@ -581,43 +644,29 @@ class Builder {
   }
 
   /// The inertia and stiffness of every component reflected to the PDU speed (x (w / w_pdu)^2),
-  /// by the laws of reduced_models (graph_model.h): PDU n J_motor i^2 + J_gear, actuators
-  /// J_in + J_load, shaft segments c and J, limiters their normal-operation stiffness c1, others
-  /// their given inertia and stiffness.
+  /// by its type's lumped law (ComponentModel::LumpedAtInput, as the reduced models read it): a
+  /// segment its variables c and J, the others their law over their parameters.
   void Reflected() {
     if (!peaks_) return;
     for (std::size_t i = 0; i < peaks_->nodes.size(); ++i) {
-      const auto& node = peaks_->nodes[i];
-      const Component& c = *Find(node.id);
+      const Component& c = *Find(peaks_->nodes[i].id);
       const std::string p = c.id + ".";
-      const std::string reflect = " / (1" + GearProduct(c.id) + ")^2";
-      std::string J, k;
-      if (c.type == "torque_shaft") {
-        if (Has(p + "c")) k = p + "c";
-        if (Has(p + "J")) J = p + "J";
-      } else if (c.type == "pdu") {
-        if (HasValue(c, "motor_inertia") && HasValue(c, "ratio") && HasValue(c, "gear_inertia"))
-          J = Value(c, "motor_inertia") + " * " + Num(Count(c, "motor_count", 1.0)) + " * " + Value(c, "ratio") + "^2 + " +
-              Value(c, "gear_inertia");
-      } else if (c.type == "geared_rotary_actuator") {
-        if (HasValue(c, "input_inertia") && HasValue(c, "load_inertia")) J = Value(c, "input_inertia") + " + " + Value(c, "load_inertia");
-      } else if (c.type == "ballscrew_actuator") {
-        J = Value(c, "input_inertia");
-      } else if (c.type != "disconnector" && c.type != "jam") {
-        J = Value(c, "inertia");
+      model::Lumped<Sym> lumped;
+      if (HasRole(c, &model::ComponentRoles::segment)) {
+        lumped.J = Has(p + "J") ? Var(p + "J") : Sym(0.0);
+        if (Has(p + "c")) lumped.c = Var(p + "c");
+      } else if (const model::ComponentModel* m = ModelOf(c)) {
+        lumped = m->LumpedAtInput(Reader(*this, c));
       }
-      if (c.type == "system_torque_limiter" || c.type == "station_torque_limiter") k = Value(c, "stiffness_normal");
-      else if (c.type != "torque_shaft" && c.type != "jam") k = Value(c, "stiffness");
-      if (!J.empty()) {
-        Derived(p + "reflected_inertia", "kg*m^2");
-        Law(p + "reflected_inertia", "inertia of " + c.id + " at the PDU speed, J (w / w_pdu)^2",
-            p + "reflected_inertia == (" + J + ")" + reflect);
-      }
-      if (!k.empty()) {
-        Derived(p + "reflected_stiffness", "N*m/rad");
-        Law(p + "reflected_stiffness", "stiffness of " + c.id + " at the PDU speed, c (w / w_pdu)^2",
-            p + "reflected_stiffness == (" + k + ")" + reflect);
-      }
+      const Sym& gears = Reduction(c.id);
+      auto reflect = [&](const Sym& x) { return x / pow(gears, 2); };
+      double J0 = 0.0;
+      if (!(lumped.J.constant(&J0) && J0 == 0.0))  // no inertia of its own (a jam, a disconnector)
+        Define(p + "reflected_inertia", "kg*m^2", "inertia of " + c.id + " at the PDU speed, J (w / w_pdu)^2",
+               reflect(lumped.J));
+      if (lumped.c)
+        Define(p + "reflected_stiffness", "N*m/rad", "stiffness of " + c.id + " at the PDU speed, c (w / w_pdu)^2",
+               reflect(*lumped.c));
     }
   }
 
@@ -632,7 +681,7 @@ class Builder {
   void TorqueFlows() {
     if (!peaks_) return;
     const Component* pdu = root_.empty() ? nullptr : Find(root_);
-    std::vector<std::vector<std::string>> flows;  // per load case: torque variable per node
+    std::vector<std::vector<Sym>> flows;  // per load case: torque variable per node
     std::vector<std::string> directions;
     std::vector<std::map<std::string, double>> aidings;  // per load case: aiding output torques
     for (const LoadCase& lc : project_.load_cases) {
@@ -647,13 +696,13 @@ class Builder {
       }
       // The speed: the profile's peak, else the PDU's max_output_speed (its variable, so the
       // friction of the flow is enclosed over its domain, as reduced_models' sizing does).
-      std::string w = Num(0.0);
+      Sym w(0.0);
       if (lc.pdu_speed && !lc.pdu_speed->y.empty()) {
         double peak = 0.0;
         for (double y : lc.pdu_speed->y) peak = std::max(peak, std::fabs(y));
-        w = Num(peak);
+        w = Sym(peak);
       } else if (pdu && reduced_models::HasReducedModelValue(*pdu, "max_output_speed")) {
-        w = Value(*pdu, "max_output_speed");
+        w = Reader(*this, *pdu)("max_output_speed");
       }
       flows.push_back(Flow(lc, loads, w));
       directions.push_back(lc.direction);
@@ -661,149 +710,95 @@ class Builder {
     }
     if (flows.empty()) return;
     // The largest magnitude over the load cases (of one direction when `direction` is given and
-    // some case has it), as text.
+    // some case has it).
     auto operating = [&](int k, const std::string& direction) {
-      std::vector<std::string> terms;
+      std::optional<Sym> out;
       bool any = false;
       for (std::size_t f = 0; f < flows.size(); ++f) any = any || directions[f] == direction;
       for (std::size_t f = 0; f < flows.size(); ++f) {
         if (!direction.empty() && any && directions[f] != direction) continue;
-        terms.push_back("abs(" + flows[f][k] + ")");
+        out = out ? max(*out, abs(flows[f][k])) : abs(flows[f][k]);
       }
-      std::string out = terms.front();
-      for (std::size_t t = 1; t < terms.size(); ++t) out = "max(" + out + ", " + terms[t] + ")";
-      return out;
+      return *out;
     };
     for (std::size_t k = 0; k < peaks_->nodes.size(); ++k) {
       const auto& node = peaks_->nodes[k];
       const Component& c = *Find(node.id);
       const std::string p = c.id + ".";
       const int i = static_cast<int>(k);
-      if (c.type == "torque_shaft") {
-        Derived(p + "drive_torque", "N*m");
-        Law(p + "drive_torque", "drive torque in the shaft, the largest over the load cases of the torque flow",
-            p + "drive_torque == " + operating(i, ""));
-        if (Has(p + "polar_moment")) {
-          Derived(p + "shear_stress", "MPa");
-          Law(p + "shear_stress", "shear stress from the drive torque, T D / (2 Ip)",
-              p + "shear_stress == " + p + "drive_torque * " + p + "outer_diameter / (2 * " + p + "polar_moment)");
-        }
-      } else if ((c.type == "system_torque_limiter" || c.type == "station_torque_limiter") &&
-                 HasParam(c, "lockout_torque_extend")) {
+      const model::ComponentRoles roles = ModelOf(c) ? ModelOf(c)->roles() : model::ComponentRoles{};
+      if (roles.segment) {
+        const Sym drive = Define(p + "drive_torque", "N*m",
+                                 "drive torque in the shaft, the largest over the load cases of the torque flow", operating(i, ""));
+        if (Has(p + "polar_moment"))
+          Define(p + "shear_stress", "MPa", "shear stress from the drive torque, T D / (2 Ip)",
+                 model::TubeShearStress(drive, Reader(*this, c)("outer_diameter"), Var(p + "polar_moment")));
+      } else if ((roles.wing_limiter || roles.station_limiter) && HasParam(c, "lockout_torque_extend")) {
         // As reduced_models' setting rules: a system limiter against the largest wing torque of
         // every case, a station limiter against its largest extending torque.
-        const bool station = c.type == "station_torque_limiter";
-        Derived(p + "torque_through", "N*m");
-        Law(p + "torque_through",
-            station ? "operating torque through the limiter, the largest of the extending load cases"
-                    : "operating torque through the limiter, the largest of the load cases",
-            p + "torque_through == " + operating(i, station ? "extend" : ""));
-        Derived(p + "margin", "N*m", Whole());
-        Law(p + "margin", "limiter margin, lockout setting minus operating torque",
-            p + "margin == " + p + "lockout_torque_extend - " + p + "torque_through");
-        if (HasParam(c, "lockout_torque_retract")) {
-          Derived(p + "torque_through_retract", "N*m");
-          Law(p + "torque_through_retract",
-              station ? "operating torque through the limiter, the largest of the retracting load cases"
-                      : "operating torque through the limiter, the largest of the load cases",
-              p + "torque_through_retract == " + operating(i, station ? "retract" : ""));
-          Derived(p + "margin_retract", "N*m", Whole());
-          Law(p + "margin_retract", "limiter margin in retract, lockout setting minus operating torque",
-              p + "margin_retract == " + p + "lockout_torque_retract - " + p + "torque_through_retract");
-        }
-      } else if (c.type == "wing_tip_brake" && HasParam(c, "static_capacity")) {
+        const bool station = roles.station_limiter;
+        auto setting = [&](const std::string& suffix, const std::string& lockout, const std::string& direction,
+                           const std::string& in) {
+          const Sym through = Define(p + "torque_through" + suffix, "N*m",
+                                     station ? "operating torque through the limiter, the largest of the " + direction + "ing load cases"
+                                             : "operating torque through the limiter, the largest of the load cases",
+                                     operating(i, station ? direction : ""));
+          Define(p + "margin" + suffix, "N*m", "limiter margin" + in + ", lockout setting minus operating torque",
+                 Var(p + lockout) - through, Whole());
+        };
+        setting("", "lockout_torque_extend", "extend", "");
+        if (HasParam(c, "lockout_torque_retract")) setting("_retract", "lockout_torque_retract", "retract", " in retract");
+      } else if (roles.tip_brake && HasParam(c, "static_capacity")) {
         // Holding: the airloads of the wing's actuators back-drive the shaft through their aiding
         // efficiencies, friction neglected (as reduced_models' rule for the static capacity).
         int wing = i;
         while (wing >= 0 && peaks_->nodes[wing].parent > 0) wing = peaks_->nodes[wing].parent;
-        std::vector<std::string> terms;
+        std::vector<Sym> terms;
         for (const auto& aiding : aidings) {
-          const std::string t = Backdrive(wing, aiding);
-          if (!t.empty() && std::find(terms.begin(), terms.end(), t) == terms.end()) terms.push_back(t);
+          const Sym t = -Backdrive(wing, aiding);
+          double zero = 0.0;
+          if (t.missing() || (t.constant(&zero) && zero == 0.0)) continue;
+          if (std::none_of(terms.begin(), terms.end(), [&](const Sym& u) { return u.Same(t); })) terms.push_back(t);
         }
         if (terms.empty()) continue;
-        std::string sum = terms.front();
-        for (std::size_t t = 1; t < terms.size(); ++t) sum = "max(" + sum + ", " + terms[t] + ")";
-        Derived(p + "holding_torque", "N*m");
-        Law(p + "holding_torque", "back-driving torque of the wing's airloads the brake holds, the largest load case",
-            p + "holding_torque == " + sum);
-        Derived(p + "holding_margin", "N*m", Whole());
-        Law(p + "holding_margin", "brake margin, static capacity minus holding torque",
-            p + "holding_margin == " + p + "static_capacity - " + p + "holding_torque");
-      } else if (c.type == "pdu") {
-        Derived(p + "output_torque", "N*m");
-        Law(p + "output_torque", "PDU output torque, both sides, the largest over the load cases",
-            p + "output_torque == " + operating(i, ""));
-        if (Has(p + "max_output_speed") && Has(p + "efficiency")) {
-          Derived(p + "required_power", "kW");
-          Law(p + "required_power", "PDU power at full speed, T w / eta",
-              p + "required_power == " + p + "output_torque * " + p + "max_output_speed / " + p + "efficiency");
-        }
+        Sym sum = terms.front();
+        for (std::size_t t = 1; t < terms.size(); ++t) sum = max(sum, terms[t]);
+        const Sym holding = Define(p + "holding_torque", "N*m",
+                                   "back-driving torque of the wing's airloads the brake holds, the largest load case", sum);
+        Define(p + "holding_margin", "N*m", "brake margin, static capacity minus holding torque",
+               Var(p + "static_capacity") - holding, Whole());
+      } else if (roles.drive_unit) {
+        const Sym output = Define(p + "output_torque", "N*m", "PDU output torque, both sides, the largest over the load cases",
+                                  operating(i, ""));
+        if (Has(p + "max_output_speed") && Has(p + "efficiency"))
+          Define(p + "required_power", "kW", "PDU power at full speed, T w / eta",
+                 output * Var(p + "max_output_speed") / Var(p + "efficiency"));
       }
     }
   }
 
-  /// Input torque of a gear stage carrying `out` (reduced_models' GearInputTorque): opposing
-  /// (out >= 0) out / (ratio eta_opposing), aiding out eta_aiding / ratio.
-  static std::string GearInput(const std::string& out, const std::string& ratio, const std::string& eta_opposing,
-                               const std::string& eta_aiding) {
-    return "max(" + out + ", 0) / (" + ratio + " * " + eta_opposing + ") + min(" + out + ", 0) * " + eta_aiding +
-           " / " + ratio;
-  }
-
-  /// The torque flow of one load case: a variable per node, leaves first.
-  std::vector<std::string> Flow(const LoadCase& lc, const std::map<std::string, double>& loads, const std::string& w) {
+  /// The torque flow of one load case: a variable per node, leaves first, each the steady-state
+  /// law of its type (ComponentModel::InputTorque) over the variables of its outboard nodes.
+  std::vector<Sym> Flow(const LoadCase& lc, const std::map<std::string, double>& loads, const Sym& w) {
     const std::size_t n = peaks_->nodes.size();
-    std::vector<std::string> var(n);
-    for (std::size_t k = 0; k < n; ++k) var[k] = "torque." + lc.name + "." + peaks_->nodes[k].id;
+    std::vector<Sym> var(n);
     for (std::size_t k = n; k-- > 0;) {
       const auto& node = peaks_->nodes[k];
       const Component& c = *Find(node.id);
-      std::string through, branch;
-      for (int child : node.children) {
-        std::string& sum = (c.type == "branch_gearbox" && peaks_->nodes[child].gear == c.id) ? branch : through;
-        sum += (sum.empty() ? "" : " + ") + var[child];
+      const std::string name = "torque." + lc.name + "." + node.id;
+      std::vector<std::pair<std::string, Sym>> outboard;
+      for (int child : node.children) outboard.push_back({peaks_->nodes[child].id, var[child]});
+      const auto it = loads.find(c.id);
+      const double load = it == loads.end() ? 0.0 : it->second;
+      const Sym law = InputTorque(c, outboard, Sym(load), w * SpeedRatioOf(c.id), 1.0);
+      std::string what = "by the steady-state law of its type " + c.type;
+      if (load != 0.0) what += " with its airload " + std::string(load > 0.0 ? "opposing" : "aiding");
+      var[k] = Define(name, "N*m", "torque at the input of " + c.id + " in '" + lc.name + "', " + what, law, Whole());
+      if (law.missing()) {  // a parameter without a value: the torque is left free
+        Derived(name, "N*m", Whole());
+        sign_[name] = Sign::Either();
+        var[k] = Var(name);
       }
-      auto plus = [](const std::string& a, const std::string& b) { return a.empty() ? b : b.empty() ? a : a + " + " + b; };
-      const std::string stribeck = Stribeck(static_cast<int>(k), w);
-      const std::string meshes = std::to_string(static_cast<int>(Count(c, "meshes", 1.0)));
-      std::string law, what;
-      if (c.type == "torque_shaft") {
-        law = plus(through, HasValue(c, "drag_per_length") && HasValue(c, "length")
-                                ? Value(c, "drag_per_length") + " * " + Value(c, "length") : "");
-        what = "shaft: outboard torque plus its drag";
-      } else if (c.type == "steady_bearing") {
-        law = plus(through, stribeck);
-        what = "bearing: outboard torque plus its friction";
-      } else if (c.type == "universal_joint") {
-        const std::string eta = ValueOr(c, "efficiency", 1.0);
-        if (!through.empty()) law = GearInput("(" + through + ")", "1", eta, eta);
-        what = "joint: outboard torque through its efficiency";
-      } else if (c.type == "angle_gearbox") {
-        const std::string eta = ValueOr(c, "eta_mesh", 1.0) + "^" + meshes;
-        law = plus(through.empty() ? "" : GearInput("(" + through + ")", ValueOr(c, "ratio", 1.0), eta, eta), stribeck);
-        what = "angle gearbox: outboard torque through ratio and mesh efficiency, plus friction";
-      } else if (c.type == "branch_gearbox") {
-        const std::string eta = ValueOr(c, "eta_mesh", 1.0) + "^" + meshes;
-        law = plus(plus(through, branch.empty() ? "" : GearInput("(" + branch + ")", ValueOr(c, "ratio", 1.0), eta, eta)),
-                   stribeck);
-        what = "branch gearbox: through torque plus the station's through ratio and mesh efficiency, plus friction";
-      } else if (c.type == "geared_rotary_actuator" || c.type == "ballscrew_actuator") {
-        const auto it = loads.find(c.id);
-        const double load = it == loads.end() ? 0.0 : it->second;
-        const std::string ratio = ValueOr(c, "ratio", 1.0);
-        std::string input;
-        if (load > 0.0) input = Num(load) + " / (" + ratio + " * " + ValueOr(c, "eta_opposing", 1.0) + ")";
-        else if (load < 0.0) input = Num(load) + " * " + ValueOr(c, "eta_aiding", 1.0) + " / " + ratio;
-        law = plus(input, stribeck);
-        what = "actuator: airload through ratio and efficiency (" + std::string(load >= 0.0 ? "opposing" : "aiding") +
-               "), plus friction";
-      } else {
-        law = through;
-        what = c.type + ": the outboard torque passes through";
-      }
-      Derived(var[k], "N*m", Whole());
-      Law(var[k], "torque at the input of " + c.id + " in '" + lc.name + "', " + what, var[k] + " == " + (law.empty() ? "0" : law));
     }
     return var;
   }
@@ -858,7 +853,7 @@ class Builder {
     return Has(name) ? name : std::string();
   }
   /// 1 / (product of the gear ratios inboard of node k) as text: w_k / w_pdu.
-  std::string SpeedRatio(int k) const { return "(1 / (1" + GearProduct(peaks_->nodes[k].id) + "))"; }
+  std::string SpeedRatio(int k) const { return "(" + SpeedRatioOf(peaks_->nodes[k].id).Text() + ")"; }
 
   void PeakCase(const reduced_models::PeakCaseStructure& pc) {
     const std::string p = "peak." + pc.name + ".";
@@ -869,7 +864,7 @@ class Builder {
     std::vector<Monotonicity> mono;
     std::string inertia;  // J*
     for (int k : pc.part) {
-      const bool shaft = peaks_->nodes[k].type == "torque_shaft";
+      const bool shaft = HasRole(NodeComponent(k), &model::ComponentRoles::segment);
       const std::string J = NodeVar(k, "reflected_inertia"), c = NodeVar(k, "reflected_stiffness");
       const int link = pc.link_of_node[k], point = pc.point_of_node[k];
       if (link >= 0 && !c.empty()) {
@@ -921,7 +916,7 @@ class Builder {
       static_torque = HasValue(pdu, "stall_torque") ? Value(pdu, "stall_torque") : "0";
       for (const std::string& id : pc.load_path) {
         const Component& c = *Find(id);
-        if (c.type == "system_torque_limiter" && HasValue(c, "lockout_torque_extend"))
+        if (HasRole(c, &model::ComponentRoles::wing_limiter) && HasValue(c, "lockout_torque_extend"))
           static_torque = "min(" + static_torque + ", " + Value(c, "lockout_torque_extend") + " * " +
                           SpeedRatio(node_index_.at(id)) + ")";
       }
@@ -948,84 +943,32 @@ class Builder {
       Derived(p + c.id, "N*m", Whole());
       Law(p + c.id, "peak load of '" + pc.name + "' at " + c.id,
           p + c.id + " == " + (cap.empty() ? p + "total_torque" : "min(" + p + "total_torque, " + cap + ")"));
-      if (pc.kind == "jam" && c.type == "station_torque_limiter" && HasValue(c, "end_stop_torque")) {
+      if (pc.kind == "jam" && HasRole(c, &model::ComponentRoles::station_limiter) && HasValue(c, "end_stop_torque")) {
         const std::string end_stop = Value(c, "end_stop_torque") + " * " + SpeedRatio(node_index_.at(c.id));
         cap = cap.empty() ? end_stop : "min(" + cap + ", " + end_stop + ")";
       }
     }
   }
 
-  /// Back-drive torque (magnitude) at the input of node k from the aiding airloads, no friction:
-  /// gear stages pass tau eta_aiding / ratio (reduced_models' torque flow). Empty when none.
-  std::string Backdrive(int k) const { return Backdrive(k, peaks_->aiding); }
-  std::string Backdrive(int k, const std::map<std::string, double>& aiding) const {
+  /// Back-drive torque at the input of node k from the aiding airloads `aiding` (negative), no
+  /// friction: each component's steady-state law in the aiding direction (gear stages pass
+  /// tau eta_aiding / ratio, as reduced_models' torque flow). Negative; 0 when there is none.
+  Sym Backdrive(int k) const { return Backdrive(k, peaks_->aiding); }
+  Sym Backdrive(int k, const std::map<std::string, double>& aiding) const {
     const auto& node = peaks_->nodes[k];
-    const Component& c = NodeComponent(k);
-    if (c.type == "geared_rotary_actuator" || c.type == "ballscrew_actuator") {
-      const auto it = aiding.find(c.id);
-      if (it == aiding.end() || it->second == 0.0) return "";
-      return Num(-it->second) + " * " + ValueOr(c, "eta_aiding", 1.0) + " / " + ValueOr(c, "ratio", 1.0);
-    }
-    std::string through, branch;
-    for (int child : node.children) {
-      const std::string t = Backdrive(child, aiding);
-      if (t.empty()) continue;
-      std::string& sum = (c.type == "branch_gearbox" && peaks_->nodes[child].gear == c.id) ? branch : through;
-      sum += (sum.empty() ? "" : " + ") + t;
-    }
-    const std::string eta = c.type == "angle_gearbox" || c.type == "branch_gearbox"
-                                ? ValueOr(c, "eta_mesh", 1.0) + "^" + std::to_string(static_cast<int>(Count(c, "meshes", 1.0)))
-                                : "";
-    if (c.type == "universal_joint" && !through.empty()) return "(" + through + ") * " + ValueOr(c, "efficiency", 1.0);
-    if (c.type == "angle_gearbox" && !through.empty()) return "(" + through + ") * " + eta + " / " + ValueOr(c, "ratio", 1.0);
-    if (c.type == "branch_gearbox" && !branch.empty()) {
-      const std::string b = "(" + branch + ") * " + eta + " / " + ValueOr(c, "ratio", 1.0);
-      return through.empty() ? b : through + " + " + b;
-    }
-    return through;
+    std::vector<std::pair<std::string, Sym>> outboard;
+    for (int child : node.children) outboard.push_back({peaks_->nodes[child].id, Backdrive(child, aiding)});
+    const auto it = aiding.find(node.id);
+    return InputTorque(NodeComponent(k), outboard, Sym(it == aiding.end() ? 0.0 : it->second), Sym(0.0), 0.0);
   }
 
-  /// Stribeck friction at node k's speed, the paper's equation (3); empty when it has none.
-  std::string Stribeck(int k) const { return Stribeck(k, Num(peaks_->w_operating)); }
-  /// The same at PDU speed `w_pdu` [rad/s]: a number, or the name of the speed variable when the
-  /// speed is uncertain (the PDU's max_output_speed), so the friction is enclosed over its domain.
-  std::string Stribeck(int k, const std::string& w_pdu) const {
-    const Component& c = NodeComponent(k);
-    for (const char* name : {"coulomb_torque", "viscous_coefficient", "stribeck_torque", "stribeck_decay"})
-      if (!HasValue(c, name)) return "";
-    const std::string w = "(" + w_pdu + " * " + SpeedRatio(k) + ")";
-    return Value(c, "coulomb_torque") + " + " + Value(c, "viscous_coefficient") + " * " + w + " + " +
-           Value(c, "stribeck_torque") + " * exp(-(" + Value(c, "stribeck_decay") + " * " + w + "))";
-  }
-  /// Friction torque at the input of node k with no airload (reduced_models' drag flow).
-  std::string Drag(int k) const {
+  /// Friction torque at the input of node k with no airload at the operating speed
+  /// (reduced_models' drag flow): each component's steady-state law without load.
+  Sym Drag(int k) const {
     const auto& node = peaks_->nodes[k];
-    const Component& c = NodeComponent(k);
-    std::string through, branch;
-    for (int child : node.children) {
-      const std::string t = Drag(child);
-      if (t.empty()) continue;
-      std::string& sum = (c.type == "branch_gearbox" && peaks_->nodes[child].gear == c.id) ? branch : through;
-      sum += (sum.empty() ? "" : " + ") + t;
-    }
-    auto plus = [](const std::string& a, const std::string& b) { return a.empty() ? b : b.empty() ? a : a + " + " + b; };
-    const std::string eta = c.type == "angle_gearbox" || c.type == "branch_gearbox"
-                                ? ValueOr(c, "eta_mesh", 1.0) + "^" + std::to_string(static_cast<int>(Count(c, "meshes", 1.0)))
-                                : "";
-    if (c.type == "torque_shaft") {
-      const std::string own = HasValue(c, "drag_per_length") && HasValue(c, "length")
-                                  ? Value(c, "drag_per_length") + " * " + Value(c, "length") : "";
-      return plus(through, own);
-    }
-    if (c.type == "steady_bearing" || c.type == "geared_rotary_actuator" || c.type == "ballscrew_actuator")
-      return plus(through, Stribeck(k));
-    if (c.type == "universal_joint") return through.empty() ? "" : "(" + through + ") / " + ValueOr(c, "efficiency", 1.0);
-    if (c.type == "angle_gearbox")
-      return plus(through.empty() ? "" : "(" + through + ") / (" + ValueOr(c, "ratio", 1.0) + " * " + eta + ")", Stribeck(k));
-    if (c.type == "branch_gearbox")
-      return plus(plus(through, branch.empty() ? "" : "(" + branch + ") / (" + ValueOr(c, "ratio", 1.0) + " * " + eta + ")"),
-                  Stribeck(k));
-    return through;
+    std::vector<std::pair<std::string, Sym>> outboard;
+    for (int child : node.children) outboard.push_back({peaks_->nodes[child].id, Drag(child)});
+    return InputTorque(NodeComponent(k), outboard, Sym(0.0), Sym(peaks_->w_operating) * SpeedRatioOf(node.id), 1.0);
   }
 
   /// w_max after a rupture: reduced_models::ComputeRuptureSpeed as a monotone black box of the
@@ -1041,7 +984,8 @@ class Builder {
       const std::string J = NodeVar(k, "reflected_inertia");
       if (!J.empty()) part_inertia += (part_inertia.empty() ? "" : " + ") + J;
     }
-    const std::string back = Backdrive(root), drag = Drag(root);
+    const Sym back = -Backdrive(root), drag = Drag(root);
+    if (back.missing() || drag.missing()) return false;
     const std::string latency = (sensor && HasValue(*sensor, "latency") ? Value(*sensor, "latency") : "0") + " + " +
                                 Value(wtb, "engagement_latency") + " + 0.5 * " + Value(wtb, "time_to_max_torque");
     if (part_inertia.empty() || !HasValue(wtb, "engagement_latency") || !HasValue(wtb, "time_to_max_torque")) return false;
@@ -1053,11 +997,9 @@ class Builder {
         VariableFor(p + "asymmetry_threshold", "rev", sensor ? Value(*sensor, "asymmetry_threshold") : Num(4.0 * std::numbers::pi),
                     "asymmetry trip threshold of the monitor"),
         VariableFor(p + "latency", "ms", latency, "monitor latency + brake engagement + half its rise time"),
-        VariableFor(p + "backdrive_torque", "N*m",
-                    "max(0, " + (back.empty() ? std::string("0") : "(" + back + ")") + " * " + SpeedRatio(root) + ")",
+        VariableFor(p + "backdrive_torque", "N*m", max(Sym(0.0), back * SpeedRatioOf(peaks_->nodes[root].id)).Text(),
                     "back-drive torque of the airload on the outboard part, at the PDU speed"),
-        VariableFor(p + "drag_torque", "N*m",
-                    "max(0, " + (drag.empty() ? std::string("0") : "(" + drag + ")") + " * " + SpeedRatio(root) + ")",
+        VariableFor(p + "drag_torque", "N*m", max(Sym(0.0), drag * SpeedRatioOf(peaks_->nodes[root].id)).Text(),
                     "friction of the outboard part, at the PDU speed"),
         VariableFor(p + "part_inertia", "kg*m^2", part_inertia, "inertia of the outboard part, at the PDU speed")};
     std::vector<VariableId> vars;
@@ -1115,6 +1057,10 @@ class Builder {
   DriveSystemNetwork out_;
   std::string root_;
   std::map<std::string, std::string> parent_;
+  std::map<std::string, std::string> parent_port_;  // component id -> the port of its parent it hangs on
+  std::map<std::string, std::string> entry_port_;   // component id -> its own port towards its parent
+  std::map<std::string, Sign> sign_;                 // variable -> the signs it can take (see SignOf)
+  mutable std::map<std::string, Sym> reduction_;     // component id -> Reduction(id)
   std::map<std::string, std::vector<std::string>> children_;
   std::vector<std::string> order_;
   std::vector<std::pair<const Component*, const Component*>> stations_;  // actuator, branch gearbox

@@ -392,7 +392,7 @@ PeakReport AnalysePeaks(const Project& project, const PeakOptions& options) {
     double static_torque = stall ? detail::NominalValue(pdu, "stall_torque") : 0.0;
     Interval static_bounds = stall ? detail::Read<Interval>(pdu, "stall_torque", bounds.mode) : Interval(0.0);
     for (int k : g.PathToRoot(a))
-      if (g.Roles(k).system_limiter && detail::HasValue(*g.nodes[k].component, "lockout_torque_extend")) {
+      if (g.Roles(k).wing_limiter && detail::HasValue(*g.nodes[k].component, "lockout_torque_extend")) {
         const Component& stl = *g.nodes[k].component;
         static_torque = std::min(static_torque, detail::NominalValue(stl, "lockout_torque_extend") * speed_ratio[k]);
         static_bounds = detail::Min(static_bounds, detail::Read<Interval>(stl, "lockout_torque_extend", bounds.mode) * bounds.n[k]);

@@ -64,7 +64,7 @@ std::vector<SignalChoice> ChooseSignals(const Project& project) {
     if (RolesOf(c.type).tip_sensor) out.push_back({c.id + ".w", "speed"});
   for (const Component& c : project.components) {
     const ComponentRoles r = RolesOf(c.type);
-    if (r.system_limiter || r.tip_brake || r.segment) out.push_back({c.id + ".tau", "torque"});
+    if (r.wing_limiter || r.tip_brake || r.segment) out.push_back({c.id + ".tau", "torque"});
   }
   out.push_back({"monitor.wtb", "state"});
   return out;

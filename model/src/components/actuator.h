@@ -29,6 +29,11 @@ class ActuatorModel : public NamedModel {
   }
   HIGHLIFT_STEADY_LAW
 
+  /// The travel at the input flange: the output travel (OutputTravel of the type) times the ratio.
+  Sym InputTravel(const ParameterReader<Sym>& p) const override { return OutputTravel(p) * p("ratio"); }
+  /// The output angle over the full travel, rad, as the propagator reads it.
+  virtual Sym OutputTravel(const ParameterReader<Sym>& p) const = 0;
+
   void Expand(const Component& c, ExpansionContext& x) const override {
     const double ratio = Require(c, "ratio");
     Scalars s = x.Regularised(Stribeck(c));

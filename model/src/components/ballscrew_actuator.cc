@@ -15,6 +15,8 @@ class BallscrewActuatorModel final : public ActuatorModel {
                        c.where);
     return *stroke / Require(c, "lead");
   }
+  /// The screw's turns over the stroke (lead in m/rad), the angle its ratio multiplies.
+  Sym OutputTravel(const ParameterReader<Sym>& p) const override { return p("stroke") / p("lead"); }
 
   template <class T>
   Lumped<T> Law(const ParameterReader<T>& p) const {

@@ -9,6 +9,7 @@ class GearedRotaryActuatorModel final : public ActuatorModel {
  public:
   GearedRotaryActuatorModel() : ActuatorModel("geared_rotary_actuator") {}
   double TravelAngle(const Component& c) const override { return Require(c, "travel_angle"); }
+  Sym OutputTravel(const ParameterReader<Sym>& p) const override { return p("travel_angle"); }
 
   /// Input side plus the surface's inertia referred to the input.
   template <class T>

@@ -93,6 +93,8 @@ double ComponentModel::TravelAngle(const Component& c) const {
   throw InputError("component '" + c.id + "' (" + c.type + ") is no actuator: it has no travel", c.where);
 }
 
+Sym ComponentModel::InputTravel(const ParameterReader<Sym>&) const { return Sym::Missing("travel of " + std::string(type())); }
+
 const std::vector<const ComponentModel*>& ComponentModels() {
   static const std::vector<const ComponentModel*> models = {
 #define HIGHLIFT_LIST(Name) &components::Name##Component(),

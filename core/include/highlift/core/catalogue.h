@@ -56,11 +56,15 @@ struct ComponentRoles {
   bool segment = false;       ///< a distributed segment (torque shaft, parameter "length"): in the lumped
                               ///< models a link with its stiffness and inertia between two points
   bool lumps_inertia = false; ///< in the lumped models a point of inertia is named after it
-  bool system_limiter = false;   ///< a torque limiter at the PDU output: its lock-out caps a wing's torque
-  bool station_limiter = false;  ///< a torque limiter at a station: its lock-out and end stops cap the station
+  bool wing_limiter = false;     ///< limits the torque into a whole wing (system torque limiter): set
+                                 ///< against the largest wing torque of every load case; caps a jam's
+                                 ///< static torque at its lock-out
+  bool station_limiter = false;  ///< limits the torque into one station: set against the station's
+                                 ///< torques of each direction; in a jam what lies behind it sees at
+                                 ///< most its end-stop torque
   bool tip_sensor = false;    ///< a position sensor (APPU) whose angle and speed the monitor reads
 
-  bool torque_limiter() const { return system_limiter || station_limiter; }
+  bool torque_limiter() const { return wing_limiter || station_limiter; }
 };
 
 /// What a parameter holds. Scalars (the default) are quantities with a unit and an interval

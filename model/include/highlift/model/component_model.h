@@ -19,6 +19,7 @@
 #include "highlift/core/project.h"
 #include "highlift/model/interval.h"
 #include "highlift/model/network.h"
+#include "highlift/model/symbolic.h"
 
 namespace highlift::model {
 
@@ -32,8 +33,9 @@ using Scalars = std::map<std::string, double>;
 using ComponentRoles = highlift::ComponentRoles;
 
 /// The values of a component's parameters as a law reads them, for scalar T: double (nominal
-/// values) or Interval (domains, for enclosures). Implemented by each analysis over its own
-/// notion of a value (reduced_models: nominal, all domains, or one parameter's domain).
+/// values), Interval (domains, for enclosures) or Sym (the propagator's variables, symbolic.h).
+/// Implemented by each analysis over its own notion of a value (reduced_models: nominal, all
+/// domains, or one parameter's domain; icsp: the parameter's variable, or Sym::Missing).
 template <class T>
 class ParameterReader {
  public:
@@ -155,12 +157,14 @@ class ComponentModel {
   /// The contribution to the lumped models (lumped_model.h of reduced_models) for each scalar.
   virtual Lumped<double> LumpedAtInput(const ParameterReader<double>& p) const { return DefaultLumped(p); }
   virtual Lumped<Interval> LumpedAtInput(const ParameterReader<Interval>& p) const { return DefaultLumped(p); }
+  virtual Lumped<Sym> LumpedAtInput(const ParameterReader<Sym>& p) const { return DefaultLumped(p); }
   /// The steady-state law: the torque at its input flange, at its own speed (gear stages with
   /// their opposing/aiding efficiencies, drag by the Stribeck law). Default: what it passes on.
   virtual double InputTorque(const ParameterReader<double>&, const SteadyFlow<double>& in) const { return in.through; }
   virtual Interval InputTorque(const ParameterReader<Interval>&, const SteadyFlow<Interval>& in) const {
     return in.through;
   }
+  virtual Sym InputTorque(const ParameterReader<Sym>&, const SteadyFlow<Sym>& in) const { return in.through; }
   /// Adds the component's elements (full resolution; at reduced resolution the chain members
   /// are lumped by the translation from ChainMember). Throws InputError naming the component and
   /// parameter for a value it cannot translate.
@@ -170,21 +174,28 @@ class ComponentModel {
   /// An actuator's output angle over its full travel, rad (roles().actuator only): the abscissa
   /// of airload tables against position.
   virtual double TravelAngle(const Component& c) const;
+  /// An actuator's travel at its input flange over its full travel, rad (the output angle times
+  /// its ratio), as the propagator's expression; Sym::Missing for a type that is no actuator.
+  virtual Sym InputTravel(const ParameterReader<Sym>& p) const;
 };
 
-/// In a ComponentModel: overrides both LumpedAtInput with the member template
+/// In a ComponentModel: overrides the three LumpedAtInput with the member template
 /// `template <class T> Lumped<T> Law(const ParameterReader<T>&) const`, the law written once.
-#define HIGHLIFT_LUMPED_LAW                                                                          \
-  Lumped<double> LumpedAtInput(const ParameterReader<double>& p) const override { return Law(p); } \
-  Lumped<Interval> LumpedAtInput(const ParameterReader<Interval>& p) const override { return Law(p); }
+#define HIGHLIFT_LUMPED_LAW                                                                            \
+  Lumped<double> LumpedAtInput(const ParameterReader<double>& p) const override { return Law(p); }   \
+  Lumped<Interval> LumpedAtInput(const ParameterReader<Interval>& p) const override { return Law(p); } \
+  Lumped<Sym> LumpedAtInput(const ParameterReader<Sym>& p) const override { return Law(p); }
 
-/// In a ComponentModel: overrides both InputTorque with the member template
+/// In a ComponentModel: overrides the three InputTorque with the member template
 /// `template <class T> T SteadyLaw(const ParameterReader<T>&, const SteadyFlow<T>&) const`.
 #define HIGHLIFT_STEADY_LAW                                                                               \
   double InputTorque(const ParameterReader<double>& p, const SteadyFlow<double>& in) const override {      \
     return SteadyLaw(p, in);                                                                              \
   }                                                                                                       \
   Interval InputTorque(const ParameterReader<Interval>& p, const SteadyFlow<Interval>& in) const override { \
+    return SteadyLaw(p, in);                                                                              \
+  }                                                                                                       \
+  Sym InputTorque(const ParameterReader<Sym>& p, const SteadyFlow<Sym>& in) const override {              \
     return SteadyLaw(p, in);                                                                              \
   }
 

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string_view>
 
 #include "highlift/core/domain.h"
 #include "highlift/core/error.h"
@@ -95,10 +96,13 @@ inline double Upper(const Interval& x) { return x.hi; }
 
 /// f applied to a value whose law changes at zero: f_pos for x >= 0, f_neg for x < 0. For an
 /// interval straddling zero, the hull of both parts (each law is continuous at zero here).
+/// `law` names the law in the messages of the symbolic scalar (symbolic.h).
 template <class Pos, class Neg>
-double BySign(double x, Pos f_pos, Neg f_neg) { return x >= 0.0 ? f_pos(x) : f_neg(x); }
+double BySign(double x, Pos f_pos, Neg f_neg, std::string_view /*law*/ = {}) {
+  return x >= 0.0 ? f_pos(x) : f_neg(x);
+}
 template <class Pos, class Neg>
-Interval BySign(const Interval& x, Pos f_pos, Neg f_neg) {
+Interval BySign(const Interval& x, Pos f_pos, Neg f_neg, std::string_view /*law*/ = {}) {
   if (x.lo >= 0.0) return f_pos(x);
   if (x.hi < 0.0) return f_neg(x);
   return Hull(f_pos(Interval(0.0, x.hi)), f_neg(Interval(x.lo, 0.0)));

@@ -1,7 +1,8 @@
 // Physical laws of the component types that more than one analysis evaluates, each written once
-// and templated on its scalar: double (simulation, sizing at nominal values) and the interval
-// types of the enclosures (reduced_models' detail::Interval). A law uses only +, -, *, / and
-// construction from a double, so any scalar with those operations serves.
+// and templated on its scalar: double (simulation, sizing at nominal values), the interval of the
+// enclosures (interval.h) and the symbolic scalar of the constraint propagator (symbolic.h). A
+// law uses only +, -, *, /, exp, BySign and construction from a double, so any scalar with those
+// operations serves.
 // Symbols as in the paper and the Modelica Standard Library; SI units throughout.
 #pragma once
 
@@ -9,6 +10,7 @@
 #include <numbers>
 
 #include "highlift/model/interval.h"
+#include "highlift/model/symbolic.h"
 
 namespace highlift::model {
 
@@ -55,7 +57,20 @@ template <class T>
 T GearInputTorque(const T& tau_out, const T& ratio, const T& eta_opposing, const T& eta_aiding) {
   return BySign(
       tau_out, [&](const T& x) { return x / (ratio * eta_opposing); },
-      [&](const T& x) { return x * eta_aiding / ratio; });
+      [&](const T& x) { return x * eta_aiding / ratio; }, "GearInputTorque");
+}
+
+/// Torque capacity of a tube at its allowable shear stress [N*m]: tau = tau_allow 2 Ip / D, with
+/// Ip its polar moment (TubePolarMoment).
+template <class T>
+T TubeTorqueCapacity(const T& tau_allow, const T& D, const T& Ip) {
+  return tau_allow * T(2.0) * Ip / D;
+}
+
+/// Shear stress at the surface of a tube carrying torque tau [Pa]: tau D / (2 Ip).
+template <class T>
+T TubeShearStress(const T& tau, const T& D, const T& Ip) {
+  return tau * D / (T(2.0) * Ip);
 }
 
 /// Efficiency of a gear train of `meshes` equal meshes of efficiency eta_mesh: eta = eta_mesh^n.
