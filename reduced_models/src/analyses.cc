@@ -533,19 +533,14 @@ PeakReport AnalysePeaks(const Project& project, const PeakOptions& options) {
     const Component& c = *g.nodes[i].component;
     // Largest torque at the component's own speed: the largest reference torque over the smallest ratio.
     w.local_torque = (Interval(w.torque.bounds.hi) / bounds.n[i]).hi;
+    // The allowable at its input flange, by its type's law: nominal and over the domains.
     std::optional<Interval> allowable;
-    if (c.type == "torque_shaft") {
-      w.allowable_name = "torque capacity";
-      w.allowable = detail::ShaftTorqueCapacity<double>(c, nominal);
-      allowable = detail::ShaftTorqueCapacity<Interval>(c, bounds.mode);
-    } else if (c.type == "wing_tip_brake" && detail::HasValue(c, "static_capacity")) {
-      w.allowable_name = "static capacity";
-      w.allowable = detail::NominalValue(c, "static_capacity");
-      allowable = detail::Read<Interval>(c, "static_capacity", bounds.mode);
-    } else if (c.type == "geared_rotary_actuator" && detail::HasValue(c, "output_torque_rating")) {
-      w.allowable_name = "rated output torque / ratio";
-      w.allowable = detail::NominalValue(c, "output_torque_rating") / detail::NominalValue(c, "ratio");
-      allowable = detail::Read<Interval>(c, "output_torque_rating", bounds.mode) / detail::Read<Interval>(c, "ratio", bounds.mode);
+    if (const model::ComponentModel* m = detail::ModelOf(c)) {
+      if (const auto a = m->PeakAllowable(detail::ModeReader<double>(c, nominal))) {
+        w.allowable_name = a->name;
+        w.allowable = a->value;
+        allowable = m->PeakAllowable(detail::ModeReader<Interval>(c, bounds.mode))->value;
+      }
     }
     w.allowable_min = allowable ? allowable->lo : 0.0;
     // Guaranteed: no point of the domains has a smaller margin (outward rounded).

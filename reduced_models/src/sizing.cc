@@ -13,6 +13,13 @@
 namespace highlift::reduced_models {
 namespace {
 
+/// The actuator types of the catalogue, "a or b".
+std::string ActuatorTypes() {
+  std::string out;
+  for (const std::string& t : ComponentTypesWith(&ComponentRoles::actuator)) out += (out.empty() ? "" : " or ") + t;
+  return out;
+}
+
 using detail::Interval;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
@@ -57,8 +64,8 @@ SizingReport Size(const Project& project, const SizingOptions& options) {
       const int node = g.Find(actuator);
       if (node < 0 || !g.IsActuator(node))
         throw InputError("load case '" + load_case.name + "': actuator load for '" + actuator +
-                             "', which is not an actuator driven from the PDU; name a "
-                             "geared_rotary_actuator or ballscrew_actuator of the project",
+                             "', which is not an actuator driven from the PDU; name an actuator of the project (" +
+                             ActuatorTypes() + ")",
                          load_case.where);
     }
     const auto loads = detail::SizingLoads(load_case);
@@ -130,40 +137,39 @@ SizingReport Size(const Project& project, const SizingOptions& options) {
     }
     report.settings.push_back(r);
   };
+  // Wing back-drive torque at node `node`'s wing root: the airloads of the wing's actuators
+  // back-driving the shaft through their aiding efficiencies, friction neglected (conservative).
+  auto wing_backdrive = [&](int node) {
+    int wing = node;
+    while (g.nodes[wing].parent > 0) wing = g.nodes[wing].parent;
+    Bounded backdrive = Make(0.0);
+    for (const LoadCase& load_case : project.load_cases) {
+      std::map<std::string, double> aiding;
+      for (const auto& [actuator, value] : detail::SizingLoads(load_case)) aiding[actuator] = -std::abs(value);
+      const double w = detail::SizingSpeed(load_case, pdu);
+      const auto flow = detail::SolveFlow<double>(g, nominal_mode, aiding, w, false);
+      Bounded b = Make(std::max(0.0, -flow.tau_in[wing]));
+      if (options.intervals) {
+        const auto wide = detail::SolveFlow<Interval>(g, interval_mode, aiding,
+                                                      detail::SizingSpeed<Interval>(load_case, pdu, interval_mode), false);
+        b.bounds = {std::max(0.0, -wide.tau_in[wing].hi), std::max(0.0, -wide.tau_in[wing].lo)};
+      }
+      backdrive = Max(backdrive, b);
+    }
+    return backdrive;
+  };
+  // The settings by the sizing rules their component types declare.
   for (std::size_t i = 0; i < g.nodes.size(); ++i) {
     const int node = static_cast<int>(i);
-    const std::string& type = g.Type(node);
-    if (type == "system_torque_limiter") {
-      const std::string rule = "1.2-1.4 x max operating wing torque (domain.md s6)";
-      // The maximum operating wing torque over both directions sizes both trip torques.
-      recommend(node, "lockout_torque_extend", rule, operating(node, ""), 1.3, 1.2, 1.4);
-      recommend(node, "lockout_torque_retract", rule, operating(node, ""), 1.3, 1.2, 1.4);
-    } else if (type == "station_torque_limiter") {
-      const std::string rule = "1.3-1.6 x station max operating torque (domain.md s6)";
-      recommend(node, "lockout_torque_extend", rule, operating(node, "extend"), 1.5, 1.3, 1.6);
-      // Retract: the aiding airload leaves little drive torque; the rule applies to what remains,
-      // and the project's asymmetric setting (domain.md s3: 0.7 x extend) is checked against it.
-      recommend(node, "lockout_torque_retract", rule, operating(node, "retract"), 1.5, 1.3, kInf);
-    } else if (type == "wing_tip_brake") {
-      // Wing back-drive torque: the airloads of the wing's actuators back-driving the shaft
-      // through their aiding efficiencies, friction neglected (conservative).
-      int wing = node;
-      while (g.nodes[wing].parent > 0) wing = g.nodes[wing].parent;
-      Bounded backdrive = Make(0.0);
-      for (const LoadCase& load_case : project.load_cases) {
-        std::map<std::string, double> aiding;
-        for (const auto& [actuator, value] : detail::SizingLoads(load_case)) aiding[actuator] = -std::abs(value);
-        const double w = detail::SizingSpeed(load_case, pdu);
-        const auto flow = detail::SolveFlow<double>(g, nominal_mode, aiding, w, false);
-        Bounded b = Make(std::max(0.0, -flow.tau_in[wing]));
-        if (options.intervals) {
-          const auto wide = detail::SolveFlow<Interval>(g, interval_mode, aiding,
-                                                        detail::SizingSpeed<Interval>(load_case, pdu, interval_mode), false);
-          b.bounds = {std::max(0.0, -wide.tau_in[wing].hi), std::max(0.0, -wide.tau_in[wing].lo)};
-        }
-        backdrive = Max(backdrive, b);
-      }
-      recommend(node, "static_capacity", ">= 1.5 x wing back-drive torque (domain.md s6)", backdrive, 1.5, 1.5, kInf);
+    const model::ComponentModel* m = detail::ModelOf(*g.nodes[node].component);
+    if (!m) continue;
+    for (const model::SettingRule& rule : m->SettingRules()) {
+      using Against = model::SettingRule::Against;
+      const Bounded against = rule.against == Against::kOperating          ? operating(node, "")
+                              : rule.against == Against::kOperatingExtend  ? operating(node, "extend")
+                              : rule.against == Against::kOperatingRetract ? operating(node, "retract")
+                                                                           : wing_backdrive(node);
+      recommend(node, rule.parameter, rule.rule, against, rule.factor, rule.factor_min, rule.factor_max);
     }
   }
 
@@ -178,19 +184,19 @@ SizingReport Size(const Project& project, const SizingOptions& options) {
       const double margin = at_load > 0 ? GuaranteedMargin(allowable.lo, at_load) : kInf;
       report.margins.push_back({c.id, name, at_load, allowable.lo, margin});
     };
-    if (c.type == "torque_shaft") {
-      add("torque capacity at the allowable shear stress", detail::ShaftTorqueCapacity<Interval>(c, allowable_mode), load);
-    } else if (c.type == "geared_rotary_actuator" && detail::HasValue(c, "output_torque_rating")) {
-      double output = 0.0;
+    const model::ComponentModel* m = detail::ModelOf(c);
+    const auto allowable = m ? m->SteadyAllowable(detail::ModeReader<Interval>(c, allowable_mode)) : std::nullopt;
+    if (!allowable) continue;
+    double at_load = load;
+    if (allowable->against_output_load) {  // an actuator's output rating: its largest output load
+      at_load = 0.0;
       for (const LoadCase& load_case : project.load_cases) {
         const auto loads = detail::SizingLoads(load_case);
         auto it = loads.find(c.id);
-        if (it != loads.end()) output = std::max(output, std::abs(it->second));
+        if (it != loads.end()) at_load = std::max(at_load, std::abs(it->second));
       }
-      add("rated output torque", detail::Read<Interval>(c, "output_torque_rating", allowable_mode), output);
-    } else if (c.type == "pdu" && detail::HasValue(c, "stall_torque")) {
-      add("stall torque", detail::Read<Interval>(c, "stall_torque", allowable_mode), load);
     }
+    add(allowable->name, allowable->value, at_load);
   }
   if (options.intervals && options.tightness_samples > 0) MeasureTightness(project, options, &report);
   return report;

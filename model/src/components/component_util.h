@@ -1,6 +1,7 @@
 // Helpers shared by the component models: reading a component's parameter values in SI.
 #pragma once
 
+#include <limits>
 #include <optional>
 #include <string>
 
@@ -9,6 +10,8 @@
 #include "highlift/model/laws.h"
 
 namespace highlift::model::components {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 /// The nominal value of a parameter, when it has one.
 inline std::optional<double> Value(const Component& c, const std::string& name) {

@@ -19,6 +19,19 @@ class GearedRotaryActuatorModel final : public ActuatorModel {
     return out;
   }
   HIGHLIFT_LUMPED_LAW
+
+  /// Against the peak loads at its input: its rated output torque / ratio.
+  template <class T>
+  std::optional<Allowable<T>> PeakLaw(const ParameterReader<T>& p) const {
+    if (!p.Has("output_torque_rating")) return std::nullopt;
+    return Allowable<T>{"rated output torque / ratio", p("output_torque_rating") / p("ratio")};
+  }
+  HIGHLIFT_PEAK_ALLOWABLE_LAW
+  /// In the steady state its rated output torque against its output load.
+  std::optional<Allowable<Interval>> SteadyAllowable(const ParameterReader<Interval>& p) const override {
+    if (!p.Has("output_torque_rating")) return std::nullopt;
+    return Allowable<Interval>{"rated output torque", p("output_torque_rating"), true};
+  }
 };
 
 }  // namespace

@@ -22,6 +22,12 @@ class PduModel final : public NamedModel {
   }
   HIGHLIFT_LUMPED_LAW
 
+  /// In the steady state its stall torque against the operating torque at its output.
+  std::optional<Allowable<Interval>> SteadyAllowable(const ParameterReader<Interval>& p) const override {
+    if (!p.Has("stall_torque")) return std::nullopt;
+    return Allowable<Interval>{"stall torque", p("stall_torque")};
+  }
+
   void Expand(const Component& c, ExpansionContext& x) const override {
     std::optional<double> motor_lost_time;  // the scenario value, as t_motor_lost below
     if (const Scenario* s = x.scenario())

@@ -78,6 +78,21 @@ class TorqueShaftModel final : public NamedModel {
   }
   HIGHLIFT_STEADY_LAW
 
+  /// Its torque capacity at the allowable shear stress, tau_allow 2 Ip / D (against the
+  /// operating torque and the peak loads alike).
+  template <class T>
+  std::optional<Allowable<T>> PeakLaw(const ParameterReader<T>& p) const {
+    const T D = p("outer_diameter");
+    return Allowable<T>{"torque capacity",
+                        TubeTorqueCapacity(p("allowable_shear_stress"), D, TubePolarMoment(D, p("wall_thickness")))};
+  }
+  HIGHLIFT_PEAK_ALLOWABLE_LAW
+  std::optional<Allowable<Interval>> SteadyAllowable(const ParameterReader<Interval>& p) const override {
+    auto a = PeakLaw(p);
+    a->name = "torque capacity at the allowable shear stress";
+    return a;
+  }
+
   void Expand(const Component& c, ExpansionContext& x) const override {
     const ShaftValues data = ShaftData(c, x.beta());
     const int n = x.shaft_elements();

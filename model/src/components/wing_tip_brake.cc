@@ -9,6 +9,20 @@ class WingTipBrakeModel final : public NamedModel {
  public:
   WingTipBrakeModel() : NamedModel("wing_tip_brake") {}
 
+  /// Against the peak loads: the torque it holds once engaged.
+  template <class T>
+  std::optional<Allowable<T>> PeakLaw(const ParameterReader<T>& p) const {
+    if (!p.Has("static_capacity")) return std::nullopt;
+    return Allowable<T>{"static capacity", p("static_capacity")};
+  }
+  HIGHLIFT_PEAK_ALLOWABLE_LAW
+
+  /// Its static capacity holds the wing against its airloads back-driving the shaft.
+  std::vector<SettingRule> SettingRules() const override {
+    return {{"static_capacity", ">= 1.5 x wing back-drive torque (domain.md s6)", SettingRule::Against::kWingBackdrive,
+             1.5, 1.5, kInfinity}};
+  }
+
   void Expand(const Component& c, ExpansionContext& x) const override {
     x.Add("WingTipBrake", c.id,
           {{"tauB_max", Require(c, "max_dynamic_torque")},

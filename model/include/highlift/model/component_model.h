@@ -102,6 +102,34 @@ struct ChainMember {
   bool torque_column = false;  ///< reports "<id>.tau", the chain spring's torque (torque shafts)
 };
 
+/// An allowable torque of a component for the margins of the sizing and the peak loads.
+template <class T>
+struct Allowable {
+  std::string name;  ///< what it is, e.g. "torque capacity at the allowable shear stress"
+  T value = T(0.0);  ///< N*m
+  /// Steady state: false, set against the torque at its input flange at its own speed; true,
+  /// against its output load of the load cases (an actuator's output torque rating).
+  bool against_output_load = false;
+};
+
+/// A sizing rule of a setting (a limiter's lock-out torque, a brake's capacity): the recommended
+/// value is `factor` x the torque it is set against, acceptable within [factor_min, factor_max].
+struct SettingRule {
+  /// The torque a setting is set against, at the component's own speed.
+  enum class Against {
+    kOperating,         ///< the largest operating torque over every load case
+    kOperatingExtend,   ///< ... over the extend load cases (every case when there is none)
+    kOperatingRetract,  ///< ... over the retract load cases (every case when there is none)
+    kWingBackdrive,     ///< the wing's back-drive torque: its airloads through the aiding efficiencies
+  };
+  std::string parameter;  ///< the setting, e.g. "lockout_torque_extend"
+  std::string rule;       ///< the rule in words with its source
+  Against against = Against::kOperating;
+  double factor = 1.0;
+  double factor_min = 1.0;
+  double factor_max = 1.0;
+};
+
 /// The services of the translation to a component's expansion (implemented by the builder of
 /// model/src/drive_network.cc).
 class ExpansionContext {
@@ -165,6 +193,18 @@ class ComponentModel {
     return in.through;
   }
   virtual Sym InputTorque(const ParameterReader<Sym>&, const SteadyFlow<Sym>& in) const { return in.through; }
+  /// Its allowable torque in the steady-state margins (`highlift size`); none by default.
+  virtual std::optional<Allowable<Interval>> SteadyAllowable(const ParameterReader<Interval>&) const {
+    return std::nullopt;
+  }
+  /// Its allowable torque at its input flange against the peak loads (`highlift peak`): nominal
+  /// and over the domains; none by default.
+  virtual std::optional<Allowable<double>> PeakAllowable(const ParameterReader<double>&) const { return std::nullopt; }
+  virtual std::optional<Allowable<Interval>> PeakAllowable(const ParameterReader<Interval>&) const {
+    return std::nullopt;
+  }
+  /// The sizing rules of its settings (`highlift size` recommends them); none by default.
+  virtual std::vector<SettingRule> SettingRules() const { return {}; }
   /// Adds the component's elements (full resolution; at reduced resolution the chain members
   /// are lumped by the translation from ChainMember). Throws InputError naming the component and
   /// parameter for a value it cannot translate.
@@ -197,6 +237,16 @@ class ComponentModel {
   }                                                                                                       \
   Sym InputTorque(const ParameterReader<Sym>& p, const SteadyFlow<Sym>& in) const override {              \
     return SteadyLaw(p, in);                                                                              \
+  }
+
+/// In a ComponentModel: overrides both PeakAllowable with the member template
+/// `template <class T> std::optional<Allowable<T>> PeakLaw(const ParameterReader<T>&) const`.
+#define HIGHLIFT_PEAK_ALLOWABLE_LAW                                                                     \
+  std::optional<Allowable<double>> PeakAllowable(const ParameterReader<double>& p) const override {     \
+    return PeakLaw(p);                                                                                  \
+  }                                                                                                     \
+  std::optional<Allowable<Interval>> PeakAllowable(const ParameterReader<Interval>& p) const override { \
+    return PeakLaw(p);                                                                                  \
   }
 
 /// The model of component type `type`, or nullptr.
