@@ -144,6 +144,14 @@ def titanium(drag_per_metre, wing_length, component_drag, tag, why):
     return out
 
 
+def sci(x):
+    """A small inertia as domain.md writes it: 6.25e-4, 1e-3, 0.0388."""
+    if abs(x) >= 1e-2:
+        return f"{x:.3g}"
+    mantissa, exponent = f"{x:.3e}".split("e")
+    return f"{mantissa.rstrip('0').rstrip('.')}e{int(exponent)}"
+
+
 def station_inertias(tag, ratio, station_input, flap, limiter, actuator):
     """Inertias of a station (branch gearbox + limiter + actuator) from domain.md's values at the
     shaft: `station_input` (gearbox, limiter and actuator input together) and `flap` (the surface
@@ -154,16 +162,16 @@ def station_inertias(tag, ratio, station_input, flap, limiter, actuator):
     r2 = ratio * ratio
     gearbox_J = station_input - (limiter + actuator) / r2
     assert gearbox_J > 0, (station_input, limiter, actuator, ratio)
-    split = (f"station input {fmt(station_input, 3)} kg m2 at the shaft = gearbox "
-             f"{fmt(gearbox_J, 3)} + (limiter {fmt(limiter, 3)} + actuator input {fmt(actuator, 3)}) "
-             f"/ {fmt(ratio)}^2")
+    split = (f"station input {sci(station_input)} kg m2 at the shaft = gearbox "
+             f"{sci(gearbox_J)} + (limiter {sci(limiter)} + actuator input {sci(actuator)}) "
+             f"/ {fmt(ratio, 3):g}^2")
     return {
-        "gearbox": q(f"{fmt(gearbox_J, 3)} kg*m^2", f"{tag}: shaft side; {split}"),
-        "limiter": q(f"{fmt(limiter, 3)} kg*m^2", f"{tag}: actuator input side; {split}"),
+        "gearbox": q(f"{sci(gearbox_J)} kg*m^2", f"{tag}: shaft side; {split}"),
+        "limiter": q(f"{sci(limiter)} kg*m^2", f"{tag}: actuator input side; {split}"),
         "actuator": actuator,
-        "flap": q(f"{fmt(flap * r2, 4)} kg*m^2",
-                  f"{tag}: flap {fmt(flap, 3)} kg m2 at the shaft = {fmt(flap * r2, 4)} at the actuator "
-                  f"input (x {fmt(ratio)}^2 behind the {fmt(ratio)}:1 station gearbox)"),
+        "flap": q(f"{sci(flap * r2)} kg*m^2",
+                  f"{tag}: flap {sci(flap)} kg m2 at the shaft = {sci(flap * r2)} at the actuator "
+                  f"input (x {fmt(ratio, 3):g}^2 behind the {fmt(ratio, 3):g}:1 station gearbox)"),
     }
 
 

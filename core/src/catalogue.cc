@@ -727,7 +727,8 @@ ComponentTypeSpec BallscrewActuator() {
   ps.push_back(Param("output_force_rating", "F_max", Force(), "kN", "rated output force")
                    .Valid(0, 1e4)
                    .Optional()
-                   .Source("none"));
+                   .Source("none")
+                   .Side(ReferenceSide::kActuatorOutput));
   ps.push_back(Param("stroke", "s", Length(), "mm", "stroke for full travel")
                    .Valid(0, 1e5)
                    .Optional()
