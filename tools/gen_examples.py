@@ -183,6 +183,17 @@ def lossless(tag, what):
              "and the bearings-and-joints drag per metre of domain.md s3), so not twice here")
 
 
+def shaft_gearbox(tag, what, ratio, inertia, **more):
+    """A root or station gearbox on the shaft: lossless (see lossless), its inertia and its 0.1 N m
+    no-load drag on the shaft side."""
+    out = {"ratio": ratio}
+    out.update(more)
+    out["eta_mesh"] = lossless(tag, what)
+    out["inertia"] = inertia
+    out["coulomb_torque"] = q("0.1 N*m", f"{tag}: shaft side, part of the drag budget of the wing")
+    return out
+
+
 def with_x(parameters, x, note):
     out = dict(parameters)
     out["span_position"] = q(f"{fmt(x)} m", note)
@@ -527,18 +538,12 @@ def a380_flaps():
             "coulomb_torque": q("0.1 N*m", "domain.md s6 (E): steady bearing drag 0.05-0.2 N m",
                                 "0.05 N*m", "0.2 N*m"),
         },
-        "rgb": {
-            "ratio": q(1, f"{E}: kink gearbox 1:1"),
-            "eta_mesh": lossless(E, "kink gearbox"),
-            "inertia": q("2e-3 kg*m^2", f"{E}: shaft side; RGB node 4.7e-3 = gearbox 2e-3 + shaft halves"),
-            "coulomb_torque": q("0.1 N*m", f"{E}: shaft side, part of the drag budget of the wing"),
-        },
-        "station_gearbox": {
-            "ratio": q(station_gearbox_ratio, f"{E}: station ratio 400:1 = station gearbox 2:1 x GRA 200:1"),
-            "eta_mesh": lossless(E, "station gearbox"),
-            "inertia": station["gearbox"],
-            "coulomb_torque": q("0.1 N*m", f"{E}: shaft side, part of the drag budget of the wing"),
-        },
+        "rgb": shaft_gearbox(E, "kink gearbox", q(1, f"{E}: kink gearbox 1:1"),
+                             q("2e-3 kg*m^2", f"{E}: shaft side; RGB node 4.7e-3 = gearbox 2e-3 + shaft halves")),
+        "station_gearbox": shaft_gearbox(
+            E, "station gearbox",
+            q(station_gearbox_ratio, f"{E}: station ratio 400:1 = station gearbox 2:1 x GRA 200:1"),
+            station["gearbox"]),
         # domain.md s3 sets the limiter at 1.5 x 58.8 = 90 N m on the shaft side; it sits behind
         # the 2:1 station gearbox, where the same setting reads 2 x 90 = 180 N m.
         "limiter": dict(station_limiter(180, E, "1.5 x 58.8 N m station input torque (90 N m at the "
@@ -737,18 +742,11 @@ def a320_flaps():
             "coulomb_torque": q("0.05 N*m", "domain.md s6 (E): steady bearing drag 0.05-0.2 N m, "
                                 "small end for the smaller shaft", "0.05 N*m", "0.1 N*m"),
         },
-        "rgb": {
-            "ratio": q(1, f"{E}: root gearbox 1:1"),
-            "eta_mesh": lossless(E, "root gearbox"),
-            "inertia": q("1e-3 kg*m^2", f"{E}: shaft side; RGB node 1.4e-3 = gearbox 1e-3 + shaft halves"),
-            "coulomb_torque": q("0.1 N*m", f"{E}: shaft side, part of the drag budget of the wing"),
-        },
-        "station_gearbox": {
-            "ratio": q(ratio, f"{E}: station ratio 300:1 = offset gearbox 1.5:1 x GRA 200:1"),
-            "eta_mesh": lossless(E, "station gearbox"),
-            "inertia": station["gearbox"],
-            "coulomb_torque": q("0.1 N*m", f"{E}: shaft side, part of the drag budget of the wing"),
-        },
+        "rgb": shaft_gearbox(E, "root gearbox", q(1, f"{E}: root gearbox 1:1"),
+                             q("1e-3 kg*m^2", f"{E}: shaft side; RGB node 1.4e-3 = gearbox 1e-3 + shaft halves")),
+        "station_gearbox": shaft_gearbox(
+            E, "station gearbox", q(ratio, f"{E}: station ratio 300:1 = offset gearbox 1.5:1 x GRA 200:1"),
+            station["gearbox"]),
         # domain.md s4: "station limiter about 35 N m (input side)", i.e. 1.5 x 23.5 N m at the
         # station input on the shaft; behind the 1.5:1 offset gearbox it reads 1.5 x 35 = 52.5 N m.
         "limiter": dict(station_limiter(52.5, E, "about 35 N m at the station input (shaft side, 1.5 x "
@@ -857,20 +855,15 @@ def a320_slats():
                          "1e-4 kg*m^2", "3e-4 kg*m^2"),
         },
         "bearing": {},
-        "rgb": {
-            "ratio": q(1, "domain.md s1 (P): 19 deg bevel gearbox; 1:1 (E)"),
-            "shaft_angle": q("19 deg", "domain.md s1 (P): A320 AMM 27-84-00"),
-            "eta_mesh": lossless(E, "root bevel gearbox"),
-            "inertia": q("1e-3 kg*m^2", f"{E}: shaft side, like the single-aisle flap root gearbox (s4)"),
-            "coulomb_torque": q("0.1 N*m", f"{E}: shaft side, part of the drag budget of the wing"),
-        },
-        "station_gearbox": {
-            "ratio": q(1, "domain.md s1 (P): 63.5 deg gearbox to each actuator (AMM 27-84-00); 1:1 (E: s5 gives "
-                       "15.7 N m at the shaft for 2 kN m at the actuator = 1:1 x 150:1 / 0.85)"),
-            "eta_mesh": lossless(E, "63.5 deg station gearbox"),
-            "inertia": q("3e-4 kg*m^2", f"{E}: shaft side, like a single-aisle flap station gearbox (s4)"),
-            "coulomb_torque": q("0.1 N*m", f"{E}: shaft side, part of the drag budget of the wing"),
-        },
+        "rgb": shaft_gearbox(
+            E, "root bevel gearbox", q(1, "domain.md s1 (P): 19 deg bevel gearbox; 1:1 (E)"),
+            q("1e-3 kg*m^2", f"{E}: shaft side, like the single-aisle flap root gearbox (s4)"),
+            shaft_angle=q("19 deg", "domain.md s1 (P): A320 AMM 27-84-00")),
+        "station_gearbox": shaft_gearbox(
+            E, "63.5 deg station gearbox",
+            q(1, "domain.md s1 (P): 63.5 deg gearbox to each actuator (AMM 27-84-00); 1:1 (E: s5 gives "
+              "15.7 N m at the shaft for 2 kN m at the actuator = 1:1 x 150:1 / 0.85)"),
+            q("3e-4 kg*m^2", f"{E}: shaft side, like a single-aisle flap station gearbox (s4)")),
         "limiter": dict(station_limiter(23.5, E, "1.5 x 15.7 N m actuator input torque (1:1 with the "
                                         "shaft)"),
                         inertia=q("1e-4 kg*m^2", f"{E}: actuator input side, small limiter")),
