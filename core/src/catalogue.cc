@@ -621,11 +621,11 @@ ComponentTypeSpec StationTorqueLimiter() {
       "Bi-directional station torque limiter before an actuator (ball ramp, friction discs, "
       "lock-out indicator), asymmetric: lower trip torque in retract. Paper fig. 4 and 5.";
   t.ports = {Flange("input", "flange towards the transmission"), Flange("output", "flange towards the actuator")};
-  AddTorqueLimiter(t.parameters, 180, 0.7, 8e4,
+  AddTorqueLimiter(t.parameters, 180, 0.7, 2e4,
                    "domain.md s3 (E): 1.5 x 58.8 N m station input torque = 90 N m at the shaft, x 2 behind the "
                    "default 2:1 station gearbox",
-                   "estimate: about 10 x the adjacent shaft stiffness (domain.md s3 c = 1.4-3.3 kN*m/rad, about "
-                   "2e4 at the shaft), x 2^2 behind the default 2:1 station gearbox",
+                   "estimate: 2e4 at the actuator input = 5e3 at the shaft behind the default 2:1 station gearbox, "
+                   "2-3 x the adjacent shaft segments (domain.md s3 c = 1.4-3.3 kN*m/rad)",
                    ReferenceSide::kActuatorInput);
   t.parameters.push_back(Inertia(5e-4, 2e-4, 1e-3, "inertia of the limiter", "estimate: half a station gearbox",
                                  ReferenceSide::kActuatorInput));
