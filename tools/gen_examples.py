@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Generates the bundled example projects examples/*.json from the estimates of
-../shared/reference/domain.md (sections 3, 4 and 5).
+../shared/reference/domain.md (sections 3, 4 and 5), the infeasible variant included.
 
 The examples are committed; this script documents how they were built and regenerates them:
 
@@ -121,9 +121,77 @@ TITANIUM = {
     "density": q("4420 kg/m^3", "Ti-6Al-4V, domain.md s1 (P)"),
     "allowable_shear_stress": q("550 MPa", "Ti-6Al-4V ultimate shear, domain.md s6 (E)", "500 MPa",
                                 "600 MPa"),
-    "drag_per_length": q("0.2 N*m/m", "domain.md s3 (E): bearings and joints 0.2-0.3 N m per metre, "
-                         "less the steady bearings given as components", "0.1 N*m/m", "0.5 N*m/m"),
 }
+
+
+def titanium(drag_per_metre, wing_length, component_drag, tag, why):
+    """The tube material with the drag of the bearings and joints along the shaft.
+
+    domain.md s3 books every no-load loss along a wing as one drag per metre of shaft (0.2-0.3 N m
+    per metre, domain [0.1, 0.5]); the examples give the steady bearings, the gearboxes and the
+    actuators their own Stribeck drag, so the tubes carry the rest: the wing's total stays
+    `drag_per_metre` x `wing_length` (N m, referred to the shaft). `component_drag` is the sum of
+    the components' Coulomb torques referred to the shaft."""
+    own = component_drag / wing_length
+    out = dict(TITANIUM)
+    out["drag_per_length"] = q(
+        f"{fmt(drag_per_metre - own, 3)} N*m/m",
+        f"{tag}: {why}: {fmt(drag_per_metre)} N m per metre over the {fmt(wing_length)} m wing = "
+        f"{fmt(drag_per_metre * wing_length, 3)} N m at the shaft, less the {fmt(component_drag, 3)} N m "
+        "of the bearings, gearboxes and actuators given as components; domain [0.1, 0.5] N m/m in all "
+        "(the shaft's share at least 0)",
+        f"{fmt(max(0.0, 0.1 - own), 3)} N*m/m", f"{fmt(0.5 - own, 3)} N*m/m")
+    return out
+
+
+def sci(x):
+    """A small inertia as domain.md writes it: 6.25e-4, 1e-3, 0.0388."""
+    if abs(x) >= 1e-2:
+        return f"{x:.3g}"
+    mantissa, exponent = f"{x:.3e}".split("e")
+    return f"{mantissa.rstrip('0').rstrip('.')}e{int(exponent)}"
+
+
+def station_inertias(tag, ratio, station_input, flap, limiter, actuator):
+    """Inertias of a station (branch gearbox + limiter + actuator) from domain.md's values at the
+    shaft: `station_input` (gearbox, limiter and actuator input together) and `flap` (the surface
+    reflected to the shaft), both kg m2 at shaft speed. The gearbox's inertia counts at its input
+    (the shaft); the limiter's and the actuator's behind the station gearbox of `ratio`, where an
+    inertia reads ratio^2 times its shaft-side value. `limiter` and `actuator` are given on their
+    own side (actuator input); the gearbox takes the rest of `station_input`."""
+    r2 = ratio * ratio
+    gearbox_J = station_input - (limiter + actuator) / r2
+    assert gearbox_J > 0, (station_input, limiter, actuator, ratio)
+    split = (f"station input {sci(station_input)} kg m2 at the shaft = gearbox "
+             f"{sci(gearbox_J)} + (limiter {sci(limiter)} + actuator input {sci(actuator)}) "
+             f"/ {fmt(ratio, 3):g}^2")
+    return {
+        "gearbox": q(f"{sci(gearbox_J)} kg*m^2", f"{tag}: shaft side; {split}"),
+        "limiter": q(f"{sci(limiter)} kg*m^2", f"{tag}: actuator input side; {split}"),
+        "actuator": actuator,
+        "flap": q(f"{sci(flap * r2)} kg*m^2",
+                  f"{tag}: flap {sci(flap)} kg m2 at the shaft = {sci(flap * r2)} at the actuator "
+                  f"input (x {fmt(ratio, 3):g}^2 behind the {fmt(ratio, 3):g}:1 station gearbox)"),
+    }
+
+
+# domain.md s3: "efficiencies GRA+station eta_opposing 0.85, eta_aiding 0.70": the station gearbox's
+# losses are inside the actuator's efficiency, and the wing's root torque (360 N m = 6 x 58.8 N m +
+# drag) carries no further mesh or joint loss: the other no-load losses are the drag per metre.
+def lossless(tag, what):
+    return q(1, f"{tag}: {what}; its losses are counted elsewhere (GRA + station efficiency 0.85/0.70 "
+             "and the bearings-and-joints drag per metre of domain.md s3), so not twice here")
+
+
+def shaft_gearbox(tag, what, ratio, inertia, **more):
+    """A root or station gearbox on the shaft: lossless (see lossless), its inertia and its 0.1 N m
+    no-load drag on the shaft side."""
+    out = {"ratio": ratio}
+    out.update(more)
+    out["eta_mesh"] = lossless(tag, what)
+    out["inertia"] = inertia
+    out["coulomb_torque"] = q("0.1 N*m", f"{tag}: shaft side, part of the drag budget of the wing")
+    return out
 
 
 def with_x(parameters, x, note):
@@ -311,10 +379,12 @@ def requirements(wings, stations, d):
     reqs = []
     for side in ("left", "right"):
         w = wings[side]
+        wtb_torque = max(n["root"], n["backdrive"])
         reqs.append(requirement(
-            f"wtb_capacity_{side}", f"{w['wtb']}.static_capacity >= 1.5 * {n['root']} N*m",
-            f"WTB static capacity at least 1.5 x the wing back-drive torque ({n['root']} N*m, "
-            f"{tag}); domain.md s6"))
+            f"wtb_capacity_{side}", f"{w['wtb']}.static_capacity >= 1.5 * {wtb_torque} N*m",
+            f"WTB static capacity at least 1.5 x the larger of the wing's opposing operating torque "
+            f"({n['root']} N*m) and its back-drive torque (about {n['backdrive']} N*m), {tag}; "
+            "domain.md s6"))
     for side in ("left", "right"):
         w = wings[side]
         reqs.append(requirement(
@@ -396,6 +466,21 @@ def pm10(value, unit, note):
              f"{fmt(1.1 * value)} {unit}")
 
 
+def station_limiter(extend, tag, derivation):
+    """The trip, end-stop and brake torques of a station limiter on its own side (the actuator
+    input): lock-out `extend` N m (+-10 %), retract 0.7 x extend (domain.md s3, asymmetric limiter
+    s1 P), end stop 1.25 x and friction brake 2 x the lock-out torque (the catalogue's rules)."""
+    return {
+        "lockout_torque_extend": pm10(extend, "N*m", f"{tag}: actuator input side, {derivation}"),
+        "lockout_torque_retract": pm10(0.7 * extend, "N*m", "domain.md s3 (E) rule: 0.7 x extend "
+                                       "(asymmetric limiter, domain.md s1 P)"),
+        "end_stop_torque": pm10(1.25 * extend, "N*m", f"{tag}: 1.25 x the {fmt(extend)} N m lock-out "
+                                "torque (catalogue rule for the end stop of figure 4 in the paper)"),
+        "max_brake_torque": q(f"{fmt(2 * extend)} N*m", f"{tag}: 2 x the {fmt(extend)} N m lock-out "
+                              "torque (catalogue rule)"),
+    }
+
+
 def sensors(tag, role):
     return {
         "role": role,
@@ -422,6 +507,12 @@ def a380_flaps():
     station_gearbox_ratio = 2.0
     gra_ratio = 200.0
     inboard, outboard = (50, 2.0), (45, 1.8)
+    # Station node of domain.md s3 at shaft speed: station input 1e-3 + reflected flap 9.7e-3 (+ the
+    # shaft halves, which the tubes carry). The GRA input J about 1e-3 of s6 is on the actuator side.
+    station = station_inertias(E, station_gearbox_ratio, 1e-3, 9.7e-3, 5e-4, 1e-3)
+    # No-load drags referred to the shaft, per wing: 5 steady bearings x 0.1, 6 station gearboxes
+    # x 0.1, 6 GRAs x 0.2 / 2, the root gearbox 0.1.
+    component_drag = 5 * 0.1 + 6 * 0.1 + 6 * 0.2 / station_gearbox_ratio + 0.1
     wing = {
         "tag": E,
         "root_x": 4.0,
@@ -430,14 +521,16 @@ def a380_flaps():
         "tube": lambda x0, x1: inboard if x1 <= 14.0 + 1e-9 else outboard,
         "split_length": 3.5,
         "joint_at_root": True,
-        "material": TITANIUM,
+        "material": titanium(0.25, 25.5, component_drag, E,
+                             "bearings and joints 0.2-0.3 N m per metre, root torque about 360 N m = 6 x 58.8 "
+                             "N m + drag"),
         "rgb_name": "root (kink) gearbox",
         "stl": {
-            "lockout_torque_extend": pm10(470, "N*m", f"{E}: 1.3 x 360 N m root torque"),
+            "lockout_torque_extend": pm10(470, "N*m", f"{E}: shaft side, 1.3 x 360 N m root torque"),
             "lockout_torque_retract": pm10(470, "N*m", f"{E}: symmetric STL"),
         },
         "joint": {
-            "efficiency": q(0.985, "domain.md s6 (E): 0.98-0.99", 0.98, 0.99),
+            "efficiency": lossless(E, "universal joint at the wing root"),
             "inertia": q("2e-4 kg*m^2", "domain.md s6 (E): 1e-4 to 3e-4 kg m2", "1e-4 kg*m^2",
                          "3e-4 kg*m^2"),
         },
@@ -445,37 +538,27 @@ def a380_flaps():
             "coulomb_torque": q("0.1 N*m", "domain.md s6 (E): steady bearing drag 0.05-0.2 N m",
                                 "0.05 N*m", "0.2 N*m"),
         },
-        "rgb": {
-            "ratio": q(1, f"{E}: kink gearbox 1:1"),
-            "eta_mesh": q(0.97, "domain.md s6 (E): 0.96-0.98 per mesh", 0.96, 0.98),
-            "inertia": q("2e-3 kg*m^2", f"{E}: RGB node 4.7e-3 = gearbox 2e-3 + shaft halves"),
-        },
-        "station_gearbox": {
-            "ratio": q(station_gearbox_ratio, f"{E}: station ratio 400:1 = station gearbox 2:1 x GRA 200:1"),
-            "eta_mesh": q(0.97, "domain.md s6 (E): 0.96-0.98 per mesh", 0.96, 0.98),
-            "inertia": q("1e-3 kg*m^2", f"{E}: station input 1e-3 kg m2"),
-        },
-        "limiter": {
-            # domain.md s3 sets the limiter at 1.5 x 58.8 = 90 N m on the shaft side; it sits behind
-            # the 2:1 station gearbox, where the same setting reads 2 x 90 = 180 N m.
-            "lockout_torque_extend": pm10(180, "N*m", f"{E}: 1.5 x 58.8 N m station input torque "
-                                          "(90 N m at the shaft), x 2 behind the 2:1 station gearbox"),
-            "lockout_torque_retract": pm10(126, "N*m", f"{E}: 0.7 x extend (asymmetric limiter, "
-                                           "domain.md s1 P)"),
-            "end_stop_torque": pm10(225, "N*m", f"{E}: 1.25 x the 180 N m lock-out torque (catalogue "
-                                    "rule for the end stop of figure 4 in the paper)"),
-        },
+        "rgb": shaft_gearbox(E, "kink gearbox", q(1, f"{E}: kink gearbox 1:1"),
+                             q("2e-3 kg*m^2", f"{E}: shaft side; RGB node 4.7e-3 = gearbox 2e-3 + shaft halves")),
+        "station_gearbox": shaft_gearbox(
+            E, "station gearbox",
+            q(station_gearbox_ratio, f"{E}: station ratio 400:1 = station gearbox 2:1 x GRA 200:1"),
+            station["gearbox"]),
+        # domain.md s3 sets the limiter at 1.5 x 58.8 = 90 N m on the shaft side; it sits behind
+        # the 2:1 station gearbox, where the same setting reads 2 x 90 = 180 N m.
+        "limiter": dict(station_limiter(180, E, "1.5 x 58.8 N m station input torque (90 N m at the "
+                                        "shaft), x 2 behind the 2:1 station gearbox"),
+                        inertia=station["limiter"]),
         "gra": {
             "ratio": q(gra_ratio, f"{E}: GRA 200:1 (s6: 100-300:1)"),
             "eta_opposing": q(0.85, f"{E}: GRA + station 0.85, domain [0.80, 0.90]", 0.80, 0.90),
             "eta_aiding": q(0.70, f"{E}: GRA + station 0.70, domain [0.60, 0.80]", 0.60, 0.80),
-            "input_inertia": q("1e-3 kg*m^2", "domain.md s6 (E): GRA input J about 1e-3 kg m2",
-                               "5e-4 kg*m^2", "2e-3 kg*m^2"),
-            "load_inertia": q(f"{fmt(9.7e-3 * station_gearbox_ratio ** 2)} kg*m^2",
-                              f"{E}: flap 9.7e-3 kg m2 reflected to the shaft = "
-                              f"{fmt(9.7e-3 * station_gearbox_ratio ** 2)} at the GRA input "
-                              "(x 2^2, behind the 2:1 station gearbox)"),
-            "output_torque_rating": q("20 kN*m", f"{E}: station output torque about 20 kN m"),
+            "input_inertia": q("1e-3 kg*m^2", "domain.md s6 (E): actuator input side, GRA input J about "
+                               "1e-3 kg m2", "5e-4 kg*m^2", "2e-3 kg*m^2"),
+            "load_inertia": station["flap"],
+            "coulomb_torque": q("0.2 N*m", f"{E}: actuator input side, part of the drag budget of the wing"),
+            "output_torque_rating": q("20 kN*m", f"{E}: actuator output side, station output torque about "
+                                      "20 kN m"),
             "travel_angle": q("2.2 rad", f"{E}: 2.5 m stroke over 2.2 rad GRA output rotation"),
         },
         "wtb": {
@@ -534,9 +617,47 @@ def a380_flaps():
         "revolutions": 140,
         "extend_load": [[0, 5], [0.25, 8], [0.5, 12], [0.75, 16], [1, 20]],
         "wing": wing,
-        "numbers": {"root": 360, "station": 58.8, "time": 40, "limiter_ratio": 2},
+        "numbers": {"root": 360, "backdrive": 210, "station": 58.8, "time": 40, "limiter_ratio": 2},
     }
     return build_project(d)
+
+
+# ----------------------------------------------------------------------------------------------
+# The infeasible variant of the A380-class flaps: a design question without a solution
+
+INFEASIBLE_FITTING = 750  # N*m, the station-1 shaft fittings of the requirement jam_l1_fitting
+
+
+def a380_flaps_infeasible():
+    project = a380_flaps()
+    # The numbers of the description are what `highlift check` derives (tests/icsp pin them).
+    project["name"] = "A380-class flap transmission, infeasible variant"
+    project["description"] = (
+        "The A380-class flap transmission of a380_class_flaps.json with two requirements that cannot "
+        "be met together: full extension in 32 s, with the speed ramps of the load case, needs a PDU "
+        "output speed of at least 30.3 rad/s, while a jam at station 1 must load the station-1 shaft "
+        f"with at most {INFEASIBLE_FITTING} N*m, which (equation (1), tau = w sqrt(c* J*) = w w1 J*, "
+        "plus at least 423 N*m of static drive torque up to the system torque limiter) caps the PDU "
+        "speed near 25.4 rad/s. `highlift check` exits 1 and names both requirements. The PDU speed is left "
+        "open as a design domain of 20 to 32 rad/s. Generated by tools/gen_examples.py.")
+    project["settings"] = dict(project["settings"], relative_tolerance=1e-6)
+    pdu = next(c for c in project["components"] if c["id"] == "pdu")
+    pdu["parameters"]["max_output_speed"] = q(
+        "25.3 rad/s", "design domain for the trade-off: domain.md s3 (E) gives 25.3 rad/s (242 rpm)",
+        "20 rad/s", "32 rad/s")
+    for scenario in project["scenarios"]:
+        if scenario["name"] == "extension":
+            scenario.pop("output_interval", None)
+    for r in project["requirements"]:
+        if r["id"] == "extension_time":
+            r["expression"] = "travel_time.extension <= 32 s"
+            r["description"] = ("full extension within 32 s, speed ramps of the load case included (a "
+                                "faster variant than the 40 s of the base project)")
+    project["requirements"].append(requirement(
+        "jam_l1_fitting", f"peak.jam_l1.shaft_l1 <= {INFEASIBLE_FITTING} N*m",
+        f"the station-1 shaft fittings take at most {INFEASIBLE_FITTING} N*m in a jam at station 1 "
+        "(dynamic peak of equation (1) plus the static drive torque up to the system torque limiter)"))
+    return project
 
 
 # ----------------------------------------------------------------------------------------------
@@ -586,6 +707,15 @@ def hydraulic_pdu_flaps():
 def a320_flaps():
     E = "domain.md s4 (E)"
     tube = (38, 1.5)
+    ratio = 1.5
+    # Station nodes of domain.md s4 at shaft speed: 2.0-2.3e-3 kg m2 each, of which the shaft halves
+    # (38 x 1.5 mm tube, 2.54e-4 kg m2 per metre) are 5.1-8.9e-4: the station's own 1.45e-3, taken
+    # here as station input 6.1e-4 (gearbox 3e-4 + limiter and actuator behind 1.5:1) + flap 8.4e-4.
+    station = station_inertias(E, ratio, 6.1e-4, 8.4e-4, 2e-4, 5e-4)
+    flap = dict(station["flap"], min="1.2e-3 kg*m^2", max="2.6e-3 kg*m^2")
+    # No-load drags referred to the shaft, per wing: 2 steady bearings x 0.05, 4 station gearboxes
+    # x 0.1, 4 GRAs x 0.2 / 1.5, the root gearbox 0.1.
+    component_drag = 2 * 0.05 + 4 * 0.1 + 4 * 0.2 / ratio + 0.1
     wing = {
         "tag": E,
         "root_x": 2.0,
@@ -594,15 +724,17 @@ def a320_flaps():
         "tube": lambda x0, x1: tube,
         "split_length": 3.5,
         "joint_at_root": True,
-        "material": TITANIUM,
+        "material": titanium(0.2, 14.0, component_drag, E,
+                             "root about 97 N m = 4 x 23.5 N m + drag (0.2 N m per metre, domain.md s3 "
+                             "0.2-0.3)"),
         "rgb_name": "root gearbox",
         "stl": {
-            "lockout_torque_extend": pm10(125, "N*m", f"{E}: STL about 125 N m (1.3 x 97 N m)"),
+            "lockout_torque_extend": pm10(125, "N*m", f"{E}: shaft side, STL about 125 N m (1.3 x 97 N m)"),
             "lockout_torque_retract": pm10(125, "N*m", f"{E}: symmetric STL"),
             "inertia": q("5e-4 kg*m^2", f"{E}: scaled from the A380-class estimate"),
         },
         "joint": {
-            "efficiency": q(0.985, "domain.md s6 (E): 0.98-0.99", 0.98, 0.99),
+            "efficiency": lossless(E, "universal joint at the wing root"),
             "inertia": q("1e-4 kg*m^2", "domain.md s6 (E): 1e-4 to 3e-4 kg m2, small end",
                          "1e-4 kg*m^2", "3e-4 kg*m^2"),
         },
@@ -610,38 +742,31 @@ def a320_flaps():
             "coulomb_torque": q("0.05 N*m", "domain.md s6 (E): steady bearing drag 0.05-0.2 N m, "
                                 "small end for the smaller shaft", "0.05 N*m", "0.1 N*m"),
         },
-        "rgb": {
-            "ratio": q(1, f"{E}: root gearbox 1:1"),
-            "eta_mesh": q(0.97, "domain.md s6 (E): 0.96-0.98 per mesh", 0.96, 0.98),
-            "inertia": q("1e-3 kg*m^2", f"{E}: RGB node 1.4e-3 = gearbox 1e-3 + shaft halves"),
-        },
-        "station_gearbox": {
-            "ratio": q(1.5, f"{E}: station ratio 300:1 = offset gearbox 1.5:1 x GRA 200:1"),
-            "eta_mesh": q(0.97, "domain.md s6 (E): 0.96-0.98 per mesh", 0.96, 0.98),
-            "inertia": q("3e-4 kg*m^2", f"{E}: station node 2.0-2.3e-3 kg m2 in all"),
-        },
-        "limiter": {
-            "lockout_torque_extend": pm10(35, "N*m", f"{E}: station limiter about 35 N m, input "
-                                      "side (1.5 x 23.5 N m)"),
-            "lockout_torque_retract": pm10(24.5, "N*m", "domain.md s3 (E) rule: 0.7 x extend "
-                                           "(asymmetric limiter, domain.md s1 P)"),
-            "inertia": q("2e-4 kg*m^2", f"{E}: station node 2.0-2.3e-3 kg m2 in all"),
-        },
+        "rgb": shaft_gearbox(E, "root gearbox", q(1, f"{E}: root gearbox 1:1"),
+                             q("1e-3 kg*m^2", f"{E}: shaft side; RGB node 1.4e-3 = gearbox 1e-3 + shaft halves")),
+        "station_gearbox": shaft_gearbox(
+            E, "station gearbox", q(ratio, f"{E}: station ratio 300:1 = offset gearbox 1.5:1 x GRA 200:1"),
+            station["gearbox"]),
+        # domain.md s4: "station limiter about 35 N m (input side)", i.e. 1.5 x 23.5 N m at the
+        # station input on the shaft; behind the 1.5:1 offset gearbox it reads 1.5 x 35 = 52.5 N m.
+        "limiter": dict(station_limiter(52.5, E, "about 35 N m at the station input (shaft side, 1.5 x "
+                                        "23.5 N m), x 1.5 behind the 1.5:1 offset gearbox"),
+                        inertia=station["limiter"]),
         "gra": {
             "ratio": q(200, f"{E}: station ratio 300:1 = 1.5:1 x GRA 200:1"),
             "eta_opposing": q(0.85, "domain.md s3/s6 (E): 0.85, domain [0.80, 0.90]", 0.80, 0.90),
             "eta_aiding": q(0.70, "domain.md s3/s6 (E): 0.70, domain [0.60, 0.80]", 0.60, 0.80),
-            "input_inertia": q("5e-4 kg*m^2", f"{E}: station node 2.0-2.3e-3 kg m2 in all",
-                               "3e-4 kg*m^2", "1e-3 kg*m^2"),
-            "load_inertia": q("1.3e-3 kg*m^2", f"{E}: flap reflected to the GRA input, so that the "
-                              "station node with shaft halves is about 2.1e-3 kg m2",
-                              "8e-4 kg*m^2", "2e-3 kg*m^2"),
-            "output_torque_rating": q("6 kN*m", f"{E}: station output torque about 6 kN m"),
+            "input_inertia": q("5e-4 kg*m^2", f"{E}: actuator input side; station node 2.0-2.3e-3 kg m2 "
+                               "at the shaft in all", "3e-4 kg*m^2", "1e-3 kg*m^2"),
+            "load_inertia": flap,
+            "coulomb_torque": q("0.2 N*m", f"{E}: actuator input side, part of the drag budget of the wing"),
+            "output_torque_rating": q("6 kN*m", f"{E}: actuator output side, station output torque about "
+                                      "6 kN m"),
             "travel_angle": q("2.2 rad", f"{E}: 105 shaft revolutions / 300"),
         },
         "wtb": {
-            "static_capacity": q("180 N*m", f"{E}: WTB at least 150 N m (1.5 x 97 N m)", "150 N*m",
-                                 "220 N*m"),
+            "static_capacity": q("180 N*m", f"{E}: WTB at least 150 N m (1.5 x 97 N m opposing, larger "
+                                 "than the back-drive torque)", "150 N*m", "220 N*m"),
             "max_dynamic_torque": q("150 N*m", f"{E}: WTB at least 150 N m", "130 N*m", "200 N*m"),
             "engagement_latency": q("100 ms", "domain.md s3/s6 (E): 50-150 ms", "50 ms", "150 ms"),
             "inertia": q("3e-4 kg*m^2", f"{E}: WTB node 4.3e-4 = rotor 3e-4 + shaft half"),
@@ -692,7 +817,7 @@ def a320_flaps():
         "revolutions": 105,
         "extend_load": [[0, 1.5], [0.25, 2.4], [0.5, 3.6], [0.75, 4.8], [1, 6]],
         "wing": wing,
-        "numbers": {"root": 97, "station": 23.5, "time": 25},
+        "numbers": {"root": 97, "backdrive": 56, "station": 23.5, "time": 25, "limiter_ratio": ratio},
     }
     return build_project(d)
 
@@ -704,6 +829,9 @@ def a320_slats():
     E = "domain.md s5 (E)"
     tube = (38, 1.5)
     stations = [3.0, 4.4, 5.8, 7.2, 8.6, 10.0, 11.4, 12.8, 14.2, 15.6]
+    # No-load drags referred to the shaft, per wing: 10 station gearboxes x 0.1, 10 actuators x 0.1
+    # (1:1), the root gearbox 0.1.
+    component_drag = 10 * 0.1 + 10 * 0.1 + 0.1
     wing = {
         "tag": E,
         "root_x": 1.5,
@@ -712,50 +840,49 @@ def a320_slats():
         "tube": lambda x0, x1: tube,
         "split_length": 3.5,
         "joint_at_root": True,
-        "material": TITANIUM,
+        "material": titanium(0.2, 16.4, component_drag, E,
+                             "root about 160 N m = 10 x 15.7 N m + drag (0.2 N m per metre, domain.md s3 "
+                             "0.2-0.3)"),
         "rgb_name": "19 deg bevel gearbox at the wing root (the published T-gearbox 1:1 is lumped in)",
         "stl": {
-            "lockout_torque_extend": pm10(210, "N*m", f"{E}: 1.3 x 160 N m root torque"),
+            "lockout_torque_extend": pm10(210, "N*m", f"{E}: shaft side, 1.3 x 160 N m root torque"),
             "lockout_torque_retract": pm10(210, "N*m", f"{E}: symmetric STL"),
             "inertia": q("5e-4 kg*m^2", f"{E}: scaled from the A380-class estimate"),
         },
         "joint": {
-            "efficiency": q(0.985, "domain.md s6 (E): 0.98-0.99", 0.98, 0.99),
+            "efficiency": lossless(E, "universal joint at the wing root"),
             "inertia": q("1e-4 kg*m^2", "domain.md s6 (E): 1e-4 to 3e-4 kg m2, small end",
                          "1e-4 kg*m^2", "3e-4 kg*m^2"),
         },
         "bearing": {},
-        "rgb": {
-            "ratio": q(1, "domain.md s1 (P): 19 deg bevel gearbox; 1:1 (E)"),
-            "shaft_angle": q("19 deg", "domain.md s1 (P): A320 AMM 27-84-00"),
-            "eta_mesh": q(0.97, "domain.md s6 (E): 0.96-0.98 per mesh", 0.96, 0.98),
-            "inertia": q("1e-3 kg*m^2", f"{E}: like the single-aisle flap root gearbox (s4)"),
-        },
-        "station_gearbox": {
-            "ratio": q(1, "domain.md s1 (P): 63.5 deg gearbox to each actuator (AMM 27-84-00); 1:1 (E: s5 gives "
-                       "15.7 N m at the shaft for 2 kN m at the actuator = 1:1 x 150:1 / 0.85)"),
-            "eta_mesh": q(0.97, "domain.md s6 (E): 0.96-0.98 per mesh", 0.96, 0.98),
-            "inertia": q("3e-4 kg*m^2", f"{E}: like a single-aisle flap station gearbox (s4)"),
-        },
-        "limiter": {
-            "lockout_torque_extend": pm10(23.5, "N*m", f"{E}: 1.5 x 15.7 N m actuator input torque"),
-            "lockout_torque_retract": pm10(16.5, "N*m", "domain.md s3 (E) rule: 0.7 x extend"),
-            "inertia": q("1e-4 kg*m^2", f"{E}: small limiter"),
-        },
+        "rgb": shaft_gearbox(
+            E, "root bevel gearbox", q(1, "domain.md s1 (P): 19 deg bevel gearbox; 1:1 (E)"),
+            q("1e-3 kg*m^2", f"{E}: shaft side, like the single-aisle flap root gearbox (s4)"),
+            shaft_angle=q("19 deg", "domain.md s1 (P): A320 AMM 27-84-00")),
+        "station_gearbox": shaft_gearbox(
+            E, "63.5 deg station gearbox",
+            q(1, "domain.md s1 (P): 63.5 deg gearbox to each actuator (AMM 27-84-00); 1:1 (E: s5 gives "
+              "15.7 N m at the shaft for 2 kN m at the actuator = 1:1 x 150:1 / 0.85)"),
+            q("3e-4 kg*m^2", f"{E}: shaft side, like a single-aisle flap station gearbox (s4)")),
+        "limiter": dict(station_limiter(23.5, E, "1.5 x 15.7 N m actuator input torque (1:1 with the "
+                                        "shaft)"),
+                        inertia=q("1e-4 kg*m^2", f"{E}: actuator input side, small limiter")),
         "gra": {
             "ratio": q(150, f"{E}: rotary actuator 150:1"),
             "eta_opposing": q(0.85, f"{E}: 2 kN m -> 15.7 N m at the shaft over 150:1", 0.80, 0.90),
             "eta_aiding": q(0.70, "domain.md s6 (E): 0.60-0.80", 0.60, 0.80),
-            "input_inertia": q("3e-4 kg*m^2", f"{E}: smaller than a flap GRA", "2e-4 kg*m^2",
-                               "5e-4 kg*m^2"),
-            "load_inertia": q(None, f"{E}: no data for the slat inertia; an interval only",
-                              "1e-4 kg*m^2", "2e-3 kg*m^2"),
-            "output_torque_rating": q("2 kN*m", f"{E}: actuator output 2 kN m"),
+            "input_inertia": q("3e-4 kg*m^2", f"{E}: actuator input side, smaller than a flap GRA",
+                               "2e-4 kg*m^2", "5e-4 kg*m^2"),
+            "load_inertia": q(None, f"{E}: actuator input side (1:1 with the shaft); no data for the slat "
+                              "inertia; an interval only", "1e-4 kg*m^2", "2e-3 kg*m^2"),
+            "coulomb_torque": q("0.1 N*m", f"{E}: actuator input side; a 2 kN m slat actuator drags less "
+                                "than the catalogue's 20 kN m flap GRA (0.2 N m); part of the drag budget"),
+            "output_torque_rating": q("2 kN*m", f"{E}: actuator output side, actuator output 2 kN m"),
             "travel_angle": q("2.5 rad", f"{E}: 2.5 rad pinion rotation, 60 shaft revolutions"),
         },
         "wtb": {
-            "static_capacity": q("280 N*m", f"{E}: at least 1.5 x 160 N m = 240 N m", "240 N*m",
-                                 "330 N*m"),
+            "static_capacity": q("280 N*m", f"{E}: at least 1.5 x 160 N m = 240 N m (opposing, larger "
+                                 "than the back-drive torque)", "240 N*m", "330 N*m"),
             "max_dynamic_torque": q("240 N*m", f"{E}: 1.5 x 160 N m", "220 N*m", "300 N*m"),
             "engagement_latency": q("100 ms", "domain.md s3/s6 (E): 50-150 ms", "50 ms", "150 ms"),
             "inertia": q("3e-4 kg*m^2", "domain.md s4 (E): like the single-aisle flap WTB"),
@@ -807,7 +934,7 @@ def a320_slats():
         "revolutions": 60,
         "extend_load": [[0, 0.8], [0.5, 1.4], [1, 2]],
         "wing": wing,
-        "numbers": {"root": 160, "station": 15.7, "time": 20},
+        "numbers": {"root": 160, "backdrive": 93, "station": 15.7, "time": 20},
     }
     return build_project(d)
 
@@ -836,7 +963,8 @@ def main():
     args = parser.parse_args()
     projects = {"a380_class_flaps.json": a380_flaps(), "a320_class_flaps.json": a320_flaps(),
                 "a320_class_slats.json": a320_slats(),
-                "hydraulic_pdu_flaps.json": hydraulic_pdu_flaps()}
+                "hydraulic_pdu_flaps.json": hydraulic_pdu_flaps(),
+                "a380_class_flaps_infeasible.json": a380_flaps_infeasible()}
     status = 0
     for name, project in projects.items():
         text = dump(project) + "\n"

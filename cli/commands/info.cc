@@ -39,7 +39,8 @@ nlohmann::json TypeJson(const ComponentTypeSpec& t) {
   for (const auto& p : t.parameters) {
     nlohmann::json j = {{"name", p.name}, {"symbol", p.symbol}, {"unit", p.unit},
                         {"dimension", DescribeDimension(p.dimension)}, {"optional", p.optional},
-                        {"description", p.description}, {"source", p.source}};
+                        {"description", p.description}, {"source", p.source},
+                        {"referred_to", ToString(p.referred_to)}};
     if (p.kind == ParameterKind::kScalar || p.kind == ParameterKind::kInteger) {
       j["nominal"] = p.nominal ? nlohmann::json(ShowSI(*p.nominal, p)) : nlohmann::json(nullptr);
       j["default_domain"] = {ShowSI(p.default_domain.lo, p), ShowSI(p.default_domain.hi, p)};
@@ -51,7 +52,8 @@ nlohmann::json TypeJson(const ComponentTypeSpec& t) {
           {"ports", ports}, {"parameters", parameters}};
 }
 
-/// Lists component or element types: a table (type, ports, parameters) or a JSON array.
+/// Lists component or element types: a table (type, ports, parameters with the gear side their
+/// value counts on) or a JSON array.
 int ListTypes(const std::vector<ComponentTypeSpec>& types, bool json) {
   if (json) {
     nlohmann::json a = nlohmann::json::array();
@@ -63,7 +65,10 @@ int ListTypes(const std::vector<ComponentTypeSpec>& types, bool json) {
   for (const auto& t : types) {
     std::string ports, parameters;
     for (const auto& port : t.ports) ports += (ports.empty() ? "" : " ") + port.name + (port.required ? "" : "*");
-    for (const auto& p : t.parameters) parameters += (parameters.empty() ? "" : " ") + p.name;
+    // name@side for the values referred to a gear side (inertias, stiffnesses, torques, ...).
+    for (const auto& p : t.parameters)
+      parameters += (parameters.empty() ? "" : " ") + p.name +
+                    (p.referred_to == ReferenceSide::kNone ? "" : std::string("@") + ToString(p.referred_to));
     table.AddRow({t.name, ports, parameters});
   }
   std::cout << table.ToString();

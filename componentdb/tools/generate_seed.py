@@ -177,7 +177,8 @@ part("angle_gearbox", "OGB-2-A320C-FLAP", "A320-class flap", "offset gearbox at 
 part("branch_gearbox", "SGB-2-A380C", "A380-class flap", "station gearbox (down-drive)", [
     q("ratio", 2, "1", "E", S3 + ": station gearbox 2:1"),
     q("eta_mesh", 0.97, "1", "E", S6, 0.96, 0.98),
-    q("inertia", 1e-3, "kg*m^2", "E", S3 + ": station input 1e-3 kg m2")])
+    q("inertia", 6.25e-4, "kg*m^2", "E", S3 + ": station input 1e-3 kg m2 at the shaft = this 6.25e-4 + (limiter 5e-4 + "
+      "GRA input 1e-3) / 2^2 behind the 2:1")])
 part("branch_gearbox", "TGB-1-A320C-SLAT", "A320-class slat", "T-gearbox", [
     q("ratio", 1, "1", "P", "AMM 27-84-00 via " + S1 + ": T-gearbox 1:1"),
     q("inertia", 4e-4, "kg*m^2", "E", "small bevel set")])
@@ -189,15 +190,19 @@ part("branch_gearbox", "SGB-1.5-A330C", "A330-class flap", "station gearbox, tor
     q("inertia", 8e-4, "kg*m^2", "E", "between s3 and s4")])
 
 # --- station torque limiters -----------------------------------------------------------------
-for k, (des, prog, tau, src) in enumerate([("STTL-A380C", "A380-class flap", 90, S3 + ": 1.5 x 58.8 N m"),
-                            ("STTL-A320C-FLAP", "A320-class flap", 35, S4 + ": about 35 N m input side"),
-                            ("STTL-A320C-SLAT", "A320-class slat", 24, S5 + ": 1.5 x 15.7 N m"),
-                            ("STTL-A330C", "A330-class flap", 60, "E: between s3 and s4")]):
+# A station limiter sits between the station gearbox and the actuator: its settings and inertia
+# count on the actuator input side, where a shaft-side torque of domain.md reads ratio x larger.
+for k, (des, prog, tau, src) in enumerate([
+        ("STTL-A380C", "A380-class flap", 180, S3 + ": 1.5 x 58.8 N m = 90 N m at the shaft, x 2 behind the 2:1 station gearbox"),
+        ("STTL-A320C-FLAP", "A320-class flap", 52.5, S4 + ": about 35 N m input side (shaft), x 1.5 behind the 1.5:1 offset gearbox"),
+        ("STTL-A320C-SLAT", "A320-class slat", 24, S5 + ": 1.5 x 15.7 N m, 1:1 with the shaft"),
+        ("STTL-A330C", "A330-class flap", 60, "E: between s3 and s4")]):
     part("station_torque_limiter", des, prog, "bi-directional ball-ramp limiter with lock-out indicator (TTM 27-50-00, P)", [
-        q("lockout_torque_extend", tau, "N*m", "E", src + "; " + S6 + " 1.3-1.6 x", round(0.9 * tau, 1), round(1.1 * tau, 1)),
+        q("lockout_torque_extend", tau, "N*m", "E", src + "; actuator input side; " + S6 + " 1.3-1.6 x",
+          round(0.9 * tau, 1), round(1.1 * tau, 1)),
         q("lockout_torque_retract", 0.7 * tau, "N*m", "E", S3 + ": retract 0.7 x extend; EP4265931 (P) asymmetric"),
-        q("inertia", 5e-4 * (tau / 90) * wobble(k + 4), "kg*m^2", "E",
-          "J = 5e-4 (T/90 N m) (friction-pack device; about 2e-4 at 35 N m, s4), x %.2f scatter" % wobble(k + 4))])
+        q("inertia", 5e-4 * (tau / 180) * wobble(k + 4), "kg*m^2", "E",
+          "J = 5e-4 (T/180 N m) at the actuator input (friction-pack device), x %.2f scatter" % wobble(k + 4))])
 
 # --- geared rotary actuators: named ones, then a family ---------------------------------------
 T_IN_REF = 20e3 / 200 / 0.85  # N m: the s3 GRA (20 kN m, 200:1, eta 0.85) has J_in = 1e-3 (s6)

@@ -15,6 +15,43 @@
 
 namespace highlift {
 
+namespace {
+
+constexpr std::pair<ReferenceSide, const char*> kSideNames[] = {
+    {ReferenceSide::kNone, "none"},
+    {ReferenceSide::kMotor, "motor"},
+    {ReferenceSide::kPduOutput, "pdu_output"},
+    {ReferenceSide::kShaft, "shaft"},
+    {ReferenceSide::kActuatorInput, "actuator_input"},
+    {ReferenceSide::kActuatorOutput, "actuator_output"},
+};
+
+}  // namespace
+
+const char* ToString(ReferenceSide side) {
+  for (const auto& [s, name] : kSideNames)
+    if (s == side) return name;
+  return "none";
+}
+
+std::optional<ReferenceSide> ParseReferenceSide(std::string_view name) {
+  for (const auto& [s, n] : kSideNames)
+    if (name == n) return s;
+  return std::nullopt;
+}
+
+const char* ReferenceSideLabel(ReferenceSide side) {
+  switch (side) {
+    case ReferenceSide::kNone: return "";
+    case ReferenceSide::kMotor: return "motor side";
+    case ReferenceSide::kPduOutput: return "PDU output";
+    case ReferenceSide::kShaft: return "shaft side";
+    case ReferenceSide::kActuatorInput: return "actuator input";
+    case ReferenceSide::kActuatorOutput: return "actuator output";
+  }
+  return "";
+}
+
 const PortSpec* ComponentTypeSpec::FindPort(std::string_view port) const {
   for (const auto& p : ports)
     if (p.name == port) return &p;
@@ -78,6 +115,10 @@ class Param {
     spec_.optional = true;
     return *this;
   }
+  Param& Side(ReferenceSide side) {  // the gear side the value counts on
+    spec_.referred_to = side;
+    return *this;
+  }
   operator ParameterSpec() const {  // NOLINT: implicit by design, for the declaration lists
     ParameterSpec s = spec_;
     const std::string unit = spec_.kind == ParameterKind::kText ? "1" : spec_.unit;
@@ -123,53 +164,64 @@ ParameterSpec SpanPosition() {
       .Source("domain.md s3 (E) gives x per node");
 }
 
-ParameterSpec Inertia(double nominal, double lo, double hi, std::string description, std::string source) {
+ParameterSpec Inertia(double nominal, double lo, double hi, std::string description, std::string source,
+                      ReferenceSide side) {
   return Param("inertia", "J", dimensions::Inertia(), "kg*m^2", std::move(description))
       .Nominal(nominal)
       .Default(lo, hi)
       .Valid(0, 1e3)
-      .Source(std::move(source));
+      .Source(std::move(source))
+      .Side(side);
 }
 
-ParameterSpec OptionalStiffness(std::string description, std::string source = "none: rigid unless given") {
-  return Param("stiffness", "c", Torque(), "N*m/rad", std::move(description)).Valid(0, 1e9).Optional().Source(
-      std::move(source));
+ParameterSpec OptionalStiffness(std::string description, ReferenceSide side,
+                                std::string source = "none: rigid unless given") {
+  return Param("stiffness", "c", Torque(), "N*m/rad", std::move(description))
+      .Valid(0, 1e9)
+      .Optional()
+      .Source(std::move(source))
+      .Side(side);
 }
 
-ParameterSpec Backlash(std::string description) {
+ParameterSpec Backlash(std::string description, ReferenceSide side) {
   return Param("backlash", "b", Dimensionless(), "deg", std::move(description))
       .Nominal(0)
       .Default(0, 0.5)
       .Valid(0, 30)
-      .Source("estimate: 0 (ideal); up to 0.5 deg for worn splines");
+      .Source("estimate: 0 (ideal); up to 0.5 deg for worn splines")
+      .Side(side);
 }
 
 // Stribeck friction of the paper's eq. (3): tau = tau_C + d_vis*|w| + tau_S*exp(-f_exp*|w|).
 // domain.md s6: T_brk = tau_C + tau_S = 1.2-1.5 x tau_C, w_brk 0.05-0.2 rad/s (f_exp = 1/w_brk).
 void AddStribeck(std::vector<ParameterSpec>& ps, double tau_C, double tau_C_lo, double tau_C_hi,
-                 const std::string& tau_C_source) {
+                 const std::string& tau_C_source, ReferenceSide side) {
   ps.push_back(Param("coulomb_torque", "tau_C", Torque(), "N*m", "Coulomb friction (drag) torque, paper eq. (3)")
                    .Nominal(tau_C)
                    .Default(tau_C_lo, tau_C_hi)
                    .Valid(0, 1e4)
-                   .Source(tau_C_source));
+                   .Source(tau_C_source)
+                   .Side(side));
   ps.push_back(Param("viscous_coefficient", "d_vis", RotationalDamping(), "N*m*s/rad",
                      "viscous friction coefficient, paper eq. (3)")
                    .Nominal(1e-4 * tau_C / 0.1)
                    .Default(0, 1e-3 * tau_C / 0.1)
                    .Valid(0, 1e3)
-                   .Source("estimate: small; viscous drag at 25 rad/s below 3 % of tau_C"));
+                   .Source("estimate: small; viscous drag at 25 rad/s below 3 % of tau_C")
+                   .Side(side));
   ps.push_back(Param("stribeck_torque", "tau_S", Torque(), "N*m",
                      "Stribeck (break-away excess) torque at standstill, paper eq. (3)")
                    .Nominal(0.35 * tau_C)
                    .Default(0.2 * tau_C, 0.5 * tau_C)
                    .Valid(0, 1e4)
-                   .Source("domain.md s6 (E): T_brk 1.2-1.5 x T_C"));
+                   .Source("domain.md s6 (E): T_brk 1.2-1.5 x T_C")
+                   .Side(side));
   ps.push_back(Param("stribeck_decay", "f_exp", Time(), "s/rad", "decay of the Stribeck torque with speed, paper eq. (3)")
                    .Nominal(10)
                    .Default(5, 20)
                    .Valid(0, 1e4)
-                   .Source("domain.md s6 (E): w_brk 0.05-0.2 rad/s, f_exp = 1/w_brk"));
+                   .Source("domain.md s6 (E): w_brk 0.05-0.2 rad/s, f_exp = 1/w_brk")
+                   .Side(side));
 }
 
 ParameterSpec Efficiency(std::string name, std::string symbol, double nominal, double lo, double hi,
@@ -181,52 +233,59 @@ ParameterSpec Efficiency(std::string name, std::string symbol, double nominal, d
       .Source(std::move(source));
 }
 
-// Torque limiter settings and the three stiffnesses of the paper's figure 4.
+// Torque limiter settings and the three stiffnesses of the paper's figure 4, all on `side`.
 void AddTorqueLimiter(std::vector<ParameterSpec>& ps, double tau1, double retract_factor, double c1,
-                      const std::string& tau1_source) {
+                      const std::string& tau1_source, const std::string& c1_source, ReferenceSide side) {
   ps.push_back(Param("lockout_torque_extend", "tau1_ext", Torque(), "N*m",
                      "lock-out (trip) torque tau_1 when driving in extend direction, paper fig. 4")
                    .Nominal(tau1)
                    .Default(0.9 * tau1, 1.1 * tau1)
                    .Valid(0, 1e5)
-                   .Source(tau1_source + "; domain.md s3: trips +-10 %"));
+                   .Source(tau1_source + "; domain.md s3: trips +-10 %")
+                   .Side(side));
   ps.push_back(Param("lockout_torque_retract", "tau1_ret", Torque(), "N*m",
                      "lock-out (trip) torque tau_1 when driving in retract direction, paper fig. 4")
                    .Nominal(retract_factor * tau1)
                    .Default(0.9 * retract_factor * tau1, 1.1 * retract_factor * tau1)
                    .Valid(0, 1e5)
                    .Source(retract_factor == 1.0 ? "estimate: symmetric (E)"
-                                                 : "domain.md s3 (E): retract 0.7 x extend; EP4265931 (P)"));
+                                                 : "domain.md s3 (E): retract 0.7 x extend; EP4265931 (P)")
+                   .Side(side));
   ps.push_back(Param("end_stop_torque", "tau2", Torque(), "N*m",
                      "torque tau_2 at which the balls reach their end stop and the device is grounded, paper fig. 4")
                    .Nominal(1.25 * tau1)
                    .Default(1.15 * tau1, 1.4 * tau1)
                    .Valid(0, 1e5)
-                   .Source("estimate: 1.25 x tau_1 (lock-out travel a few degrees on the lock-out stiffness)"));
+                   .Source("estimate: 1.25 x tau_1 (lock-out travel a few degrees on the lock-out stiffness)")
+                   .Side(side));
   ps.push_back(Param("stiffness_normal", "c1", Torque(), "N*m/rad",
                      "torsional stiffness in normal operation (balls seated), paper fig. 4")
                    .Nominal(c1)
                    .Default(0.5 * c1, 2 * c1)
                    .Valid(0, 1e9)
-                   .Source("estimate: about 10 x the adjacent shaft stiffness (domain.md s3 c = 1.4-3.3 kN*m/rad)"));
+                   .Source(c1_source)
+                   .Side(side));
   ps.push_back(Param("stiffness_lockout", "c2", Torque(), "N*m/rad",
                      "torsional stiffness while the balls run up the ramp (lock-out), paper fig. 4")
                    .Nominal(0.05 * c1)
                    .Default(0.02 * c1, 0.1 * c1)
                    .Valid(0, 1e9)
-                   .Source("estimate: the paper says it 'decreases significantly': 5 % of c1"));
+                   .Source("estimate: the paper says it 'decreases significantly': 5 % of c1")
+                   .Side(side));
   ps.push_back(Param("stiffness_end_stop", "c3", Torque(), "N*m/rad",
                      "torsional stiffness with the balls at their end stop (grounded), paper fig. 4")
                    .Nominal(5 * c1)
                    .Default(2 * c1, 10 * c1)
                    .Valid(0, 1e9)
-                   .Source("estimate: grounded to structure, 5 x c1"));
+                   .Source("estimate: grounded to structure, 5 x c1")
+                   .Side(side));
   ps.push_back(Param("max_brake_torque", "tau_B_max", Torque(), "N*m",
                      "friction brake torque to ground reached at the end stop (normalised output y = 1), paper eq. (2)")
                    .Nominal(2 * tau1)
                    .Default(1.5 * tau1, 3 * tau1)
                    .Valid(0, 1e6)
-                   .Source("estimate: 2 x tau_1"));
+                   .Source("estimate: 2 x tau_1")
+                   .Side(side));
 }
 
 // The types ----------------------------------------------------------------------------------
@@ -250,7 +309,8 @@ ComponentTypeSpec Pdu() {
                    .Nominal(3e-4)
                    .Default(2e-4, 4e-4)
                    .Valid(0, 10)
-                   .Source("domain.md s3 (E): motor J [2, 4]e-4 kg m2"));
+                   .Source("domain.md s3 (E): motor J [2, 4]e-4 kg m2")
+                   .Side(ReferenceSide::kMotor));
   ps.push_back(Param("ratio", "i_PDU", Dimensionless(), "1", "PDU gear ratio, motor speed / output speed")
                    .Nominal(20)
                    .Default(16, 25)
@@ -261,20 +321,23 @@ ComponentTypeSpec Pdu() {
                    .Nominal(0.02)
                    .Default(0.01, 0.03)
                    .Valid(0, 100)
-                   .Source("domain.md s3 (E): 0.02 kg m2 gears"));
+                   .Source("domain.md s3 (E): 0.02 kg m2 gears")
+                   .Side(ReferenceSide::kPduOutput));
   ps.push_back(Efficiency("efficiency", "eta", 0.90, 0.85, 0.95, "efficiency of the PDU gearbox",
                           "domain.md s3 (E): PCU gearbox 0.90"));
   ps.push_back(Param("max_output_speed", "w_max", AngularVelocity(), "rpm", "maximum output speed, both motors")
                    .Nominal(242)
                    .Default(220, 265)
                    .Valid(0, 20000)
-                   .Source("domain.md s3 (E): 25.3 rad/s = 242 rpm"));
+                   .Source("domain.md s3 (E): 25.3 rad/s = 242 rpm")
+                   .Side(ReferenceSide::kPduOutput));
   ps.push_back(Param("stall_torque", "tau_stall", Torque(), "N*m",
                      "output torque at stall (reacted at a jammed station)")
                    .Nominal(1000)
                    .Default(850, 1200)
                    .Valid(0, 1e6)
-                   .Source("estimate: 1.4 x the 720 N m operating torque for both wings of domain.md s3"));
+                   .Source("estimate: 1.4 x the 720 N m operating torque for both wings of domain.md s3")
+                   .Side(ReferenceSide::kPduOutput));
   ps.push_back(Param("power", "P", dimensions::Power(), "kW", "maximum output power")
                    .Nominal(18)
                    .Default(15, 22)
@@ -285,7 +348,8 @@ ComponentTypeSpec Pdu() {
                    .Nominal(1100)
                    .Default(900, 1400)
                    .Valid(0, 1e6)
-                   .Source("estimate: above the stall torque so the POBs hold the drive"));
+                   .Source("estimate: above the stall torque so the POBs hold the drive")
+                   .Side(ReferenceSide::kPduOutput));
   ps.push_back(Param("speed_ramp_time", "t_ramp", Time(), "s", "time from 0 to the maximum output speed")
                    .Nominal(0.4)
                    .Default(0.3, 0.5)
@@ -380,7 +444,8 @@ ComponentTypeSpec Pdu() {
                    .Nominal(5e-4)
                    .Default(2.5e-4, 1e-3)
                    .Valid(0, 1)
-                   .Source("estimate: speed loop about 40 rad/s with the PDU's own 0.26 kg m2 (the transmission is compliant)"));
+                   .Source("estimate: speed loop about 40 rad/s with the PDU's own 0.26 kg m2 (the transmission is compliant)")
+                   .Side(ReferenceSide::kMotor));
   ps.push_back(Param("speed_integral_time", "T_i", Time(), "s", "integral time of the speed loop")
                    .Nominal(0.05)
                    .Default(0.03, 0.1)
@@ -404,8 +469,11 @@ ComponentTypeSpec SystemTorqueLimiter() {
       "System torque limiter (STL) at a PDU output: a ball-ramp coupling that locks the "
       "transmission to structure above its lock-out torque (paper fig. 4 and 5).";
   t.ports = {Flange("input", "flange towards the PDU"), Flange("output", "flange towards the wing")};
-  AddTorqueLimiter(t.parameters, 470, 1.0, 2e4, "domain.md s3 (E): 1.3 x 360 N m root torque");
-  t.parameters.push_back(Inertia(1e-3, 5e-4, 2e-3, "inertia of the limiter", "estimate: comparable to a station gearbox"));
+  AddTorqueLimiter(t.parameters, 470, 1.0, 2e4, "domain.md s3 (E): 1.3 x 360 N m root torque",
+                   "estimate: about 10 x the adjacent shaft stiffness (domain.md s3 c = 1.4-3.3 kN*m/rad)",
+                   ReferenceSide::kShaft);
+  t.parameters.push_back(Inertia(1e-3, 5e-4, 2e-3, "inertia of the limiter", "estimate: comparable to a station gearbox",
+                                 ReferenceSide::kShaft));
   t.parameters.push_back(SpanPosition());
   t.roles = {.lumps_inertia = true, .wing_limiter = true};
   return t;
@@ -448,11 +516,12 @@ ComponentTypeSpec TorqueShaft() {
                    .Valid(1, 5000)
                    .Source("domain.md s6 (E): Ti-6Al-4V ultimate shear about 550 MPa"));
   ps.push_back(OptionalStiffness("torsional stiffness of the whole segment; overrides the tube geometry",
-                                 "none: from the tube geometry unless given"));
+                                 ReferenceSide::kShaft, "none: from the tube geometry unless given"));
   ps.push_back(Param("inertia", "J", dimensions::Inertia(), "kg*m^2", "inertia of the whole segment; overrides the tube geometry")
                    .Valid(0, 1e3)
                    .Optional()
-                   .Source("none: from the tube geometry unless given"));
+                   .Source("none: from the tube geometry unless given")
+                   .Side(ReferenceSide::kShaft));
   ps.push_back(Param("linear_density", "m_l", LinearDensity(), "kg/m", "mass per length (for a composite tube whose density is not known)")
                    .Valid(0, 1e3)
                    .Optional()
@@ -460,13 +529,15 @@ ComponentTypeSpec TorqueShaft() {
   ps.push_back(Param("damping", "d", RotationalDamping(), "N*m*s/rad", "structural damping of the segment")
                    .Valid(0, 1e6)
                    .Optional()
-                   .Source("none"));
+                   .Source("none")
+                   .Side(ReferenceSide::kShaft));
   ps.push_back(Param("drag_per_length", "tau_d", TorquePerLength(), "N*m/m",
                      "drag torque of the bearings and joints along the segment, per metre of shaft")
                    .Nominal(0.25)
                    .Default(0.1, 0.5)
                    .Valid(0, 100)
-                   .Source("domain.md s3 (E): 0.2-0.3 N m per metre, domain [0.1, 0.5]"));
+                   .Source("domain.md s3 (E): 0.2-0.3 N m per metre, domain [0.1, 0.5]")
+                   .Side(ReferenceSide::kShaft));
   ps.push_back(SpanPosition());
   t.relations = {{"wall_thickness", "outer_diameter", 2.0, "the radius", "equal: a solid shaft"}};
   t.roles = {.chain_member = true, .rupturable = true, .segment = true};
@@ -479,8 +550,9 @@ ComponentTypeSpec SteadyBearing() {
   t.display_name = "steady bearing";
   t.description = "Steady bearing supporting the shaft; Stribeck friction (paper eq. 3).";
   t.ports = {Flange("a", "flange nearer the PDU"), Flange("b", "flange farther from the PDU")};
-  AddStribeck(t.parameters, 0.1, 0.05, 0.2, "domain.md s6 (E): drag 0.05-0.2 N m each");
-  t.parameters.push_back(Inertia(5e-5, 1e-5, 1e-4, "inertia of the bearing's rotating parts", "estimate: small"));
+  AddStribeck(t.parameters, 0.1, 0.05, 0.2, "domain.md s6 (E): drag 0.05-0.2 N m each", ReferenceSide::kShaft);
+  t.parameters.push_back(
+      Inertia(5e-5, 1e-5, 1e-4, "inertia of the bearing's rotating parts", "estimate: small", ReferenceSide::kShaft));
   t.parameters.push_back(SpanPosition());
   t.roles = {.chain_member = true};
   return t;
@@ -494,13 +566,13 @@ ComponentTypeSpec UniversalJoint() {
   t.ports = {Flange("a", "flange nearer the PDU"), Flange("b", "flange farther from the PDU")};
   auto& ps = t.parameters;
   ps.push_back(Efficiency("efficiency", "eta", 0.985, 0.98, 0.99, "efficiency of the joint", "domain.md s6 (E): 0.98-0.99"));
-  ps.push_back(Inertia(2e-4, 1e-4, 3e-4, "inertia of the joint", "domain.md s6 (E): 1e-4 to 3e-4 kg m2"));
+  ps.push_back(Inertia(2e-4, 1e-4, 3e-4, "inertia of the joint", "domain.md s6 (E): 1e-4 to 3e-4 kg m2", ReferenceSide::kShaft));
   ps.push_back(Param("joint_angle", "beta", Dimensionless(), "deg", "bend angle of the joint")
                    .Valid(0, 45)
                    .Optional()
                    .Source("none: from the installation"));
-  ps.push_back(Backlash("total backlash of the joint"));
-  ps.push_back(OptionalStiffness("torsional stiffness of the joint"));
+  ps.push_back(Backlash("total backlash of the joint", ReferenceSide::kShaft));
+  ps.push_back(OptionalStiffness("torsional stiffness of the joint", ReferenceSide::kShaft));
   ps.push_back(SpanPosition());
   t.roles = {.chain_member = true};
   return t;
@@ -519,10 +591,11 @@ void AddGearbox(std::vector<ParameterSpec>& ps, const std::string& ratio_meaning
                    .Nominal(1)
                    .Valid(1, 10)
                    .Source("estimate: one bevel mesh"));
-  ps.push_back(Inertia(J, 0.5 * J, 2 * J, "inertia referred to the input", J_source));
-  ps.push_back(Backlash("total backlash referred to the input"));
-  ps.push_back(OptionalStiffness("torsional stiffness referred to the input"));
-  AddStribeck(ps, 0.1, 0.05, 0.2, "estimate: like a steady bearing, domain.md s6 (E) 0.05-0.2 N m");
+  // The input flange is on the transmission shaft (root gearbox, station down-drive).
+  ps.push_back(Inertia(J, 0.5 * J, 2 * J, "inertia referred to the input", J_source, ReferenceSide::kShaft));
+  ps.push_back(Backlash("total backlash referred to the input", ReferenceSide::kShaft));
+  ps.push_back(OptionalStiffness("torsional stiffness referred to the input", ReferenceSide::kShaft));
+  AddStribeck(ps, 0.1, 0.05, 0.2, "estimate: like a steady bearing, domain.md s6 (E) 0.05-0.2 N m", ReferenceSide::kShaft);
 }
 
 ComponentTypeSpec AngleGearbox() {
@@ -553,8 +626,9 @@ ComponentTypeSpec BranchGearbox() {
              Flange("through", "through-drive flange, 1:1 with the input (open at the last station)", false),
              GearedFlange("branch", "down-drive flange to the station")};
   AddGearbox(t.parameters, "gear ratio, input speed / branch speed", 2, 1, 2,
-             "domain.md s3 (E): station gearbox 2:1; s6 1:1 to 2:1", 1e-3,
-             "domain.md s3 (E): station input 1e-3 kg m2");
+             "domain.md s3 (E): station gearbox 2:1; s6 1:1 to 2:1", 6.25e-4,
+             "domain.md s3 (E): station input 1e-3 kg m2 at the shaft in all = this 6.25e-4 + (limiter 5e-4 + "
+             "actuator input 1e-3) / 2^2 behind the default 2:1");
   t.parameters.push_back(SpanPosition());
   t.roles = {.lumps_inertia = true};
   return t;
@@ -568,8 +642,14 @@ ComponentTypeSpec StationTorqueLimiter() {
       "Bi-directional station torque limiter before an actuator (ball ramp, friction discs, "
       "lock-out indicator), asymmetric: lower trip torque in retract. Paper fig. 4 and 5.";
   t.ports = {Flange("input", "flange towards the transmission"), Flange("output", "flange towards the actuator")};
-  AddTorqueLimiter(t.parameters, 90, 0.7, 2e4, "domain.md s3 (E): 1.5 x 58.8 N m station input torque");
-  t.parameters.push_back(Inertia(5e-4, 2e-4, 1e-3, "inertia of the limiter", "estimate: half a station gearbox"));
+  AddTorqueLimiter(t.parameters, 180, 0.7, 2e4,
+                   "domain.md s3 (E): 1.5 x 58.8 N m station input torque = 90 N m at the shaft, x 2 behind the "
+                   "default 2:1 station gearbox",
+                   "estimate: 2e4 at the actuator input = 5e3 at the shaft behind the default 2:1 station gearbox, "
+                   "2-3 x the adjacent shaft segments (domain.md s3 c = 1.4-3.3 kN*m/rad)",
+                   ReferenceSide::kActuatorInput);
+  t.parameters.push_back(Inertia(5e-4, 2e-4, 1e-3, "inertia of the limiter", "estimate: half a station gearbox",
+                                 ReferenceSide::kActuatorInput));
   t.parameters.push_back(SpanPosition());
   t.roles = {.lumps_inertia = true, .station_limiter = true};
   return t;
@@ -598,37 +678,44 @@ ComponentTypeSpec GearedRotaryActuator() {
                    .Nominal(1e-3)
                    .Default(5e-4, 2e-3)
                    .Valid(0, 100)
-                   .Source("domain.md s6 (E): input J about 1e-3 kg m2"));
+                   .Source("domain.md s6 (E): input J about 1e-3 kg m2")
+                   .Side(ReferenceSide::kActuatorInput));
   ps.push_back(Param("load_inertia", "J_load", dimensions::Inertia(), "kg*m^2", "flap inertia reflected to the actuator input")
-                   .Nominal(9.7e-3)
-                   .Default(5e-3, 1.5e-2)
+                   .Nominal(3.88e-2)
+                   .Default(2e-2, 6e-2)
                    .Valid(0, 100)
-                   .Source("domain.md s3 (E): reflected flap 9.7e-3 kg m2"));
+                   .Source("domain.md s3 (E): reflected flap 9.7e-3 kg m2 at the shaft = 4 x 9.7e-3 at the input of an "
+                           "actuator behind the default 2:1 station gearbox")
+                   .Side(ReferenceSide::kActuatorInput));
   ps.push_back(Param("output_torque_rating", "tau_out_max", Torque(), "kN*m", "rated output torque")
                    .Nominal(20)
                    .Default(15, 30)
                    .Valid(0, 1e4)
-                   .Source("domain.md s3 (E): station output torque about 20 kN m"));
+                   .Source("domain.md s3 (E): station output torque about 20 kN m")
+                   .Side(ReferenceSide::kActuatorOutput));
   ps.push_back(Param("travel_angle", "phi_travel", Dimensionless(), "rad", "output rotation for full travel")
                    .Nominal(2.2)
                    .Default(1.5, 3)
                    .Valid(0, 100)
-                   .Source("domain.md s3 (E): 2.2 rad GRA output rotation"));
+                   .Source("domain.md s3 (E): 2.2 rad GRA output rotation")
+                   .Side(ReferenceSide::kActuatorOutput));
   ps.push_back(Param("eta_settle_angle", "phi_eta", Dimensionless(), "rev",
                      "input angle over which the efficiency settles to its final value after a start or reversal, paper fig. 7")
                    .Nominal(0.5)
                    .Default(0.1, 2)
                    .Valid(0, 1000)
-                   .Source("estimate: teeth of the planetary stages come into contact within about half an input revolution"));
+                   .Source("estimate: teeth of the planetary stages come into contact within about half an input revolution")
+                   .Side(ReferenceSide::kActuatorInput));
   ps.push_back(Param("eta_speed_threshold", "w_eta", AngularVelocity(), "rad/s",
                      "input speed below which the efficiency rises linearly to 1 when stopping, paper fig. 7")
                    .Nominal(0.1)
                    .Default(0.05, 0.2)
                    .Valid(0, 1e3)
-                   .Source("estimate: like the Stribeck speed, domain.md s6 w_brk 0.05-0.2 rad/s"));
-  ps.push_back(Backlash("total backlash referred to the input"));
-  ps.push_back(OptionalStiffness("torsional stiffness referred to the input"));
-  AddStribeck(ps, 0.2, 0.1, 0.4, "estimate: about twice a steady bearing");
+                   .Source("estimate: like the Stribeck speed, domain.md s6 w_brk 0.05-0.2 rad/s")
+                   .Side(ReferenceSide::kActuatorInput));
+  ps.push_back(Backlash("total backlash referred to the input", ReferenceSide::kActuatorInput));
+  ps.push_back(OptionalStiffness("torsional stiffness referred to the input", ReferenceSide::kActuatorInput));
+  AddStribeck(ps, 0.2, 0.1, 0.4, "estimate: about twice a steady bearing", ReferenceSide::kActuatorInput);
   ps.push_back(SpanPosition());
   t.roles = {.actuator = true, .jammable = true, .lumps_inertia = true};
   return t;
@@ -658,17 +745,19 @@ ComponentTypeSpec BallscrewActuator() {
                    .Nominal(5e-4)
                    .Default(2e-4, 1e-3)
                    .Valid(0, 100)
-                   .Source("estimate"));
+                   .Source("estimate")
+                   .Side(ReferenceSide::kActuatorInput));
   ps.push_back(Param("output_force_rating", "F_max", Force(), "kN", "rated output force")
                    .Valid(0, 1e4)
                    .Optional()
-                   .Source("none"));
+                   .Source("none")
+                   .Side(ReferenceSide::kActuatorOutput));
   ps.push_back(Param("stroke", "s", Length(), "mm", "stroke for full travel")
                    .Valid(0, 1e5)
                    .Optional()
                    .Source("none"));
-  ps.push_back(Backlash("total backlash referred to the input"));
-  AddStribeck(ps, 0.2, 0.1, 0.4, "estimate: about twice a steady bearing");
+  ps.push_back(Backlash("total backlash referred to the input", ReferenceSide::kActuatorInput));
+  AddStribeck(ps, 0.2, 0.1, 0.4, "estimate: about twice a steady bearing", ReferenceSide::kActuatorInput);
   ps.push_back(SpanPosition());
   t.roles = {.actuator = true, .jammable = true, .lumps_inertia = true};
   return t;
@@ -688,12 +777,15 @@ ComponentTypeSpec WingTipBrake() {
                    .Nominal(550)
                    .Default(500, 700)
                    .Valid(0, 1e6)
-                   .Source("domain.md s3 (E): capacity >= 1.5 x 360 N m wing back-drive torque"));
+                   .Source("domain.md s3/s6 (E): 1.5 x the larger of the wing's opposing torque (360 N m) and its "
+                           "back-drive torque")
+                   .Side(ReferenceSide::kShaft));
   ps.push_back(Param("static_capacity", "tauB_lim", Torque(), "N*m", "maximum static (holding) brake torque after the halt")
                    .Nominal(700)
                    .Default(550, 900)
                    .Valid(0, 1e6)
-                   .Source("domain.md s3 (E): static capacity at least 550 N m"));
+                   .Source("domain.md s3 (E): static capacity at least 550 N m")
+                   .Side(ReferenceSide::kShaft));
   ps.push_back(Param("time_to_max_torque", "t_B", Time(), "ms", "time from engagement to the maximum dynamic torque")
                    .Nominal(30)
                    .Default(10, 60)
@@ -704,7 +796,8 @@ ComponentTypeSpec WingTipBrake() {
                    .Default(50, 150)
                    .Valid(0, 1e4)
                    .Source("domain.md s3/s6 (E): 50-150 ms"));
-  ps.push_back(Inertia(5e-4, 2e-4, 1e-3, "inertia of the brake rotor", "domain.md s3 (E): brake rotor 5e-4 kg m2"));
+  ps.push_back(Inertia(5e-4, 2e-4, 1e-3, "inertia of the brake rotor", "domain.md s3 (E): brake rotor 5e-4 kg m2",
+                       ReferenceSide::kShaft));
   ps.push_back(SpanPosition());
   t.roles = {.tip_brake = true, .lumps_inertia = true};
   return t;
@@ -732,13 +825,14 @@ ComponentTypeSpec PositionSensor() {
                    .Nominal(2)
                    .Default(1, 3)
                    .Valid(0, 1000)
-                   .Source("domain.md s3 (E): 1-3 shaft revolutions"));
+                   .Source("domain.md s3 (E): 1-3 shaft revolutions")
+                   .Side(ReferenceSide::kShaft));
   ps.push_back(Param("overspeed_factor", "k_os", Dimensionless(), "1", "overspeed trigger, multiple of the maximum shaft speed")
                    .Nominal(1.3)
                    .Default(1.2, 1.4)
                    .Valid(1, 10)
                    .Source("domain.md s3 (E): 1.3 x w_max"));
-  ps.push_back(Inertia(1e-5, 0, 5e-5, "inertia of the sensor shaft", "estimate: small"));
+  ps.push_back(Inertia(1e-5, 0, 5e-5, "inertia of the sensor shaft", "estimate: small", ReferenceSide::kShaft));
   ps.push_back(SpanPosition());
   t.roles = {.tip_sensor = true};
   return t;
@@ -750,7 +844,7 @@ ComponentTypeSpec Disconnector() {
   t.display_name = "disconnector";
   t.description = "Failure element: a rigid (or elastic) coupling that breaks at the scenario's rupture time (shaft rupture).";
   t.ports = {Flange("a", "flange nearer the PDU"), Flange("b", "flange farther from the PDU")};
-  t.parameters.push_back(OptionalStiffness("torsional stiffness before the rupture"));
+  t.parameters.push_back(OptionalStiffness("torsional stiffness before the rupture", ReferenceSide::kShaft));
   t.parameters.push_back(SpanPosition());
   t.roles = {.rupturable = true};
   return t;
@@ -762,11 +856,12 @@ ComponentTypeSpec Jam() {
   t.display_name = "jam";
   t.description = "Failure element: locks its flange to structure at the scenario's jam time.";
   t.ports = {Flange("a", "flange on the transmission (usually an actuator input)")};
-  t.parameters.push_back(Param("stiffness", "c", Torque(), "N*m/rad", "stiffness of the jammed load path to structure")
+  t.parameters.push_back(Param("stiffness", "c", Torque(), "N*m/rad", "stiffness of the jammed load path to structure, at the flange it locks (an actuator input)")
                              .Nominal(1e5)
                              .Default(2e4, 5e5)
                              .Valid(0, 1e12)
-                             .Source("estimate: stiff compared with the shaft segments (1.4-3.3 kN*m/rad)"));
+                             .Source("estimate: stiff compared with the shaft segments (1.4-3.3 kN*m/rad)")
+                             .Side(ReferenceSide::kActuatorInput));
   t.parameters.push_back(SpanPosition());
   t.roles = {.jammable = true, .lumps_inertia = true};
   return t;

@@ -61,6 +61,13 @@ std::string CatalogueMarkdown() {
         "is section N of the reference data with its tag (P published, P-low weak source, E engineering\n"
         "estimate), `paper` the HighLift library paper, `estimate` a catalogue estimate with its reasoning.\n"
         "Optional parameters without a nominal value stay unknown unless the file gives them.\n\n";
+  md += "**referred to** is the side of the gears the value counts on: `shaft side` (the torque tubes, at the PDU\n"
+        "output speed), `motor side` (one PDU motor), `PDU output`, `actuator input` (behind the station gearbox)\n"
+        "or `actuator output` (the flap track). Every inertia, stiffness, damping and torque states it. Referring a\n"
+        "value across a gear of ratio i = input speed / output speed multiplies a torque by i and an inertia or a\n"
+        "stiffness by i^2: domain.md s3 gives the flap inertia as 9.7e-3 kg\\*m^2 at the shaft, which is\n"
+        "4 x 9.7e-3 = 0.0388 kg\\*m^2 at the input of an actuator behind a 2:1 station gearbox. A project file\n"
+        "gives each value on the side its parameter states.\n\n";
   md += "Ports: the flange nearer the PDU along the power path is `input` (or `a`); gear `ratio` = input speed\n"
         "/ output speed (branch gearbox: input / branch speed).\n\n";
   md += "| type | name | ports |\n|---|---|---|\n";
@@ -79,8 +86,8 @@ std::string CatalogueMarkdown() {
             (p.required ? "yes" : "no") + " | " + Escape(p.description) + " |\n";
     md += "\n";
     if (t.parameters.empty()) continue;
-    md += "| parameter | symbol | unit | nominal | default domain | valid range | meaning | source |\n";
-    md += "|---|---|---|---|---|---|---|---|\n";
+    md += "| parameter | symbol | unit | referred to | nominal | default domain | valid range | meaning | source |\n";
+    md += "|---|---|---|---|---|---|---|---|---|\n";
     for (const auto& p : t.parameters) {
       const std::string kind = Kind(p);
       const bool text = p.kind == ParameterKind::kText || p.kind == ParameterKind::kTable;
@@ -88,7 +95,7 @@ std::string CatalogueMarkdown() {
       if (!kind.empty()) meaning = "(" + kind + ") " + meaning;
       if (p.optional) meaning += " (optional)";
       md += "| " + Code(p.name) + " | " + Code(p.symbol) + " | " + (text ? "" : Code(p.unit)) + " | " +
-            (p.nominal ? Show(*p.nominal, p) : "") + " | " + (text ? "" : ShowDomain(p.default_domain, p)) + " | " +
+            ReferenceSideLabel(p.referred_to) + " | " + (p.nominal ? Show(*p.nominal, p) : "") + " | " + (text ? "" : ShowDomain(p.default_domain, p)) + " | " +
             (text ? "" : ShowDomain(p.valid_range, p)) + " | " + meaning + " | " + Escape(p.source) + " |\n";
     }
     md += "\n";

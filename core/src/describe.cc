@@ -415,12 +415,13 @@ std::string ProjectDescription::FullReport() const {
   out += "\n";
 
   const auto concern_table = [&](ParameterConcern::Kind kind) {
-    TextTable t({"type.parameter", "components", "nominal", "domain", "width", "provenance", "note"}, {2});
+    TextTable t({"type.parameter", "components", "referred to", "nominal", "domain", "width", "provenance", "note"},
+                {3});
     for (const auto& g : GroupConcerns(concerns, kind)) {
       const ParameterConcern& c = *g.first;
       const ComponentTypeSpec* type = FindComponentType(c.type);
       const ParameterSpec* spec = type ? type->FindParameter(c.parameter) : nullptr;
-      t.AddRow({c.type + "." + c.parameter, JoinIds(g.components),
+      t.AddRow({c.type + "." + c.parameter, JoinIds(g.components), spec ? ReferenceSideLabel(spec->referred_to) : "",
                 c.nominal ? Display(*c.nominal, spec) : "?", DomainText(c.domain, spec),
                 std::isinf(c.relative_width) ? "unbounded" : FormatNumber(100 * c.relative_width, 3) + " %",
                 ToString(c.provenance), c.note});
@@ -475,7 +476,8 @@ nlohmann::json ProjectDescription::ToJson() const {
       nlohmann::json e = {{"component", c.component}, {"type", c.type}, {"parameter", c.parameter},
                           {"unit", c.unit}, {"domain_si", DomainJson(c.domain)},
                           {"domain", DomainText(c.domain, spec)},
-                          {"provenance", ToString(c.provenance)}, {"note", c.note}};
+                          {"provenance", ToString(c.provenance)}, {"note", c.note},
+                          {"referred_to", ToString(spec ? spec->referred_to : ReferenceSide::kNone)}};
       e["nominal_si"] = c.nominal ? nlohmann::json(*c.nominal) : nlohmann::json(nullptr);
       e["relative_width"] = std::isinf(c.relative_width) ? nlohmann::json("inf") : nlohmann::json(c.relative_width);
       a.push_back(std::move(e));

@@ -15,8 +15,9 @@ TEST(CatalogueMarkdown, ListsEveryTypePortAndParameter) {
     EXPECT_NE(md.find("## " + t.name + "\n"), std::string::npos) << t.name;
     for (const auto& p : t.parameters) EXPECT_NE(md.find("| `" + p.name + "` |"), std::string::npos) << p.name;
   }
-  // display units and values: 44 GPa, [43, 51]
-  EXPECT_NE(md.find("| `shear_modulus` | `G` | `GPa` | 44 | [43, 51] |"), std::string::npos);
+  // display units and values: 44 GPa, [43, 51]; a material constant has no gear side (empty cell)
+  EXPECT_NE(md.find("| `shear_modulus` | `G` | `GPa` |  | 44 | [43, 51] |"), std::string::npos);
+  EXPECT_NE(md.find("| `drag_per_length` | `tau_d` | `N*m/m` | shaft side | 0.25 |"), std::string::npos);
 }
 
 // docs/components.md is generated; set HIGHLIFT_UPDATE_DOCS=1 to rewrite it.

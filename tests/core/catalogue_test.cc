@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 
@@ -121,6 +122,57 @@ TEST(Catalogue, DefaultsMatchTheReferenceData) {
   EXPECT_DOUBLE_EQ(*gra->FindParameter("eta_aiding")->nominal, 0.70);
   EXPECT_NEAR(*FindComponentType("pdu")->FindParameter("max_output_speed")->nominal, 25.34, 0.01);
   EXPECT_NEAR(*FindComponentType("wing_tip_brake")->FindParameter("engagement_latency")->nominal, 0.1, 1e-12);
+}
+
+TEST(Catalogue, EveryInertiaStiffnessDampingAndTorqueStatesItsGearSide) {
+  // A value on the wrong side of a gear is off by the ratio squared (issue 20): each declaration
+  // says where it counts.
+  const std::vector<Dimension> rotational = {dimensions::Inertia(), dimensions::Torque(),
+                                             dimensions::RotationalDamping(), dimensions::TorquePerLength()};
+  int stated = 0;
+  for (const auto& t : ComponentTypes())
+    for (const auto& p : t.parameters) {
+      if (p.kind != ParameterKind::kScalar) continue;
+      const bool needs_side = std::find(rotational.begin(), rotational.end(), p.dimension) != rotational.end();
+      if (needs_side) {
+        EXPECT_NE(p.referred_to, ReferenceSide::kNone) << t.name << "." << p.name;
+        ++stated;
+      }
+    }
+  EXPECT_GT(stated, 50);
+}
+
+TEST(Catalogue, GearSidesRoundTripAndReadInTheDocs) {
+  for (const ReferenceSide side : {ReferenceSide::kNone, ReferenceSide::kMotor, ReferenceSide::kPduOutput,
+                                   ReferenceSide::kShaft, ReferenceSide::kActuatorInput,
+                                   ReferenceSide::kActuatorOutput})
+    EXPECT_EQ(ParseReferenceSide(ToString(side)), side) << ToString(side);
+  EXPECT_FALSE(ParseReferenceSide("shaft side").has_value());
+  const auto* gra = FindComponentType("geared_rotary_actuator");
+  EXPECT_EQ(gra->FindParameter("load_inertia")->referred_to, ReferenceSide::kActuatorInput);
+  EXPECT_EQ(gra->FindParameter("output_torque_rating")->referred_to, ReferenceSide::kActuatorOutput);
+  EXPECT_EQ(FindComponentType("pdu")->FindParameter("motor_inertia")->referred_to, ReferenceSide::kMotor);
+  EXPECT_EQ(FindComponentType("pdu")->FindParameter("stall_torque")->referred_to, ReferenceSide::kPduOutput);
+  EXPECT_EQ(FindComponentType("torque_shaft")->FindParameter("stiffness")->referred_to, ReferenceSide::kShaft);
+  EXPECT_EQ(FindComponentType("station_torque_limiter")->FindParameter("lockout_torque_extend")->referred_to,
+            ReferenceSide::kActuatorInput);
+  const std::string md = CatalogueMarkdown();
+  EXPECT_NE(md.find("| referred to |"), std::string::npos);
+  EXPECT_NE(md.find("| `load_inertia` | `J_load` | `kg*m^2` | actuator input | 0.0388 |"), std::string::npos);
+  EXPECT_NE(md.find("| `motor_inertia` | `J_m` | `kg*m^2` | motor side |"), std::string::npos);
+}
+
+TEST(Catalogue, DefaultFlapInertiaIsTheShaftSideValueReferredToTheActuatorInput) {
+  // domain.md s3 (E): reflected flap 9.7e-3 kg*m^2 at the shaft; the GRA's load_inertia counts at
+  // the actuator input, behind the default station gearbox (2:1): 9.7e-3 x 2^2.
+  const double station_ratio = *FindComponentType("branch_gearbox")->FindParameter("ratio")->nominal;
+  const double at_input = *FindComponentType("geared_rotary_actuator")->FindParameter("load_inertia")->nominal;
+  EXPECT_DOUBLE_EQ(station_ratio, 2.0);
+  EXPECT_NEAR(at_input / (station_ratio * station_ratio), 9.7e-3, 1e-12);
+  // The station limiter sits behind the same gearbox: domain.md s3 "station limiter about 1.5 x
+  // 58.8 = 90 N m" at the shaft.
+  const double trip = *FindComponentType("station_torque_limiter")->FindParameter("lockout_torque_extend")->nominal;
+  EXPECT_DOUBLE_EQ(trip / station_ratio, 90.0);
 }
 
 TEST(Suggest, FindsCloseNames) {

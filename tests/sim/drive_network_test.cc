@@ -289,7 +289,12 @@ TEST(DriveScenarios, MirroredRupturesGiveMirroredPeaksIndependentOfTheStepSequen
     ASSERT_TRUE(left.count(l) && right.count(r)) << l;
     EXPECT_NEAR(left.at(l), right.at(r), 1e-3 * left.at(l)) << l << " / " << r;
   }
-  EXPECT_LT(left.at("stl_l6"), 700.0);
+  // 700 N*m separated slipping (633) from sticking (840) while the example's station limiters had
+  // a 180 N*m friction brake (the old 90 N*m catalogue default x 2 left under the 180 N*m trip);
+  // with the catalogue's 2 x tau_1 = 360 N*m on the actuator input side (issue 20) the mirrored
+  // runs agree at 883 N*m. The mirror equality above at two stop times is the step-sequence
+  // check; this bound only catches a gross change.
+  EXPECT_LT(left.at("stl_l6"), 1000.0);
 }
 
 // The reduced model (inertias lumped at gearboxes and stations) gives the same qualitative

@@ -37,7 +37,7 @@ model OneStationRig "one-station rig"
     phi_eta=3.141592653589793,
     w_eta=0.1,
     J_in=0.001,
-    J_load=0.0097,
+    J_load=0.0388,
     tau_C=0.2,
     d_vis=2e-04,
     tau_S=0.07,
@@ -45,21 +45,21 @@ model OneStationRig "one-station rig"
     w_small=0.1)
     annotation (Placement(transformation(extent={{630,-90},{650,-70}})));
   HighLift.Mechanical.TorqueLimiter stl_1(
-    tau1_ext=90,
-    tau1_ret=63,
-    tau2_ext=112.5,
-    tau2_ret=78.75,
+    tau1_ext=180,
+    tau1_ret=126,
+    tau2_ext=225,
+    tau2_ret=157.5,
     c1=20000,
     c2=1000,
     c3=1e+05,
     d=8,
-    tauB_max=180,
+    tauB_max=360,
     J=5e-04)
     annotation (Placement(transformation(extent={{590,-90},{610,-70}})));
   HighLift.Mechanical.BranchGearbox gbx_1(
     ratio=2,
     elastic=false,
-    J=0.001,
+    J=0.000625,
     tau_C=0.1,
     d_vis=1e-04,
     tau_S=0.035,

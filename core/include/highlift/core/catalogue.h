@@ -72,6 +72,29 @@ struct ComponentRoles {
 /// booleans and integers are stored in Parameter::nominal; texts in Component::texts.
 enum class ParameterKind { kScalar, kInteger, kBoolean, kTable, kText };
 
+/// The side of the gears a rotational parameter is referred to: the flange, and so the speed, at
+/// which its value counts. Referring a value across a gear of ratio i = w_in / w_out multiplies a
+/// torque, an angle or a speed by i (or 1/i) and an inertia, a stiffness or a damping by i^2: the
+/// flap inertia of domain.md s3, 9.7e-3 kg*m^2 at the shaft, is 4 x 9.7e-3 at the input of an
+/// actuator behind a 2:1 station gearbox. Every inertia, stiffness, damping and torque parameter
+/// of a component type states its side; speeds and angles of a geared flange do where it matters.
+enum class ReferenceSide {
+  kNone,            ///< not referred to a gear side (lengths, efficiencies, ratios, times, ...)
+  kMotor,           ///< one PDU motor: motor speed = PDU ratio x PDU output speed
+  kPduOutput,       ///< the PDU output flange (the differential's output, before the STL)
+  kShaft,           ///< the transmission shaft: the speed of the torque tubes (= PDU output speed)
+  kActuatorInput,   ///< a station actuator's input, behind the station gearbox (station limiter side)
+  kActuatorOutput,  ///< a station actuator's output: the flap track or slat pinion
+};
+
+/// "none", "motor", "pdu_output", "shaft", "actuator_input", "actuator_output" (JSON, reports).
+const char* ToString(ReferenceSide side);
+/// The side named by ToString, or nullopt.
+std::optional<ReferenceSide> ParseReferenceSide(std::string_view name);
+/// "motor side", "PDU output", "shaft side", "actuator input", "actuator output"; "" for kNone
+/// (the component reference, `highlift info`).
+const char* ReferenceSideLabel(ReferenceSide side);
+
 /// Declaration of one parameter of a component type.
 struct ParameterSpec {
   ParameterKind kind = ParameterKind::kScalar;
@@ -84,6 +107,7 @@ struct ParameterSpec {
   Domain valid_range;        ///< physically valid values in SI; outside is an input error
   std::string description;   ///< one line, with the meaning of the parameter
   std::string source;        ///< where the default comes from (domain.md tag and section)
+  ReferenceSide referred_to = ReferenceSide::kNone;  ///< the gear side the value counts on
   bool optional = false;     ///< may be left unknown (e.g. derived from other parameters)
 };
 
