@@ -16,7 +16,9 @@
 #include <vector>
 
 #include "highlift/core/project.h"
+#include "highlift/model/estimation_laws.h"
 #include "highlift/model/interval.h"
+#include "highlift/model/laws.h"
 #include "highlift/model/network.h"
 
 namespace highlift::model {
@@ -176,6 +178,10 @@ class ComponentModel {
   /// An actuator's output angle over its full travel, rad (roles().actuator only): the abscissa
   /// of airload tables against position.
   virtual double TravelAngle(const Component& c) const;
+  /// Its estimation laws (estimation_laws.h), in the order the estimator applies them.
+  virtual std::vector<EstimationLaw> EstimationLaws() const { return {}; }
+  /// Its parameters that the estimator fits against a rating over the database parts of its type.
+  virtual std::vector<FitRule> FitRules() const { return {}; }
 };
 
 /// In a ComponentModel: overrides both LumpedAtInput with the member template
@@ -209,5 +215,13 @@ struct MonitorThresholds {
   double t_detect = 0;        ///< s, detection latency
 };
 MonitorThresholds MonitorSettings(const Component* tip_sensor);
+
+/// The mass of a distributed segment (roles().segment) [kg]: its linear density times its length
+/// when it gives one, else the tube law (laws.h).
+template <class T>
+T SegmentMass(const ParameterReader<T>& p) {
+  if (p.Has("linear_density")) return p("linear_density") * p("length");
+  return ShaftMass(p("density"), p("outer_diameter"), p("wall_thickness"), p("length"));
+}
 
 }  // namespace highlift::model
