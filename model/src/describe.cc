@@ -31,6 +31,7 @@ std::optional<Parameter> Effective(const Component& c, std::string_view name) {
   Parameter p;
   p.nominal = spec->nominal;
   p.domain = spec->default_domain;
+  p.note = spec->source;
   return p;
 }
 
@@ -268,15 +269,7 @@ ProjectDescription DescribeProject(const Project& project, const DescribeOptions
     for (const ParameterSpec& spec : type->parameters) {
       if (spec.kind != ParameterKind::kScalar) continue;
       r.parameters++;
-      const auto it = c.parameters.find(spec.name);
-      Parameter p;
-      if (it != c.parameters.end()) {
-        p = it->second;
-      } else {
-        p.nominal = spec.nominal;
-        p.domain = spec.default_domain;
-        p.note = spec.source;
-      }
+      const Parameter p = *Effective(c, spec.name);
       ParameterConcern concern;
       concern.component = c.id;
       concern.type = c.type;
