@@ -96,19 +96,23 @@ TEST(TubeLaws, OnIntervalsEnclosesEveryPointResult) {
         EXPECT_LE(c.lo, v);
         EXPECT_GE(c.hi, v);
       }
-  // The exact range, [1777, 2330] at the corners (TubePolarMoment on intervals uses its
-  // monotonicity): the factored law on the box would give [1755, 2358], pi/32 (D^4 - d^4) with
-  // d = D - 2t [1694, 2426].
+  // The exact range, [1777, 2330] at the corners (the estimation law uses the monotonicity of
+  // the tube law, MonotoneLaw): the factored law on the box gives [1755, 2358], pi/32 (D^4 - d^4)
+  // with d = D - 2t [1694, 2426].
   const double lo = At("torque_shaft", "stiffness", {43e9, 0.0499, 0.0019, 4.0});
   const double hi = At("torque_shaft", "stiffness", {51e9, 0.0501, 0.0021, 4.0});
   EXPECT_NEAR(lo, 1777.0, 0.5);
   EXPECT_NEAR(hi, 2330.0, 0.5);
   EXPECT_NEAR(c.lo, lo, 1e-12 * lo);
   EXPECT_NEAR(c.hi, hi, 1e-12 * hi);
-  // Outside the monotone region (t > D/2, no tube) the law on the box still encloses.
-  const Interval odd = TubePolarMoment(Interval(0.01, 0.02), Interval(0.004, 0.006));
+  const Interval box = ShaftStiffness(G, D, t, L);
+  EXPECT_LT(box.lo, c.lo - 20.0);
+  EXPECT_GT(box.hi, c.hi + 20.0);
+  // Outside the monotone region (t > D/2: no tube) the law on the box, which still encloses.
+  const Interval odd = On("torque_shaft", "stiffness", {G, Interval(0.01, 0.02), Interval(0.004, 0.006), L});
   for (double dd : {0.01, 0.015, 0.02})
-    for (double tt : {0.004, 0.005, 0.006}) EXPECT_TRUE(odd.contains(TubePolarMoment(dd, tt))) << dd << " " << tt;
+    for (double tt : {0.004, 0.005, 0.006})
+      EXPECT_TRUE(odd.contains(At("torque_shaft", "stiffness", {47e9, dd, tt, 4.0}))) << dd << " " << tt;
 }
 
 TEST(GearedRotaryActuator, FlapInertiaOfTheA380ClassPanelIsTheStationValue) {

@@ -15,6 +15,7 @@
 #include <functional>
 #include <span>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -75,6 +76,27 @@ EstimationLaw WrapLaw(std::string output, bool derived, std::string unit, std::v
   return out;
 }
 }  // namespace detail
+
+/// A law monotone in each input (signs[i] = +1: increasing in input i, -1: decreasing) on the
+/// interval inputs v for which where(v) holds: there its exact range, the law at the two extreme
+/// corners, each evaluated on point intervals (outward rounded); elsewhere, and for double, the
+/// law itself. On a box the law would overestimate when an input occurs more than once.
+template <class Law, class Where>
+auto MonotoneLaw(std::vector<int> signs, Where where, Law law) {
+  return [signs, where, law](const auto& v) {
+    if constexpr (std::is_same_v<std::decay_t<decltype(v[0])>, Interval>) {
+      if (where(v)) {
+        std::vector<Interval> lo, hi;
+        for (std::size_t i = 0; i < v.size(); ++i) {
+          lo.emplace_back(signs.at(i) > 0 ? v[i].lo : v[i].hi);
+          hi.emplace_back(signs.at(i) > 0 ? v[i].hi : v[i].lo);
+        }
+        return Interval(law(std::span<const Interval>(lo)).lo, law(std::span<const Interval>(hi)).hi);
+      }
+    }
+    return law(v);
+  };
+}
 
 /// A law that estimates parameter `parameter` of the component.
 template <class Law>

@@ -20,16 +20,6 @@ T TubePolarMoment(const T& D, const T& t) {
   return T(std::numbers::pi / 8.0) * (D * D + d * d) * (D - t) * t;
 }
 
-/// The same law on intervals, its exact range: Ip grows with D and, while d = D - 2 t >= 0, with
-/// t, so over a box it is spanned by the corners (D.lo, t.lo) and (D.hi, t.hi), each evaluated on
-/// point intervals (outward rounded). Evaluated on the box itself the law would overestimate:
-/// t occurs three times, D four.
-inline Interval TubePolarMoment(const Interval& D, const Interval& t) {
-  if (!(t.lo >= 0.0 && D.lo >= 2.0 * t.hi)) return TubePolarMoment<Interval>(D, t);
-  return {TubePolarMoment<Interval>(Interval(D.lo), Interval(t.lo)).lo,
-          TubePolarMoment<Interval>(Interval(D.hi), Interval(t.hi)).hi};
-}
-
 /// Torsional stiffness of a tube [N*m/rad]: c = G Ip / L.
 template <class T>
 T ShaftStiffness(const T& G, const T& D, const T& t, const T& L) {
@@ -42,27 +32,14 @@ T ShaftInertia(const T& rho, const T& D, const T& t, const T& L) {
   return rho * TubePolarMoment(D, t) * L;
 }
 
-/// Cross-section area of a tube [m^2]: A = pi/4 (D^2 - d^2) = pi (D - t) t.
-template <class T>
-T TubeArea(const T& D, const T& t) {
-  return T(std::numbers::pi) * (D - t) * t;
-}
-
-/// The same law on intervals, its exact range: A grows with D and, while t <= D/2, with t (the
-/// corners, as for TubePolarMoment; on the box t would occur twice).
-inline Interval TubeArea(const Interval& D, const Interval& t) {
-  if (!(t.lo >= 0.0 && D.lo >= 2.0 * t.hi)) return TubeArea<Interval>(D, t);
-  return {TubeArea<Interval>(Interval(D.lo), Interval(t.lo)).lo, TubeArea<Interval>(Interval(D.hi), Interval(t.hi)).hi};
-}
-
-/// Mass per length of a tube [kg/m]: m_l = rho A = rho pi/4 (D^2 - d^2).
+/// Mass per length of a tube [kg/m]: m_l = rho pi/4 (D^2 - d^2) = rho pi (D - t) t.
 /// Example: Ti 50 x 2.0 mm, rho = 4420 kg/m^3: 1.33 kg/m.
 template <class T>
 T ShaftMassPerLength(const T& rho, const T& D, const T& t) {
-  return rho * TubeArea(D, t);
+  return rho * T(std::numbers::pi) * (D - t) * t;
 }
 
-/// Mass of a tube [kg]: m = rho A L = rho pi (D - t) t L.
+/// Mass of a tube [kg]: m = rho pi (D - t) t L.
 template <class T>
 T ShaftMass(const T& rho, const T& D, const T& t, const T& L) {
   return ShaftMassPerLength(rho, D, t) * L;
