@@ -1,7 +1,7 @@
 // `highlift info PROJECT.json [--json] [--brief]`: a readable description of a project: components
 // by type, shaft length and mass per wing, the stations, the inertia reflected to the PDU output,
 // and the parameters that are still unknown or wide, with their provenance. The computation is
-// highlift::DescribeProject (core/describe.h). Exit 0, or 2 when the project is invalid.
+// highlift::model::DescribeProject (model/describe.h). Exit 0, or 2 when the project is invalid.
 // `highlift info --types` / `--elements` list the catalogue's component / element types instead.
 #include <cmath>
 #include <iostream>
@@ -9,12 +9,12 @@
 #include <nlohmann/json.hpp>
 
 #include "command.h"
-#include "highlift/core/describe.h"
 #include "highlift/core/error.h"
 #include "highlift/core/project_io.h"
 #include "highlift/core/text_table.h"
 #include "highlift/core/units.h"
 #include "highlift/core/validate.h"
+#include "highlift/model/describe.h"
 
 namespace highlift::cli {
 namespace {
@@ -113,7 +113,7 @@ class InfoCommand : public Command {
                       options_.project + "` and fix them",
                   "the component graph has errors", {});
     }
-    const ProjectDescription description = DescribeProject(project, describe_);
+    const model::ProjectDescription description = model::DescribeProject(project, describe_);
     if (options_.json) {
       nlohmann::json doc = description.ToJson();
       doc["file"] = options_.project;
@@ -147,7 +147,7 @@ class InfoCommand : public Command {
   }
 
   CommonOptions options_;
-  DescribeOptions describe_;
+  model::DescribeOptions describe_;
   bool brief_ = false;
   bool types_ = false;
   bool elements_ = false;

@@ -1,5 +1,6 @@
 #include "highlift/estimation/estimator.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
@@ -10,13 +11,13 @@
 #include "highlift/core/error.h"
 #include "highlift/core/text_table.h"
 #include "highlift/core/units.h"
-#include "highlift/estimation/physics.h"
-#include "interval.h"
+#include "highlift/model/component_model.h"
+#include "highlift/model/interval.h"
 
 namespace highlift::estimation {
 namespace {
 
-using detail::Interval;
+using model::Interval;
 
 int Rank(Provenance p) {
   switch (p) {
@@ -92,20 +93,6 @@ std::optional<double> LabelQuantity(const Component& c, const std::string& key, 
   }
 }
 
-struct FitRule {
-  const char* type;
-  const char* parameter;
-  const char* rating;
-};
-
-// Parameters fitted against a rating over database parts of the same type.
-constexpr FitRule kFitRules[] = {
-    {"geared_rotary_actuator", "input_inertia", "output_torque_rating"},
-    {"system_torque_limiter", "inertia", "lockout_torque_extend"},
-    {"station_torque_limiter", "inertia", "lockout_torque_extend"},
-    {"wing_tip_brake", "inertia", "max_dynamic_torque"},
-};
-
 class Estimator {
  public:
   Estimator(Project& project, const componentdb::ComponentDatabase* database, const EstimationOptions& options,
@@ -124,8 +111,10 @@ class Estimator {
         if (p.provenance == Provenance::kDatabase && !p.database_part.empty()) pending_.insert(Key(c, spec));
       }
       if (database_ && options_.use_database) DatabasePass(c, *type);
-      if (database_ && options_.use_fits) FitPass(c, *type);
-      if (options_.use_physics) PhysicsPass(c, *type);
+      if (const model::ComponentModel* m = model::FindComponentModel(c.type)) {
+        if (database_ && options_.use_fits) FitPass(c, *type, *m);
+        if (options_.use_physics) PhysicsPass(c, *m);
+      }
       for (const auto& spec : type->parameters) {
         if (!IsValue(spec)) continue;
         const std::string key = Key(c, spec);
@@ -137,7 +126,8 @@ class Estimator {
         Record(c, spec);
       }
     }
-    for (const auto& [fit, ids] : extrapolated_) {
+    for (const auto& [key, ids] : extrapolated_) {
+      const EmpiricalFit* fit = &fits_.at(key);
       std::string list;
       for (const auto& id : ids) list += (list.empty() ? "" : ", ") + id;
       report_.messages.push_back("the fit of " + fit->type + "." + fit->parameter + " extrapolates for " + list + ": " +
@@ -310,14 +300,14 @@ class Estimator {
     return in;
   }
 
-  void FitPass(Component& c, const ComponentTypeSpec& type) {
-    for (const auto& rule : kFitRules) {
-      if (c.type != rule.type) continue;
+  /// The fits the component's model declares (ComponentModel::FitRules).
+  void FitPass(Component& c, const ComponentTypeSpec& type, const model::ComponentModel& m) {
+    for (const model::FitRule& rule : m.FitRules()) {
       const ParameterSpec* spec = type.FindParameter(rule.parameter);
       if (!spec || !type.FindParameter(rule.rating)) continue;
       const Input rating = InputOf(c, rule.rating);
       if (!rating.usable || !rating.given) continue;  // a fit at a default rating says nothing new
-      const EmpiricalFit& fit = Fit(rule);
+      const EmpiricalFit& fit = Fit(c.type, rule);
       if (!fit.ok()) continue;  // the report lists the fit and why it failed
       const Domain rd = rating.interval.ToDomain();
       Candidate cand;
@@ -325,142 +315,97 @@ class Estimator {
       cand.domain = fit.PredictionInterval(rd);
       cand.nominal = fit.Predict(rating.nominal ? *rating.nominal : 0.5 * (rd.lo + rd.hi));
       cand.note = "fit " + fit.BriefReport();
-      if (fit.Extrapolates(rd)) extrapolated_[&fit].push_back(c.id);
+      if (fit.Extrapolates(rd)) extrapolated_[FitKey(c.type, rule)].push_back(c.id);
       Apply(c, *spec, cand);
     }
   }
 
-  const EmpiricalFit& Fit(const FitRule& rule) {
-    const std::string key = std::string(rule.type) + "." + rule.parameter + "/" + rule.rating;
+  static std::string FitKey(const std::string& type, const model::FitRule& rule) {
+    return type + "." + rule.parameter + "/" + rule.rating;
+  }
+
+  const EmpiricalFit& Fit(const std::string& type, const model::FitRule& rule) {
+    const std::string key = FitKey(type, rule);
     auto it = fits_.find(key);
     if (it == fits_.end()) {
       FitOptions fo;
       fo.confidence = options_.confidence;
       fo.min_parts = options_.min_fit_parts;
-      it = fits_.emplace(key, FitParameter(*database_, rule.type, rule.parameter, rule.rating, fo)).first;
+      it = fits_.emplace(key, FitParameter(*database_, type, rule.parameter, rule.rating, fo)).first;
       report_.fits.push_back(it->second);
       if (!it->second.ok()) report_.messages.push_back(it->second.message);
     }
     return it->second;
   }
 
-  /// A physics candidate from an interval evaluation and, when every input has one, a nominal one.
-  template <class Law>
-  void ApplyLaw(Component& c, const std::string& parameter, const std::vector<Input>& inputs, const std::string& note,
-                Law law) {
-    const ComponentTypeSpec* type = FindComponentType(c.type);
-    const ParameterSpec* spec = type->FindParameter(parameter);
-    if (!spec) return;
-    Candidate cand;
-    if (!Evaluate(inputs, law, &cand)) return;
-    cand.note = note;
-    Apply(c, *spec, cand);
+  /// A law input: a parameter (InputOf), a label quantity (usable when given and positive) or a
+  /// constant range (usable, not a given value).
+  Input InputOf(Component& c, const model::LawInput& in) {
+    Input out;
+    switch (in.kind) {
+      case model::LawInput::Kind::kParameter: return InputOf(c, in.name);
+      case model::LawInput::Kind::kLabel:
+        if (const auto v = LabelQuantity(c, in.name, in.dimension)) {
+          out.usable = out.given = *v > 0;
+          out.interval = Interval(*v);
+          out.nominal = *v;
+        }
+        return out;
+      case model::LawInput::Kind::kConstant:
+        out.usable = true;
+        out.interval = in.range;
+        out.nominal = in.nominal;
+        return out;
+    }
+    return out;
   }
 
-  template <class Law>
-  static bool Evaluate(const std::vector<Input>& inputs, Law law, Candidate* cand) {
-    bool any_given = false, all_nominal = true;
+  /// The law on the inputs' domains and, when every input has one, on their nominal values.
+  /// False when an input is not usable.
+  static bool Evaluate(const model::EstimationLaw& law, const std::vector<Input>& inputs, Domain* domain,
+                       std::optional<double>* nominal) {
+    std::vector<Interval> iv;
+    std::vector<double> point;
+    bool all_nominal = true;
     for (const auto& in : inputs) {
       if (!in.usable) return false;
-      any_given = any_given || in.given;
-      all_nominal = all_nominal && in.nominal.has_value();
-      cand->from_defaults = cand->from_defaults || !in.given;
-    }
-    if (!any_given) return false;  // only catalogue defaults: nothing new to say
-    std::vector<Interval> iv;
-    std::vector<double> nominal;
-    for (const auto& in : inputs) {
       iv.push_back(in.interval);
-      nominal.push_back(in.nominal.value_or(0.0));
+      point.push_back(in.nominal.value_or(0.0));
+      all_nominal = all_nominal && in.nominal.has_value();
     }
-    cand->source = Provenance::kEstimated;
-    cand->domain = law(iv).ToDomain();
-    if (all_nominal) cand->nominal = law(nominal);
+    *domain = law.enclosure(iv).ToDomain();
+    if (all_nominal) *nominal = law.nominal(point);
     return true;
   }
 
-  void AddDerived(const Component& c, const std::string& name, const std::string& unit, const std::vector<Input>& inputs,
-                  const std::string& note, auto law) {
-    for (const auto& in : inputs)
-      if (!in.usable) return;
-    Candidate cand;
-    std::vector<Interval> iv;
-    std::vector<double> nominal;
-    bool all_nominal = true;
-    for (const auto& in : inputs) {
-      iv.push_back(in.interval);
-      nominal.push_back(in.nominal.value_or(0.0));
-      all_nominal = all_nominal && in.nominal.has_value();
-    }
-    DerivedQuantity q;
-    q.component = c.id;
-    q.name = name;
-    q.unit = unit;
-    q.domain = law(iv).ToDomain();
-    if (all_nominal) q.nominal = law(nominal);
-    q.note = note;
-    report_.derived.push_back(std::move(q));
-  }
-
-  void PhysicsPass(Component& c, const ComponentTypeSpec& type) {
-    if (c.type == "torque_shaft") {
-      const Input G = InputOf(c, "shear_modulus"), rho = InputOf(c, "density"), D = InputOf(c, "outer_diameter"),
-                  t = InputOf(c, "wall_thickness"), L = InputOf(c, "length"), tau = InputOf(c, "allowable_shear_stress");
-      // d = D - 2 t is evaluated inside each law, so the laws see the tube as given.
-      ApplyLaw(c, "stiffness", {G, D, t, L}, "physics: c = G pi/32 (D^4 - d^4)/L, d = D - 2t",
-               [](const auto& v) { return ShaftStiffness(v[0], v[1], v[1] - v[2] - v[2], v[3]); });
-      ApplyLaw(c, "inertia", {rho, D, t, L}, "physics: J = rho pi/32 (D^4 - d^4) L",
-               [](const auto& v) { return ShaftInertia(v[0], v[1], v[1] - v[2] - v[2], v[3]); });
-      ApplyLaw(c, "linear_density", {rho, D, t}, "physics: m_l = rho pi/4 (D^2 - d^2)",
-               [](const auto& v) { return ShaftMassPerLength(v[0], v[1], v[1] - v[2] - v[2]); });
-      if (const auto spacing = LabelQuantity(c, "bearing_spacing", dimensions::Length())) {
-        Input each;  // domain.md s6 (E): steady bearing drag 0.05-0.2 N m each
-        each.usable = true;
-        each.interval = Interval(0.05, 0.2);
-        each.nominal = 0.1;
-        Input sp;
-        sp.usable = sp.given = *spacing > 0;
-        sp.interval = Interval(*spacing);
-        sp.nominal = *spacing;
-        ApplyLaw(c, "drag_per_length", {each, sp},
-                 "physics: bearing drag 0.05-0.2 N m each (domain.md s6) / bearing_spacing label",
-                 [](const auto& v) { return BearingDragPerLength(v[0], v[1]); });
+  /// The estimation laws the component's model declares (ComponentModel::EstimationLaws): a
+  /// parameter law gives a physics candidate when at least one input is known beyond a catalogue
+  /// default; a derived quantity is reported whenever its inputs are usable.
+  void PhysicsPass(Component& c, const model::ComponentModel& m) {
+    const ComponentTypeSpec* type = FindComponentType(c.type);
+    for (const model::EstimationLaw& law : m.EstimationLaws()) {
+      std::vector<Input> inputs;
+      for (const model::LawInput& in : law.inputs) inputs.push_back(InputOf(c, in));
+      if (law.derived) {
+        DerivedQuantity q;
+        if (!Evaluate(law, inputs, &q.domain, &q.nominal)) continue;
+        q.component = c.id;
+        q.name = law.output;
+        q.unit = law.unit;
+        q.note = law.note;
+        report_.derived.push_back(std::move(q));
+        continue;
       }
-      AddDerived(c, "torque_capacity", "N*m", {tau, D, t}, "tau_allow pi/16 (D^4 - d^4)/D",
-                 [](const auto& v) { return ShaftTorqueCapacity(v[0], v[1], v[1] - v[2] - v[2]); });
-      AddDerived(c, "mass", "kg", {rho, D, t, L}, "rho pi/4 (D^2 - d^2) L",
-                 [](const auto& v) { return ShaftMass(v[0], v[1], v[1] - v[2] - v[2], v[3]); });
-    } else if (c.type == "geared_rotary_actuator") {
-      const Input T = InputOf(c, "output_torque_rating"), ratio = InputOf(c, "ratio"), eta = InputOf(c, "eta_opposing");
-      ApplyLaw(c, "input_inertia", {T, ratio, eta},
-               "physics: gear scaling J_in = 3e-4 + 7e-4 (tau_out/(ratio eta) / 117.6 N m)^(5/3) kg m2 (domain.md s6)",
-               [](const auto& v) { return ActuatorInputInertia(v[0], v[1], v[2]); });
-      const auto mass = LabelQuantity(c, "flap_mass", dimensions::Mass());
-      const auto stroke = LabelQuantity(c, "flap_stroke", dimensions::Length());
-      if (mass && stroke) {
-        Input m, s;
-        m.usable = m.given = *mass > 0;
-        m.interval = Interval(*mass);
-        m.nominal = *mass;
-        s.usable = s.given = *stroke > 0;
-        s.interval = Interval(*stroke);
-        s.nominal = *stroke;
-        ApplyLaw(c, "load_inertia", {m, s, InputOf(c, "travel_angle"), ratio},
-                 "physics: J = m (s/phi_travel)^2 / ratio^2 from labels flap_mass, flap_stroke",
-                 [](const auto& v) { return FlapInertiaAtInput(v[0], v[1], v[2], v[3]); });
-      }
-      AddDerived(c, "mass", "kg", {T}, "gear scaling m = 20 kg (tau_out/20 kN m)^0.8 (estimate)",
-                 [](const auto& v) { return GearboxMassFromTorque(v[0]); });
-    } else if (c.type == "pdu") {
-      const Input Jm = InputOf(c, "motor_inertia"), ratio = InputOf(c, "ratio"), Jg = InputOf(c, "gear_inertia");
-      Input n = InputOf(c, "motor_count");
-      AddDerived(c, "output_inertia", "kg*m^2", {Jm, n, ratio, Jg}, "n J_m ratio^2 + J_g",
-                 [](const auto& v) { return PduOutputInertia(v[0], v[1], v[2], v[3]); });
-    } else if (type.FindParameter("torque_rating") && type.FindParameter("inertia")) {
-      // Gearboxes with a torque rating (input side): gear scaling of the inertia.
-      ApplyLaw(c, "inertia", {InputOf(c, "torque_rating")},
-               "physics: gear scaling J = 3e-4 + 7e-4 (tau_in / 117.6 N m)^(5/3) kg m2 (domain.md s6)",
-               [](const auto& v) { return GearboxInertiaFromTorque(v[0]); });
+      const ParameterSpec* spec = type->FindParameter(law.output);
+      if (!spec) continue;
+      const bool any_given = std::any_of(inputs.begin(), inputs.end(), [](const Input& in) { return in.given; });
+      if (!any_given) continue;  // only catalogue defaults: nothing new to say
+      Candidate cand;
+      if (!Evaluate(law, inputs, &cand.domain, &cand.nominal)) continue;
+      cand.source = Provenance::kEstimated;
+      cand.from_defaults = std::any_of(inputs.begin(), inputs.end(), [](const Input& in) { return !in.given; });
+      cand.note = law.note;
+      Apply(c, *spec, cand);
     }
   }
 
@@ -493,7 +438,7 @@ class Estimator {
   std::set<std::string> pending_;
   std::map<std::string, componentdb::Part> parts_;
   std::map<std::string, EmpiricalFit> fits_;
-  std::map<const EmpiricalFit*, std::vector<std::string>> extrapolated_;
+  std::map<std::string, std::vector<std::string>> extrapolated_;  ///< by FitKey: messages in a stable order
 };
 
 nlohmann::json DomainJson(const std::optional<double>& nominal, const Domain& d) {

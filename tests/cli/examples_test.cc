@@ -9,15 +9,17 @@
 #include <nlohmann/json.hpp>
 
 #include "common/run_cli.h"
-#include "highlift/core/describe.h"
 #include "highlift/core/project_io.h"
 #include "highlift/core/validate.h"
 #include "highlift/icsp/parser.h"
+#include "highlift/model/describe.h"
 
 namespace highlift {
 namespace {
 
 using testing::RunCli;
+using model::DescribeProject;
+using model::ProjectDescription;
 
 struct ExampleExpectation {
   std::string file;       // relative to the source dir

@@ -2,6 +2,7 @@
 // shaft totals and the unknown/wide parameter lists, against hand calculations.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <regex>
@@ -10,11 +11,11 @@
 #include <nlohmann/json.hpp>
 
 #include "common/run_cli.h"
-#include "highlift/core/describe.h"
 #include "highlift/core/project_io.h"
 #include "highlift/core/validate.h"
+#include "highlift/model/describe.h"
 
-namespace highlift {
+namespace highlift::model {
 namespace {
 
 // PDU -> STL -> shaft (2 m, 50 x 2 mm Ti) -> station gearbox 2:1 -> limiter -> GRA 200:1,
@@ -102,6 +103,23 @@ TEST(DescribeProject, SumsShaftLengthAndMassPerSide) {
   EXPECT_NEAR(d.shaft_mass, 3.5 * per_metre, 1e-9);
 }
 
+// The inertia and mass of a shaft given by its linear density (a composite tube) are the
+// lumped models' (torque_shaft.cc): J = m_l L r^2 at the mean radius r = (D - t)/2, m = m_l L;
+// the tube's density does not enter.
+TEST(DescribeProject, ShaftOfGivenLinearDensityHasTheLumpedModelsInertiaAndMass) {
+  nlohmann::json rig = nlohmann::json::parse(kRig);
+  for (auto& c : rig["components"])
+    if (c["id"] == "shaft_1") c["parameters"]["linear_density"] = "0.28 kg/m";
+  const ProjectDescription d = DescribeProject(ParseProject(rig.dump(), "rig.json"));
+  const double r = (0.05 - 0.002) / 2;
+  const auto shaft = std::find_if(d.inertias.begin(), d.inertias.end(),
+                                  [](const InertiaContribution& c) { return c.component == "shaft_1"; });
+  ASSERT_NE(shaft, d.inertias.end());
+  EXPECT_NEAR(shaft->inertia, 0.28 * 2.0 * r * r, 1e-15);
+  const double per_metre = 4420 * std::numbers::pi / 4 * (0.05 * 0.05 - 0.046 * 0.046);  // shaft_2: the tube
+  EXPECT_NEAR(d.shaft_mass, 0.28 * 2.0 + 1.5 * per_metre, 1e-9);
+}
+
 TEST(DescribeProject, ListsUnknownAndWideParametersWithProvenance) {
   const ProjectDescription d = DescribeProject(ParseProject(kRig, "rig.json"));
   const ParameterConcern* shear = nullptr;
@@ -186,4 +204,4 @@ TEST(InfoCommand, WithoutProjectExitsWithTwo) {
 }
 
 }  // namespace
-}  // namespace highlift
+}  // namespace highlift::model

@@ -24,6 +24,8 @@ class AngleGearboxModel final : public NamedModel {
     x.MapPort(c, "input", c.id + ".flange_a");
     x.MapPort(c, "output", c.id + ".flange_b");
   }
+
+  std::vector<EstimationLaw> EstimationLaws() const override { return GearboxEstimationLaws(); }
 };
 
 }  // namespace

@@ -25,6 +25,8 @@ class BranchGearboxModel final : public NamedModel {
     x.MapPort(c, "through", c.id + ".flange_b");
     x.MapPort(c, "branch", c.id + ".flange_branch");
   }
+
+  std::vector<EstimationLaw> EstimationLaws() const override { return GearboxEstimationLaws(); }
 };
 
 }  // namespace

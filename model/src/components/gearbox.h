@@ -3,6 +3,7 @@
 #pragma once
 
 #include "component_util.h"
+#include "gear_scaling.h"
 #include "highlift/model/laws.h"
 
 namespace highlift::model::components {
@@ -22,6 +23,15 @@ inline Scalars GearboxScalars(const Component& c, ExpansionContext& x) {
   s["J"] = Require(c, "inertia");
   s["eta_GE"] = GearTrainEfficiency(Require(c, "eta_mesh"), ValueOr(c, "meshes", 1.0));
   return s;
+}
+
+/// The gearboxes' estimation law: the inertia by gear scaling at a torque rating (input side).
+/// Dormant until the catalogue declares a parameter "torque_rating" for them: a law whose input
+/// the type does not have does not apply.
+inline std::vector<EstimationLaw> GearboxEstimationLaws() {
+  return {EstimateParameter("inertia", {FromParameter("torque_rating")},
+                            "physics: gear scaling J = 3e-4 + 7e-4 (tau_in / 117.6 N m)^(5/3) kg m2 (domain.md s6)",
+                            [](const auto& v) { return GearboxInertiaFromTorque(v[0]); })};
 }
 
 }  // namespace highlift::model::components

@@ -1,9 +1,31 @@
 // geared_rotary_actuator: a rotary actuator at a flap or slat station (actuator.h); its travel
 // is the output angle travel_angle.
 #include "actuator.h"
+#include "gear_scaling.h"
 
 namespace highlift::model::components {
 namespace {
+
+/// A flap panel moving along its track, seen as an inertia at the actuator input: the panel of
+/// mass m [kg] travels a stroke s [m] while the actuator output turns through phi_travel [rad],
+/// so its speed is v = (s/phi_travel) w_out and, with w_in = ratio w_out,
+/// J = m (s / phi_travel)^2 / ratio^2 [kg*m^2]. Example: 1200 kg, 2.5 m over 2.2 rad, station
+/// ratio 400: 9.7e-3 kg*m^2 at the shaft (domain.md s3).
+template <class T>
+T FlapInertiaAtInput(const T& m, const T& s, const T& phi_travel, const T& ratio) {
+  const T lever = s / phi_travel;
+  return m * lever * lever / (ratio * ratio);
+}
+
+/// Actuator mass from its output torque rating tau_out [N*m]: m = 20 kg (tau_out / 20 kN*m)^0.8
+/// (an estimate for a 20 kN*m GRA, 1 kN*m/kg; housing overhead makes mass grow slower than
+/// torque, volume ~ tau).
+template <class T>
+T MassFromTorque(const T& tau_out) {
+  using std::exp;
+  using std::log;
+  return T(20.0) * exp(T(0.8) * log(tau_out / T(20e3)));
+}
 
 class GearedRotaryActuatorModel final : public ActuatorModel {
  public:
@@ -32,6 +54,24 @@ class GearedRotaryActuatorModel final : public ActuatorModel {
     if (!p.Has("output_torque_rating")) return std::nullopt;
     return Allowable<Interval>{"rated output torque", p("output_torque_rating"), true};
   }
+  /// Input inertia by gear scaling at the input torque of its rating, the surface's inertia from
+  /// labels "flap_mass" and "flap_stroke", its mass by gear scaling.
+  std::vector<EstimationLaw> EstimationLaws() const override {
+    const LawInput tau_out = FromParameter("output_torque_rating"), ratio = FromParameter("ratio");
+    return {
+        EstimateParameter(
+            "input_inertia", {tau_out, ratio, FromParameter("eta_opposing")},
+            "physics: gear scaling J_in = 3e-4 + 7e-4 (tau_out/(ratio eta) / 117.6 N m)^(5/3) kg m2 (domain.md s6)",
+            [](const auto& v) { return GearboxInertiaFromTorque(v[0] / (v[1] * v[2])); }),
+        EstimateParameter("load_inertia",
+                          {FromLabel("flap_mass", dimensions::Mass()), FromLabel("flap_stroke", dimensions::Length()),
+                           FromParameter("travel_angle"), ratio},
+                          "physics: J = m (s/phi_travel)^2 / ratio^2 from labels flap_mass, flap_stroke",
+                          [](const auto& v) { return FlapInertiaAtInput(v[0], v[1], v[2], v[3]); }),
+        DeriveQuantity("mass", "kg", {tau_out}, "gear scaling m = 20 kg (tau_out/20 kN m)^0.8 (estimate)",
+                       [](const auto& v) { return MassFromTorque(v[0]); })};
+  }
+  std::vector<FitRule> FitRules() const override { return {{"input_inertia", "output_torque_rating"}}; }
 };
 
 }  // namespace

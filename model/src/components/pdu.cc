@@ -7,6 +7,14 @@
 namespace highlift::model::components {
 namespace {
 
+/// The inertia at the output: n motors of rotor inertia J_m [kg*m^2] through the PDU ratio
+/// (motor speed / output speed) plus the gears referred to the output J_g:
+/// J = n J_m ratio^2 + J_g [kg*m^2]. Example: 2 x 3e-4 x 20^2 + 0.02 = 0.26 kg*m^2 (domain.md s3).
+template <class T>
+T OutputInertia(const T& J_m, const T& n, const T& ratio, const T& J_g) {
+  return J_m * n * ratio * ratio + J_g;
+}
+
 class PduModel final : public NamedModel {
  public:
   PduModel() : NamedModel("pdu") {}
@@ -17,7 +25,7 @@ class PduModel final : public NamedModel {
   template <class T>
   Lumped<T> Law(const ParameterReader<T>& p) const {
     Lumped<T> out = DefaultLumped(p);
-    out.J = p("motor_inertia") * T(p.Nominal("motor_count")) * p("ratio") * p("ratio") + p("gear_inertia");
+    out.J = OutputInertia(p("motor_inertia"), T(p.Nominal("motor_count")), p("ratio"), p("gear_inertia"));
     return out;
   }
   HIGHLIFT_LUMPED_LAW
@@ -52,6 +60,14 @@ class PduModel final : public NamedModel {
     if (motor_lost_time) s["t_motor_lost"] = *motor_lost_time;
     x.Add("PDU", c.id, s, c.id);
     x.SetDriveUnit(c, {c.id + ".flange_left", c.id + ".flange_right", c.id + ".w_ref", c.id + ".phi", c.id + ".stop"});
+  }
+
+  /// Reported: the inertia at the output (its lumped law) over the domains of the motor count too.
+  std::vector<EstimationLaw> EstimationLaws() const override {
+    return {DeriveQuantity("output_inertia", "kg*m^2",
+                           {FromParameter("motor_inertia"), FromParameter("motor_count"), FromParameter("ratio"),
+                            FromParameter("gear_inertia")},
+                           "n J_m ratio^2 + J_g", [](const auto& v) { return OutputInertia(v[0], v[1], v[2], v[3]); })};
   }
 };
 

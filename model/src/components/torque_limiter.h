@@ -46,6 +46,8 @@ class TorqueLimiterModel : public NamedModel {
     x.MapPort(c, "input", c.id + ".flange_a");
     x.MapPort(c, "output", c.id + ".flange_b");
   }
+
+  std::vector<FitRule> FitRules() const override { return {{"inertia", "lockout_torque_extend"}}; }
 };
 
 }  // namespace highlift::model::components

@@ -133,6 +133,32 @@ class TorqueShaftModel final : public NamedModel {
     const ShaftValues data = ShaftData(c, beta);
     return {data.J, data.drag, data.c, data.d, true};
   }
+
+  /// The tube laws (laws.h) on the tube as given (d = D - 2t inside each law), on intervals with
+  /// their exact range: each grows with D and, while t <= D/2, with t (inputs 1 and 2); the drag
+  /// per length from a label "bearing_spacing" and a bearing drag of 0.05-0.2 N*m each
+  /// (domain.md s6, E).
+  std::vector<EstimationLaw> EstimationLaws() const override {
+    const LawInput G = FromParameter("shear_modulus"), rho = FromParameter("density"),
+                   D = FromParameter("outer_diameter"), t = FromParameter("wall_thickness"), L = FromParameter("length"),
+                   tau = FromParameter("allowable_shear_stress");
+    const auto tube = [](const auto& v) { return v[2].lo >= 0.0 && v[1].lo >= 2.0 * v[2].hi; };
+    return {
+        EstimateParameter("stiffness", {G, D, t, L}, "physics: c = G pi/32 (D^4 - d^4)/L, d = D - 2t",
+                          MonotoneLaw({1, 1, 1, -1}, tube,
+                                      [](const auto& v) { return ShaftStiffness(v[0], v[1], v[2], v[3]); })),
+        EstimateParameter("inertia", {rho, D, t, L}, "physics: J = rho pi/32 (D^4 - d^4) L",
+                          MonotoneLaw({1, 1, 1, 1}, tube, [](const auto& v) { return ShaftInertia(v[0], v[1], v[2], v[3]); })),
+        EstimateParameter("linear_density", {rho, D, t}, "physics: m_l = rho pi/4 (D^2 - d^2)",
+                          MonotoneLaw({1, 1, 1}, tube, [](const auto& v) { return ShaftMassPerLength(v[0], v[1], v[2]); })),
+        EstimateParameter("drag_per_length", {FromConstant(0.05, 0.1, 0.2), FromLabel("bearing_spacing", dimensions::Length())},
+                          "physics: bearing drag 0.05-0.2 N m each (domain.md s6) / bearing_spacing label",
+                          [](const auto& v) { return v[0] / v[1]; }),
+        DeriveQuantity("torque_capacity", "N*m", {tau, D, t}, "tau_allow pi/16 (D^4 - d^4)/D",
+                       MonotoneLaw({1, 1, 1}, tube, [](const auto& v) { return ShaftTorqueCapacity(v[0], v[1], v[2]); })),
+        DeriveQuantity("mass", "kg", {rho, D, t, L}, "rho pi/4 (D^2 - d^2) L",
+                       MonotoneLaw({1, 1, 1, 1}, tube, [](const auto& v) { return ShaftMass(v[0], v[1], v[2], v[3]); }))};
+  }
 };
 
 }  // namespace

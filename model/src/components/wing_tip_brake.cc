@@ -34,6 +34,8 @@ class WingTipBrakeModel final : public NamedModel {
     MapAB(c, x);
     x.AddTipBrake(c);
   }
+
+  std::vector<FitRule> FitRules() const override { return {{"inertia", "max_dynamic_torque"}}; }
 };
 
 }  // namespace

@@ -17,7 +17,9 @@
 
 #include "highlift/core/catalogue.h"
 #include "highlift/core/project.h"
+#include "highlift/model/estimation_laws.h"
 #include "highlift/model/interval.h"
+#include "highlift/model/laws.h"
 #include "highlift/model/network.h"
 #include "highlift/model/symbolic.h"
 
@@ -219,6 +221,10 @@ class ComponentModel {
   /// An actuator's travel at its input flange over its full travel, rad (the output angle times
   /// its ratio), as the propagator's expression; Sym::Missing for a type that is no actuator.
   virtual Sym InputTravel(const ParameterReader<Sym>& p) const;
+  /// Its estimation laws (estimation_laws.h), in the order the estimator applies them.
+  virtual std::vector<EstimationLaw> EstimationLaws() const { return {}; }
+  /// Its parameters that the estimator fits against a rating over the database parts of its type.
+  virtual std::vector<FitRule> FitRules() const { return {}; }
 };
 
 /// In a ComponentModel: overrides the three LumpedAtInput with the member template
@@ -266,5 +272,13 @@ struct MonitorThresholds {
   double t_detect = 0;        ///< s, detection latency
 };
 MonitorThresholds MonitorSettings(const Component* tip_sensor);
+
+/// The mass of a distributed segment (roles().segment) [kg]: its linear density times its length
+/// when it gives one, else the tube law (laws.h).
+template <class T>
+T SegmentMass(const ParameterReader<T>& p) {
+  if (p.Has("linear_density")) return p("linear_density") * p("length");
+  return ShaftMass(p("density"), p("outer_diameter"), p("wall_thickness"), p("length"));
+}
 
 }  // namespace highlift::model

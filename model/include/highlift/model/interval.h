@@ -1,8 +1,8 @@
 // A minimal outward-rounded interval for the component laws (model/laws.h, the reduced models). Every operation computes the
 // bounds in round-to-nearest and then widens each bound by one ulp (two for library functions),
 // which encloses the exact result because IEEE operations are correctly rounded and glibc's exp,
-// sqrt and tanh are accurate to within an ulp. Kept small on purpose: the laws here need
-// +, -, *, / by positive intervals, exp, sqrt, tanh, abs and hull; nothing else.
+// log, sqrt and tanh are accurate to within an ulp. Kept small on purpose: the laws here need
+// +, -, *, / by positive intervals, exp, log, sqrt, tanh, abs and hull; nothing else.
 #pragma once
 
 #include <algorithm>
@@ -70,6 +70,10 @@ inline Interval& operator-=(Interval& a, const Interval& b) { return a = a - b; 
 inline Interval& operator*=(Interval& a, const Interval& b) { return a = a * b; }
 
 inline Interval exp(const Interval& x) { return {std::max(0.0, Down(std::exp(x.lo), 2)), Up(std::exp(x.hi), 2)}; }
+inline Interval log(const Interval& x) {
+  HIGHLIFT_CHECK(x.lo > 0.0, "interval logarithm of a non-positive interval");
+  return {Down(std::log(x.lo), 2), Up(std::log(x.hi), 2)};
+}
 inline Interval sqrt(const Interval& x) {
   HIGHLIFT_CHECK(x.lo >= 0.0, "interval square root of a negative interval");
   return {std::max(0.0, Down(std::sqrt(x.lo))), Up(std::sqrt(x.hi))};

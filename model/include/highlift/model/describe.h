@@ -1,6 +1,8 @@
 // A readable description of a project (`highlift info`): components by type, shaft length and
 // mass per wing, the drive stations, the inertia reflected to the PDU output, and the parameters
-// that are still unknown or only loosely known, with their provenance.
+// that are still unknown or only loosely known, with their provenance. The inertias and shaft
+// masses come from the component models (component_model.h): each component's lumped law
+// (LumpedAtInput) at nominal values and on the parameter domains, the segment mass law.
 #pragma once
 
 #include <optional>
@@ -13,7 +15,7 @@
 #include "highlift/core/domain.h"
 #include "highlift/core/project.h"
 
-namespace highlift {
+namespace highlift::model {
 
 /// Options of DescribeProject.
 struct DescribeOptions {
@@ -32,7 +34,7 @@ struct SideSummary {
 /// One drive station: an actuator and the chain that drives it.
 struct StationSummary {
   std::string actuator;      ///< actuator component id, e.g. "gra_l3"
-  std::string type;          ///< geared_rotary_actuator or ballscrew_actuator
+  std::string type;          ///< its type (roles().actuator)
   std::string side;          ///< label "side", empty when absent
   std::string station;       ///< label "station", empty when absent
   double speed_ratio = 0;    ///< PDU output speed / actuator input speed (0 when not reachable)
@@ -44,7 +46,7 @@ struct StationSummary {
 struct InertiaContribution {
   std::string component;
   std::string type;
-  double inertia = 0;        ///< kg*m^2, the component's own inertia (sum of its parts)
+  double inertia = 0;        ///< kg*m^2, the component's own inertia at its input (its lumped law)
   double speed_ratio = 0;    ///< PDU output speed / speed of that inertia
   double reflected = 0;      ///< kg*m^2, inertia / speed_ratio^2
 };
@@ -86,7 +88,7 @@ struct ProjectDescription {
   std::vector<StationSummary> stations;
 
   double reflected_inertia = 0;     ///< kg*m^2 at the PDU output, sum of J / speed_ratio^2
-  Domain reflected_inertia_domain;  ///< kg*m^2, the same from the bounds of the inertia domains
+  Domain reflected_inertia_domain;  ///< kg*m^2, the same from the lumped laws on the parameter domains
   std::vector<InertiaContribution> inertias;  ///< per component, in project order
   std::vector<std::string> unreachable;       ///< components with inertia not reached from the PDU
 
@@ -107,4 +109,4 @@ struct ProjectDescription {
 /// not reached from the PDU are listed in `unreachable` instead of being reflected.
 ProjectDescription DescribeProject(const Project& project, const DescribeOptions& options = {});
 
-}  // namespace highlift
+}  // namespace highlift::model

@@ -1,18 +1,18 @@
-#include "highlift/core/describe.h"
+#include "highlift/model/describe.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <map>
-#include <numbers>
-#include <set>
+#include <type_traits>
 
 #include "highlift/core/catalogue.h"
 #include "highlift/core/graph.h"
 #include "highlift/core/text_table.h"
 #include "highlift/core/units.h"
+#include "highlift/model/component_model.h"
 
-namespace highlift {
+namespace highlift::model {
 
 std::string ToString(ParameterConcern::Kind kind) {
   return kind == ParameterConcern::Kind::kUnknown ? "unknown" : "wide";
@@ -22,137 +22,88 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-/// A parameter's point value for reports: the nominal value, else the middle of its domain
-/// (nullopt when the domain is unbounded). `guessed` is set when the middle was used.
-std::optional<double> PointValue(const Component& component, const std::string& name, bool* guessed = nullptr) {
-  const auto it = component.parameters.find(name);
-  std::optional<double> nominal;
-  Domain domain = Domain::Whole();
-  if (it != component.parameters.end()) {
-    nominal = it->second.nominal;
-    domain = it->second.domain;
-  } else if (const ComponentTypeSpec* type = FindComponentType(component.type)) {
-    if (const ParameterSpec* spec = type->FindParameter(name)) {
-      nominal = spec->nominal;
-      domain = spec->default_domain;
-    }
-  }
-  if (nominal) return nominal;
-  if (!domain.empty() && domain.bounded()) {
-    if (guessed) *guessed = true;
-    return domain.mid();
-  }
+/// A parameter of the component, or its catalogue default when the project has none for it.
+std::optional<Parameter> Effective(const Component& c, std::string_view name) {
+  if (const auto it = c.parameters.find(std::string(name)); it != c.parameters.end()) return it->second;
+  const ComponentTypeSpec* type = FindComponentType(c.type);
+  const ParameterSpec* spec = type ? type->FindParameter(std::string(name)) : nullptr;
+  if (!spec) return std::nullopt;
+  Parameter p;
+  p.nominal = spec->nominal;
+  p.domain = spec->default_domain;
+  p.note = spec->source;
+  return p;
+}
+
+/// The value of a parameter for reports: its nominal value, else the middle of a domain that was
+/// given (a catalogue default without a nominal value is the valid range: no value).
+std::optional<double> PointValue(const Component& c, std::string_view name) {
+  const std::optional<Parameter> p = Effective(c, name);
+  if (!p) return std::nullopt;
+  if (p->nominal) return p->nominal;
+  if (p->provenance != Provenance::kDefault && p->domain.bounded() && !p->domain.empty()) return p->domain.mid();
   return std::nullopt;
 }
 
-/// The domain of a parameter (given, else the catalogue default), or the point of its nominal.
-Domain DomainOf(const Component& component, const std::string& name) {
-  const auto it = component.parameters.find(name);
-  if (it != component.parameters.end()) {
-    if (!it->second.domain.empty()) return it->second.domain;
-    if (it->second.nominal) return Domain::Point(*it->second.nominal);
+/// A component's parameters as its laws read them: the point value (double), or its domain
+/// when bounded (Interval; else the point). A parameter without a value throws InputError, which
+/// leaves the quantity unknown.
+template <class T>
+class DescribeReader final : public ParameterReader<T> {
+ public:
+  explicit DescribeReader(const Component& c) : c_(c) {}
+  T operator()(std::string_view name) const override {
+    const double v = Nominal(name);
+    if constexpr (std::is_same_v<T, Interval>) {
+      const Domain d = Effective(c_, name)->domain;
+      if (d.bounded() && !d.empty() && d.contains(v)) return Interval(d.lo, d.hi);
+    }
+    return T(v);
   }
-  if (const ComponentTypeSpec* type = FindComponentType(component.type))
-    if (const ParameterSpec* spec = type->FindParameter(name)) return spec->default_domain;
-  return Domain::Whole();
-}
+  bool Has(std::string_view name) const override { return PointValue(c_, name).has_value(); }
+  double Nominal(std::string_view name) const override {
+    if (const auto v = PointValue(c_, name)) return *v;
+    throw InputError("component '" + c_.id + "' (" + c_.type + "): parameter '" + std::string(name) + "' has no value",
+                     c_.where);
+  }
 
-bool IsActuator(const std::string& type) {
-  return type == "geared_rotary_actuator" || type == "ballscrew_actuator";
-}
+ private:
+  const Component& c_;
+};
 
-/// Nominal, low and high value of a quantity built from parameters (each bound from the
-/// parameters' domain bounds; the formulas used here are monotone increasing in every input).
+/// Nominal value and range of a quantity from a component's laws.
 struct Estimate {
   double nominal = 0;
   double lo = 0;
   double hi = 0;
-  bool guessed = false;  ///< a nominal was taken from the middle of a domain
-  bool known = true;     ///< false when a needed value is unbounded
+  bool known = false;  ///< false when a value the law needs is unknown
 };
 
-Estimate Param(const Component& c, const std::string& name) {
-  Estimate e;
-  const std::optional<double> v = PointValue(c, name, &e.guessed);
-  const Domain d = DomainOf(c, name);
-  if (!v || !d.bounded()) {
-    e.known = false;
-    return e;
+/// The inertia of a component at its input flange (its lumped law), kg*m^2.
+Estimate ComponentInertia(const Component& c, const ComponentModel& m) {
+  try {
+    const Interval J = m.LumpedAtInput(DescribeReader<Interval>(c)).J;
+    return {m.LumpedAtInput(DescribeReader<double>(c)).J, J.lo, J.hi, true};
+  } catch (const InputError&) {
+    return {};
   }
-  e.nominal = *v;
-  e.lo = d.lo;
-  e.hi = d.hi;
-  return e;
 }
 
-/// Shaft geometry: J [kg*m^2] and mass [kg] of a torque_shaft from its inertia or tube.
-struct ShaftNumbers {
-  double length = 0;
-  Estimate inertia;
-  double mass = kNaN;
+/// Length and mass of a distributed segment (nominal values; a mass that cannot be computed is 0).
+struct SegmentNumbers {
+  double length = 0;  ///< m
+  double mass = 0;    ///< kg
 };
 
-ShaftNumbers Shaft(const Component& c) {
-  ShaftNumbers s;
+SegmentNumbers Segment(const Component& c) {
+  const DescribeReader<double> p(c);
+  SegmentNumbers s;
   s.length = PointValue(c, "length").value_or(0.0);
-  const auto tube = [&](double D, double t, double L, double rho) {
-    const double d = D - 2 * t;
-    return rho * std::numbers::pi / 32 * (std::pow(D, 4) - std::pow(d, 4)) * L;
-  };
-  const Estimate L = Param(c, "length");
-  const Estimate D = Param(c, "outer_diameter");
-  const Estimate t = Param(c, "wall_thickness");
-  const Estimate rho = Param(c, "density");
-  const auto given = c.parameters.find("inertia");
-  if (given != c.parameters.end() && given->second.nominal) {
-    s.inertia = Param(c, "inertia");
-  } else if (L.known && D.known && t.known && rho.known) {
-    s.inertia.nominal = tube(D.nominal, t.nominal, L.nominal, rho.nominal);
-    // J grows with D, L, rho and with t (for t < D/2).
-    s.inertia.lo = tube(D.lo, t.lo, L.lo, rho.lo);
-    s.inertia.hi = tube(D.hi, std::min(t.hi, D.hi / 2), L.hi, rho.hi);
-    s.inertia.guessed = L.guessed || D.guessed || t.guessed || rho.guessed;
-  } else {
-    s.inertia.known = false;
-  }
-  const std::optional<double> m_l = PointValue(c, "linear_density");
-  const auto given_m_l = c.parameters.find("linear_density");
-  if (given_m_l != c.parameters.end() && given_m_l->second.nominal && m_l) {
-    s.mass = *m_l * s.length;
-  } else if (D.known && t.known && rho.known) {
-    const double d = D.nominal - 2 * t.nominal;
-    s.mass = rho.nominal * std::numbers::pi / 4 * (D.nominal * D.nominal - d * d) * s.length;
+  try {
+    s.mass = SegmentMass(p);
+  } catch (const InputError&) {
   }
   return s;
-}
-
-/// Inertia of a component at its reference (input) flange, kg*m^2.
-Estimate ComponentInertia(const Component& c) {
-  if (c.type == "torque_shaft") return Shaft(c).inertia;
-  Estimate total;
-  bool any = false;
-  const ComponentTypeSpec* type = FindComponentType(c.type);
-  if (!type) return {0, 0, 0, false, false};
-  for (const ParameterSpec& spec : type->parameters) {
-    if (spec.kind != ParameterKind::kScalar || !(spec.dimension == dimensions::Inertia())) continue;
-    Estimate e = Param(c, spec.name);
-    if (!e.known) continue;
-    if (c.type == "pdu" && spec.name == "motor_inertia") {
-      // Motors turn `ratio` times faster than the output: J_out = n * J_m * ratio^2.
-      const Estimate ratio = Param(c, "ratio");
-      const double n = PointValue(c, "motor_count").value_or(2.0);
-      if (!ratio.known) continue;
-      e = {n * e.nominal * ratio.nominal * ratio.nominal, n * e.lo * ratio.lo * ratio.lo,
-           n * e.hi * ratio.hi * ratio.hi, e.guessed || ratio.guessed, true};
-    }
-    any = true;
-    total.nominal += e.nominal;
-    total.lo += e.lo;
-    total.hi += e.hi;
-    total.guessed = total.guessed || e.guessed;
-  }
-  if (!any) total.known = true;  // no inertia declared: a massless element
-  return total;
 }
 
 std::string Label(const Component& c, const std::string& key) {
@@ -248,16 +199,18 @@ ProjectDescription DescribeProject(const Project& project, const DescribeOptions
     return r.sides.back();
   };
   for (const auto& c : project.components) {
-    if (c.type == "torque_shaft") {
-      const ShaftNumbers s = Shaft(c);
+    const ComponentModel* m = FindComponentModel(c.type);
+    if (!m) continue;  // validation reports unknown types
+    if (m->roles().segment) {
+      const SegmentNumbers s = Segment(c);
       SideSummary& side = side_of(Label(c, "side"));
       side.shaft_count++;
       side.shaft_length += s.length;
-      side.shaft_mass += std::isnan(s.mass) ? 0.0 : s.mass;
+      side.shaft_mass += s.mass;
       r.shaft_count++;
       r.shaft_length += s.length;
-      r.shaft_mass += std::isnan(s.mass) ? 0.0 : s.mass;
-    } else if (IsActuator(c.type)) {
+      r.shaft_mass += s.mass;
+    } else if (m->roles().actuator) {
       side_of(Label(c, "side")).stations++;
     }
   }
@@ -278,7 +231,9 @@ ProjectDescription DescribeProject(const Project& project, const DescribeOptions
   double lo = 0, hi = 0;
   for (const auto& c : project.components) {
     const auto s = speed.find(c.id);
-    if (IsActuator(c.type)) {
+    const ComponentModel* m = FindComponentModel(c.type);
+    if (!m) continue;
+    if (m->roles().actuator) {
       StationSummary st;
       st.actuator = c.id;
       st.type = c.type;
@@ -292,7 +247,7 @@ ProjectDescription DescribeProject(const Project& project, const DescribeOptions
       }
       r.stations.push_back(std::move(st));
     }
-    const Estimate J = ComponentInertia(c);
+    const Estimate J = ComponentInertia(c, *m);
     if (!J.known || J.hi == 0) continue;
     if (s == speed.end() || !(s->second > 0) || !std::isfinite(s->second)) {
       r.unreachable.push_back(c.id);
@@ -314,15 +269,7 @@ ProjectDescription DescribeProject(const Project& project, const DescribeOptions
     for (const ParameterSpec& spec : type->parameters) {
       if (spec.kind != ParameterKind::kScalar) continue;
       r.parameters++;
-      const auto it = c.parameters.find(spec.name);
-      Parameter p;
-      if (it != c.parameters.end()) {
-        p = it->second;
-      } else {
-        p.nominal = spec.nominal;
-        p.domain = spec.default_domain;
-        p.note = spec.source;
-      }
+      const Parameter p = *Effective(c, spec.name);
       ParameterConcern concern;
       concern.component = c.id;
       concern.type = c.type;
@@ -489,4 +436,4 @@ nlohmann::json ProjectDescription::ToJson() const {
   return j;
 }
 
-}  // namespace highlift
+}  // namespace highlift::model
