@@ -46,6 +46,15 @@ std::string ToString(SimulationStatus status) {
   return "unknown";
 }
 
+std::string ToString(StartKind start) { return start == StartKind::kSteadyState ? "steady_state" : "given"; }
+
+StartKind ParseStartKind(const std::string& text) {
+  if (text == "given") return StartKind::kGiven;
+  if (text == "steady_state" || text == "steady-state") return StartKind::kSteadyState;
+  throw InputError("unknown start '" + text + "'; choose \"given\" (the start values) or \"steady_state\" "
+                   "(every inertia with a = 0, free speeds and twists solved)");
+}
+
 double EnergyBalance::Scale() const {
   return std::max({std::abs(source_work), std::abs(dissipated), impulsive_loss,
                    std::abs(kinetic_end - kinetic_start), std::abs(potential_end - potential_start),
@@ -104,7 +113,10 @@ std::vector<double> MemorySink::Series(const std::string& name) const {
 std::string CheckStructure(const Network& network, double start_time) {
   try {
     System system(network);
-    system.InitialState(start_time);
+    std::vector<double> y = system.InitialState(start_time);
+    // The initial equations a = a_start need the initial modes (a failure there is the run's).
+    if (system.HasInitialAccelerations() && system.HandleEvent(start_time, y.data(), true, nullptr, nullptr))
+      system.SolveInitialAccelerations(start_time, y, false);
     return "";
   } catch (const InputError& e) {
     return e.what();
@@ -427,6 +439,18 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
     }
     for (std::size_t i = 0; i < who.size(); ++i)
       report.events.push_back({options.start_time, "initial", who[i], changes[i]});
+    const std::string accelerations =
+        sys.SolveInitialAccelerations(options.start_time, y0, options.start == StartKind::kSteadyState);
+    if (!accelerations.empty()) {
+      changes.clear();
+      who.clear();
+      if (!sys.HandleEvent(options.start_time, y0.data(), true, &changes, &who)) {
+        report.element = sys.error_element();
+        fail(SimulationStatus::kModelError, sys.error(), options.start_time);
+        return finish();
+      }
+      report.events.push_back({options.start_time, "initial", "", accelerations});
+    }
     if (options.initial_equilibrium) {
       bool found = false;
       const double imbalance = sys.SolveEquilibrium(options.start_time, y0.data(), found);
