@@ -103,7 +103,7 @@ class SimulateCommand : public Command {
     app.add_option("--start", start_,
                    "given: the start values (with the elements' a_start); steady-state: every inertia starts "
                    "with a = 0 and every spring with a constant twist, the free speeds and angles solved "
-                   "(default: settings.initial)");
+                   "(default: given)");
     app.add_option("--atol", atol_,
                    "Absolute tolerance per unit nominal value: a state's absolute tolerance is atol times its "
                    "nominal value (default: settings.absolute_tolerance, else 1e-8)");
@@ -172,7 +172,7 @@ class SimulateCommand : public Command {
     }
     if (!std::isnan(rtol_)) options.relative_tolerance = rtol_;
     if (!std::isnan(atol_)) options.absolute_tolerance = atol_;
-    options.start = sim::ParseStartKind(start_.empty() ? project.settings.initial : start_);
+    if (!start_.empty()) options.start = sim::ParseStartKind(start_);
     options.energy = energy_;
     options.Validate();
     // Output rows: a tiny output_interval would write gigabytes (1e-300 s) or never end.
@@ -319,7 +319,7 @@ class SimulateCommand : public Command {
   double max_rows_ = 1e7;
   bool energy_ = false;
   double rtol_ = NAN, atol_ = NAN;  // NaN: not given
-  std::string start_;               // empty: settings.initial
+  std::string start_;               // empty: given
 };
 
 }  // namespace

@@ -429,26 +429,25 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
   };
 
   sink.Begin(columns);
-  // Initial event: modes at t0, consistent speeds.
+  // Initial event: modes at t0, consistent speeds; again after the start values change (the
+  // initial accelerations, the static equilibrium), without recording those mode changes.
   {
-    std::vector<std::string> changes, who;
-    if (!sys.HandleEvent(options.start_time, y0.data(), true, &changes, &who)) {
-      report.element = sys.error_element();
-      fail(SimulationStatus::kModelError, sys.error(), options.start_time);
-      return finish();
-    }
-    for (std::size_t i = 0; i < who.size(); ++i)
-      report.events.push_back({options.start_time, "initial", who[i], changes[i]});
-    const std::string accelerations =
-        sys.SolveInitialAccelerations(options.start_time, y0, options.start == StartKind::kSteadyState);
-    if (!accelerations.empty()) {
-      changes.clear();
-      who.clear();
+    auto initial_modes = [&](bool record) {
+      std::vector<std::string> changes, who;
       if (!sys.HandleEvent(options.start_time, y0.data(), true, &changes, &who)) {
         report.element = sys.error_element();
         fail(SimulationStatus::kModelError, sys.error(), options.start_time);
-        return finish();
+        return false;
       }
+      for (std::size_t i = 0; record && i < who.size(); ++i)
+        report.events.push_back({options.start_time, "initial", who[i], changes[i]});
+      return true;
+    };
+    if (!initial_modes(true)) return finish();
+    const std::string accelerations =
+        sys.SolveInitialAccelerations(options.start_time, y0, options.start == StartKind::kSteadyState);
+    if (!accelerations.empty()) {
+      if (!initial_modes(false)) return finish();
       report.events.push_back({options.start_time, "initial", "", accelerations});
     }
     if (options.initial_equilibrium) {
@@ -457,13 +456,7 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
       std::ostringstream what;
       if (found) {
         what << "static equilibrium: loads balanced to " << imbalance << " N*m";
-        changes.clear();
-        who.clear();
-        if (!sys.HandleEvent(options.start_time, y0.data(), true, &changes, &who)) {
-          report.element = sys.error_element();
-          fail(SimulationStatus::kModelError, sys.error(), options.start_time);
-          return finish();
-        }
+        if (!initial_modes(false)) return finish();
       } else {
         what << "no static equilibrium (largest torque imbalance " << imbalance
              << " N*m): the springs start untwisted";

@@ -759,7 +759,11 @@ std::vector<double> System::InitialState(double t0) {
 
 void System::StartState(const Eigen::VectorXd& phi, const Eigen::VectorXd& w, double* y, bool pressures) {
   for (std::size_t n = 0; n < nodes_.size(); ++n) {
-    if (nodes_[n].ground) continue;
+    if (nodes_[n].ground) {  // a Fixed at phi0 (the twists of the elements on it start from there)
+      eval_.phi[n] = nodes_[n].phi0;
+      eval_.w[n] = 0.0;
+      continue;
+    }
     const int u = start_unknown_[n];
     y[nodes_[n].s_phi] = eval_.phi[n] = phi[u];
     y[nodes_[n].s_w] = eval_.w[n] = w[u];
@@ -889,10 +893,14 @@ std::string System::SolveInitialAccelerations(double t, std::vector<double>& y, 
   };
   Eigen::VectorXd z = Eigen::VectorXd::Zero(k), r, r_probe;
   residual(z, r);
-  auto scale_of = [&](int i) { return 1e-9 * (1.0 + std::abs(equations[i].target) + std::abs(r[i])); };
+  // Accepted: each equation met to 1e-8 of its scale (the target and the residual at the start
+  // values); the iteration goes on while it improves, to 1e-15 of that scale.
   Eigen::VectorXd tolerance(m);
-  for (int i = 0; i < m; ++i) tolerance[i] = scale_of(i);
-  auto converged = [&](const Eigen::VectorXd& res) { return (res.cwiseAbs().array() <= tolerance.array()).all(); };
+  for (int i = 0; i < m; ++i) tolerance[i] = 1e-8 * (1.0 + std::abs(equations[i].target) + std::abs(r[i]));
+  auto within = [&](const Eigen::VectorXd& res, double fraction) {
+    return (res.cwiseAbs().array() <= fraction * tolerance.array()).all();
+  };
+  auto converged = [&](const Eigen::VectorXd& res) { return within(res, 1.0); };
   auto jacobian = [&](Eigen::MatrixXd& jac) {
     jac.resize(m, k);
     for (int j = 0; j < k; ++j) {
@@ -932,7 +940,7 @@ std::string System::SolveInitialAccelerations(double t, std::vector<double>& y, 
       throw InputError(msg.str());
     }
   }
-  for (int iteration = 0; iteration < 20 && !converged(r); ++iteration) {
+  for (int iteration = 0; iteration < 20 && !within(r, 1e-7); ++iteration) {
     if (iteration > 0) jacobian(jac);
     if (involved.empty()) break;
     const Eigen::MatrixXd J = involved_matrix(jac);

@@ -10,7 +10,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstdio>
 #include <string>
 
 #include "highlift/core/error.h"
@@ -61,7 +60,6 @@ std::string ErrorOf(const Network& net, StartKind start = StartKind::kGiven) {
   try {
     Simulate(net, start);
   } catch (const InputError& e) {
-    std::printf("%s\n", e.what());
     return e.what();
   }
   return "";

@@ -143,6 +143,29 @@ TEST(SimulateCli, ExperimentBlockAndToleranceOptions) {
   EXPECT_NE(r.err.find("relative_tolerance"), std::string::npos) << r.err;
 }
 
+// --start steady-state: the free start values solved for a = 0 (and constant spring twists);
+// a start value that contradicts it is named.
+TEST(SimulateCli, SteadyStateStart) {
+  auto r = highlift::testing::RunCli(
+      {"simulate", "tests/sim/msl/InitialConditions.json", "--start", "steady-state", "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["start"], "steady_state");
+  bool solved = false;
+  for (const auto& e : j["events"])
+    solved = solved || e["what"].get<std::string>().find("steady-state start: 4 equations on 2 free start values "
+                                                         "(m3.s, m4.s)") != std::string::npos;
+  EXPECT_TRUE(solved) << j["events"].dump();
+  r = highlift::testing::RunCli({"simulate", "tests/sim/msl/TranslationalDamper.json", "--start", "steady-state"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("the steady-state start: der(mass1.v) = 0 does not hold at the start: a = -250"),
+            std::string::npos)
+      << r.err;
+  r = highlift::testing::RunCli({"simulate", "tests/sim/msl/First.json", "--start", "rest"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("unknown start 'rest'; choose \"given\""), std::string::npos) << r.err;
+}
+
 // validate and simulate apply one structural check: they accept and reject the same networks
 // (a massless node between springs and an IdealPlanetary with an open ring are valid; a torque
 // on a massless node is not), with the same message.
