@@ -100,6 +100,10 @@ class SimulateCommand : public Command {
         ->check(NumberIn(1, 1e12));
     app.add_flag("--energy", energy_, "Energy bookkeeping: energy.* columns and the balance in the report");
     app.add_option("--rtol", rtol_, "Relative tolerance (default: the experiment's Tolerance or settings.relative_tolerance)");
+    app.add_option("--start", start_,
+                   "given: the start values (with the elements' a_start); steady-state: every inertia starts "
+                   "with a = 0 and every spring with a constant twist, the free speeds and angles solved "
+                   "(default: given)");
     app.add_option("--atol", atol_,
                    "Absolute tolerance per unit nominal value: a state's absolute tolerance is atol times its "
                    "nominal value (default: settings.absolute_tolerance, else 1e-8)");
@@ -168,6 +172,7 @@ class SimulateCommand : public Command {
     }
     if (!std::isnan(rtol_)) options.relative_tolerance = rtol_;
     if (!std::isnan(atol_)) options.absolute_tolerance = atol_;
+    options.start = sim::ParseStartKind(start_.empty() ? project.settings.initial : start_);  // --start over settings
     options.energy = energy_;
     options.Validate();
     // Output rows: a tiny output_interval would write gigabytes (1e-300 s) or never end.
@@ -207,6 +212,7 @@ class SimulateCommand : public Command {
       j["scenario"] = scenario != nullptr ? scenario->name : "experiment";
       j["relative_tolerance"] = options.relative_tolerance;
       j["absolute_tolerance"] = options.absolute_tolerance;
+      j["start"] = sim::ToString(options.start);
       j["status"] = sim::ToString(report.status);
       j["ok"] = report.ok();
       j["message"] = report.message;
@@ -313,6 +319,7 @@ class SimulateCommand : public Command {
   double max_rows_ = 1e7;
   bool energy_ = false;
   double rtol_ = NAN, atol_ = NAN;  // NaN: not given
+  std::string start_;               // empty: given
 };
 
 }  // namespace

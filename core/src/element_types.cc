@@ -89,6 +89,10 @@ std::vector<ComponentTypeSpec> MakeElementTypes() {
                          "false: phi_start is a guess (MSL fixed = false), used where the initial "
                          "equations leave the angle free"),
                     Flag("w_fixed", true, "false: w_start is a guess (MSL fixed = false)"),
+                    Start("a_start", AngularAcceleration(), "rad/s^2",
+                          "initial acceleration (MSL a(start, fixed = true)): the initial equation "
+                          "a = a_start determines start values that are not fixed"),
+                    Flag("a_fixed", true, "false: a_start is ignored (a is not a state; MSL fixed = false)"),
                     Nominal("phi_nominal", angle, "rad",
                             "nominal angle (MSL phi(nominal)): absolute tolerance of phi = "
                             "absolute_tolerance * phi_nominal (absent: 1)"),

@@ -47,6 +47,10 @@ void AppendTranslationalTypes(std::vector<ComponentTypeSpec>& t) {
                     Start("v_start", velocity, "m/s", "initial speed (fixed when given)"),
                     Flag("s_fixed", true, "false: s_start is a guess (MSL fixed = false)"),
                     Flag("v_fixed", true, "false: v_start is a guess (MSL fixed = false)"),
+                    Start("a_start", velocity / Time(), "m/s^2",
+                          "initial acceleration (MSL a(start, fixed = true)): the initial equation "
+                          "a = a_start determines start values that are not fixed"),
+                    Flag("a_fixed", true, "false: a_start is ignored (a is not a state; MSL fixed = false)"),
                     Nominal("s_nominal", Length(), "m",
                             "nominal position: absolute tolerance of s = absolute_tolerance * s_nominal (absent: 1)"),
                     Nominal("v_nominal", velocity, "m/s",

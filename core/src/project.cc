@@ -115,7 +115,7 @@ std::string DescribeDifference(const Project& a, const Project& b) {
   const Settings &sa = a.settings, &sb = b.settings;
   if (sa.shaft_elements != sb.shaft_elements || sa.relative_tolerance != sb.relative_tolerance ||
       sa.output_interval != sb.output_interval || sa.structural_damping != sb.structural_damping ||
-      sa.values != sb.values)
+      sa.initial != sb.initial || sa.values != sb.values)
     return "settings differ";
   auto components = [](const Component& x, const Component& y) {
     auto d = Compare(x, y);

@@ -426,7 +426,7 @@ class Reader {
   Settings ReadSettings(const Node& n) const {
     RequireObject(n, "'settings'");
     CheckKeys(n, {"shaft_elements", "relative_tolerance", "absolute_tolerance", "output_interval",
-                  "structural_damping", "values"},
+                  "structural_damping", "initial", "values"},
               "the settings");
     Settings s;
     if (n.has("shaft_elements")) {
@@ -456,6 +456,12 @@ class Reader {
       if (!(s.structural_damping >= 0 && s.structural_damping < 1))
         Fail(n["structural_damping"], "settings 'structural_damping' (d = beta*c) must lie in [0, 1) s "
                                       "(e.g. \"0.4 ms\"; 0: no damping beyond the components' own)");
+    }
+    if (n.has("initial")) {
+      s.initial = String(n["initial"], "settings 'initial'");
+      if (s.initial != "given" && s.initial != "steady_state")
+        Fail(n["initial"], "settings 'initial' must be \"given\" (the start values) or \"steady_state\" (every "
+                           "inertia starts with a = 0), got \"" + s.initial + "\"");
     }
     if (n.has("values")) s.values = Values(n["values"], "settings value");
     return s;
@@ -1003,6 +1009,7 @@ nlohmann::json ProjectToJson(const Project& project) {
                    {"output_interval", project.settings.output_interval},
                    {"structural_damping", project.settings.structural_damping}};
   if (project.settings.absolute_tolerance) settings["absolute_tolerance"] = *project.settings.absolute_tolerance;
+  if (project.settings.initial != "given") settings["initial"] = project.settings.initial;
   if (!project.settings.values.empty()) settings["values"] = project.settings.values;
   o["settings"] = settings;
   if (!project.components.empty()) {

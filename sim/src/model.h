@@ -228,6 +228,12 @@ class Element {
     (void)position;
     (void)speed;
   }
+  /// Initial equations on accelerations, as (node, a_start): MSL a(start = a_start, fixed =
+  /// true) of an Inertia or Mass. They determine start values the equations above leave free
+  /// (System::SolveInitialAccelerations).
+  virtual void InitialAccelerations(std::vector<std::pair<int, double>>& acceleration) const {
+    (void)acceleration;
+  }
   /// The same with the evaluated signals at the start time (a source whose initial angle or
   /// speed follows its input); by default InitialEquations().
   virtual void InitialEquationsAt(const Eval& e, std::vector<InitialEquation>& position,

@@ -65,6 +65,8 @@ class Inertia : public Element {
     // phi_fixed / w_fixed = false: the start value is a guess (translational Mass: s_fixed...).
     phi_guess = Given(e, "phi_fixed") && Param(e, "phi_fixed") == 0;
     w_guess = Given(e, "w_fixed") && Param(e, "w_fixed") == 0;
+    // a_start holds as an initial equation unless a_fixed = false (a is no state: then unused).
+    if (Given(e, "a_start") && !(Given(e, "a_fixed") && Param(e, "a_fixed") == 0)) a_start = Param(e, "a_start");
     if (Given(e, "phi_nominal")) phi_nominal = Param(e, "phi_nominal");
     if (Given(e, "w_nominal")) w_nominal = Param(e, "w_nominal");
   }
@@ -94,6 +96,9 @@ class Inertia : public Element {
     if (!std::isnan(phi_start) && phi_guess) position.push_back({n, phi_start});
     if (!std::isnan(w_start) && w_guess) speed.push_back({n, w_start});
   }
+  void InitialAccelerations(std::vector<std::pair<int, double>>& acceleration) const override {
+    if (!std::isnan(a_start)) acceleration.push_back({n, a_start});
+  }
   std::vector<std::string> OutputNames() const override { return {"phi", "w", "a"}; }
   void Outputs(const Eval& e, double* out) const override {
     out[0] = e.phi[n];
@@ -102,6 +107,7 @@ class Inertia : public Element {
   }
   double J;
   double phi_start = NAN, w_start = NAN;
+  double a_start = NAN;  ///< rad/s^2, the initial equation a = a_start (NaN: none)
   double phi_nominal = NAN, w_nominal = NAN;
   bool phi_guess = false, w_guess = false;  ///< the start values are guesses (fixed = false)
   int n = -1;

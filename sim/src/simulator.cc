@@ -46,6 +46,15 @@ std::string ToString(SimulationStatus status) {
   return "unknown";
 }
 
+std::string ToString(StartKind start) { return start == StartKind::kSteadyState ? "steady_state" : "given"; }
+
+StartKind ParseStartKind(const std::string& text) {
+  if (text == "given") return StartKind::kGiven;
+  if (text == "steady_state" || text == "steady-state") return StartKind::kSteadyState;
+  throw InputError("unknown start '" + text + "'; choose \"given\" (the start values) or \"steady_state\" "
+                   "(every inertia with a = 0, free speeds and twists solved)");
+}
+
 double EnergyBalance::Scale() const {
   return std::max({std::abs(source_work), std::abs(dissipated), impulsive_loss,
                    std::abs(kinetic_end - kinetic_start), std::abs(potential_end - potential_start),
@@ -104,7 +113,10 @@ std::vector<double> MemorySink::Series(const std::string& name) const {
 std::string CheckStructure(const Network& network, double start_time) {
   try {
     System system(network);
-    system.InitialState(start_time);
+    std::vector<double> y = system.InitialState(start_time);
+    // The initial equations a = a_start need the initial modes (a failure there is the run's).
+    if (system.HasInitialAccelerations() && system.HandleEvent(start_time, y.data(), true, nullptr, nullptr))
+      system.SolveInitialAccelerations(start_time, y, false);
     return "";
   } catch (const InputError& e) {
     return e.what();
@@ -352,7 +364,8 @@ int RootFunction(sunrealtype t, N_Vector y, sunrealtype* g, void* user) {
 }
 
 // The start of a run, shared by Simulator::Run and ComputeStartValues: the initial event (modes
-// at t0, consistent speeds) and, with options.initial_equilibrium, the static equilibrium and
+// at t0, consistent speeds), the initial equations on accelerations and, with
+// options.initial_equilibrium, the static equilibrium and
 // the event iteration at it. `y` holds InitialState on entry and the start on return; false
 // with `error` when the model cannot start.
 bool StartState(System& sys, const SimulationOptions& options, std::vector<double>& y,
@@ -363,6 +376,19 @@ bool StartState(System& sys, const SimulationOptions& options, std::vector<doubl
     return false;
   }
   for (std::size_t i = 0; i < who.size(); ++i) events.push_back({options.start_time, "initial", who[i], changes[i]});
+  // The initial equations on accelerations (a_start, or every one 0 for a steady-state start),
+  // then the modes again at the new start values, without recording those mode changes.
+  const std::string accelerations =
+      sys.SolveInitialAccelerations(options.start_time, y, options.start == StartKind::kSteadyState);
+  if (!accelerations.empty()) {
+    changes.clear();
+    who.clear();
+    if (!sys.HandleEvent(options.start_time, y.data(), true, &changes, &who)) {
+      error = sys.error();
+      return false;
+    }
+    events.push_back({options.start_time, "initial", "", accelerations});
+  }
   if (!options.initial_equilibrium) return true;
   bool found = false;
   const double imbalance = sys.SolveEquilibrium(options.start_time, y.data(), found);

@@ -7,6 +7,7 @@
 #include <map>
 #include <numeric>
 #include <set>
+#include <sstream>
 
 #include <Eigen/Sparse>
 
@@ -762,24 +763,253 @@ std::vector<double> System::InitialState(double t0) {
   };
   Eigen::VectorXd phi = solve(position, position_owner, known_phi, position_guess, "angles");
   Eigen::VectorXd w = solve(speed, speed_owner, known_w, speed_guess, "speeds");
+  start_position_ = std::move(position);
+  start_speed_ = std::move(speed);
+  for (const auto& row : holonomic) {
+    start_position_.push_back(row);
+    start_speed_.push_back({row.row, 0.0});
+  }
+  start_unknown_ = std::move(unknown);
+  start_unknowns_ = n_unknown;
   std::vector<double> y(n_states_, 0.0);
+  StartState(phi, w, y.data(), true);
+  return y;
+}
+
+void System::StartState(const Eigen::VectorXd& phi, const Eigen::VectorXd& w, double* y, bool pressures) {
   for (std::size_t n = 0; n < nodes_.size(); ++n) {
-    if (nodes_[n].ground) continue;
-    y[nodes_[n].s_phi] = phi[unknown[n]];
-    y[nodes_[n].s_w] = w[unknown[n]];
-    eval_.phi[n] = phi[unknown[n]];
-    eval_.w[n] = w[unknown[n]];
+    if (nodes_[n].ground) {  // a Fixed at phi0 (the twists of the elements on it start from there)
+      eval_.phi[n] = nodes_[n].phi0;
+      eval_.w[n] = 0.0;
+      continue;
+    }
+    const int u = start_unknown_[n];
+    y[nodes_[n].s_phi] = eval_.phi[n] = phi[u];
+    y[nodes_[n].s_w] = eval_.w[n] = w[u];
   }
   for (const auto& h : hnodes_)
     if (h.s_p >= 0) {
-      y[h.s_p] = std::isnan(h.p_start) ? 1e5 : h.p_start;
+      if (pressures) y[h.s_p] = std::isnan(h.p_start) ? 1e5 : h.p_start;
       eval_.p[&h - hnodes_.data()] = y[h.s_p];
     } else {
       eval_.p[&h - hnodes_.data()] = h.p_fixed;
     }
-  for (const auto& el : elements_) el->InitStates(eval_, y.data());
-  if (!massless_.empty()) BalanceMasslessTwists(y.data());
-  return y;
+  for (const auto& el : elements_) el->InitStates(eval_, y);
+  if (!massless_.empty()) BalanceMasslessTwists(y);
+}
+
+bool System::HasInitialAccelerations() const {
+  std::vector<std::pair<int, double>> acceleration;
+  for (const auto& el : elements_) el->InitialAccelerations(acceleration);
+  return !acceleration.empty();
+}
+
+std::string System::StartValueName(int node, bool speed) const {
+  for (const auto& el : elements_) {
+    const auto nodes = el->Nodes();
+    if ((el->type == "Inertia" || el->type == "Mass") && !nodes.empty() && nodes[0] == node)
+      return el->id + (el->type == "Mass" ? (speed ? ".v" : ".s") : (speed ? ".w" : ".phi"));
+  }
+  return "flange '" + nodes_[node].name + "' " + (speed ? "speed" : "angle");
+}
+
+namespace {
+
+// The null space of the linear initial equations in the unknowns: one column per free
+// unknown (a non-pivot column of the full-pivoting LU), 1 at that unknown, 0 at the other
+// free ones; `free_unknown` names the free unknown of each column.
+Eigen::MatrixXd StartNullSpace(const std::vector<Element::InitialEquation>& rows, const std::vector<int>& unknown,
+                               int n_unknown, std::vector<int>& free_unknown) {
+  free_unknown.clear();
+  if (rows.empty()) {
+    for (int k = 0; k < n_unknown; ++k) free_unknown.push_back(k);
+    return Eigen::MatrixXd::Identity(n_unknown, n_unknown);
+  }
+  Eigen::MatrixXd E = Eigen::MatrixXd::Zero(static_cast<int>(rows.size()), n_unknown);
+  for (std::size_t i = 0; i < rows.size(); ++i)
+    for (auto [node, coef] : rows[i].row)
+      if (unknown[node] >= 0) E(static_cast<int>(i), unknown[node]) += coef;
+  Eigen::FullPivLU<Eigen::MatrixXd> lu(E);
+  lu.setThreshold(1e-10);
+  const Eigen::MatrixXd kernel = lu.kernel();
+  if (lu.rank() == n_unknown) return Eigen::MatrixXd::Zero(n_unknown, 0);
+  // Eigen's kernel has the identity on the non-pivot columns, in the order of permutationQ.
+  for (int c = 0; c < kernel.cols(); ++c) free_unknown.push_back(lu.permutationQ().indices()[lu.rank() + c]);
+  return kernel;
+}
+
+}  // namespace
+
+std::string System::SolveInitialAccelerations(double t, std::vector<double>& y, bool steady_state) {
+  // The equations: residual = value - target, either a node acceleration or a state derivative.
+  struct Equation {
+    int node = -1;       ///< a node acceleration, or
+    int state = -1;      ///< the derivative of a state (a spring twist)
+    double target = 0.0;
+    std::string what;    ///< for messages: "element 'J1' (Inertia): a = a_start = 2 rad/s^2"
+    std::string unit;
+  };
+  std::vector<Equation> equations;
+  for (const auto& el : elements_) {
+    std::vector<std::pair<int, double>> acceleration;
+    el->InitialAccelerations(acceleration);
+    for (auto [node, a] : acceleration) {
+      std::ostringstream what;
+      const std::string unit = el->type == "Mass" ? " m/s^2" : " rad/s^2";
+      what << "element '" << el->id << "' (" << el->type << "): the initial equation a = a_start = " << a << unit;
+      equations.push_back({node, -1, a, what.str(), unit});
+    }
+  }
+  std::vector<char> has_equation(nodes_.size(), 0);
+  for (const auto& eq : equations) has_equation[eq.node] = 1;
+  if (steady_state) {
+    for (std::size_t n = 0; n < nodes_.size(); ++n)
+      if (!nodes_[n].ground && !nodes_[n].massless && nodes_[n].J > 0 && !has_equation[n])
+        equations.push_back({static_cast<int>(n), -1, 0.0,
+                             "the steady-state start: der(" + StartValueName(static_cast<int>(n), true) + ") = 0", ""});
+    std::vector<double> stiffness;
+    for (const auto& el : elements_) {
+      stiffness.assign(el->NumStates(), 0.0);
+      if (el->NumStates() > 0) el->StateStiffness(stiffness.data());
+      for (int k = 0; k < el->NumStates(); ++k)
+        if (stiffness[k] > 0)
+          equations.push_back({-1, el->state_offset + k, 0.0,
+                               "the steady-state start: der(" + el->StateNames()[k] + ") = 0 of element '" + el->id +
+                                   "' (" + el->type + ")", ""});
+    }
+  }
+  if (equations.empty()) return "";
+
+  // The unknowns: the free directions of the angles and of the speeds.
+  std::vector<int> free_phi, free_w;
+  const Eigen::MatrixXd Np = StartNullSpace(start_position_, start_unknown_, start_unknowns_, free_phi);
+  const Eigen::MatrixXd Nw = StartNullSpace(start_speed_, start_unknown_, start_unknowns_, free_w);
+  std::vector<int> unknown_node(start_unknowns_, -1);
+  for (std::size_t n = 0; n < nodes_.size(); ++n)
+    if (start_unknown_[n] >= 0) unknown_node[start_unknown_[n]] = static_cast<int>(n);
+  const int kp = static_cast<int>(Np.cols()), k = kp + static_cast<int>(Nw.cols());
+  auto unknown_name = [&](int j) {
+    return j < kp ? StartValueName(unknown_node[free_phi[j]], false) : StartValueName(unknown_node[free_w[j - kp]], true);
+  };
+  Eigen::VectorXd phi0(start_unknowns_), w0(start_unknowns_);
+  for (std::size_t n = 0; n < nodes_.size(); ++n)
+    if (start_unknown_[n] >= 0) {
+      phi0[start_unknown_[n]] = y[nodes_[n].s_phi];
+      w0[start_unknown_[n]] = y[nodes_[n].s_w];
+    }
+  const int m = static_cast<int>(equations.size());
+  std::vector<double> ydot(n_states_, 0.0), state = y;
+  auto residual = [&](const Eigen::VectorXd& z, Eigen::VectorXd& r) {
+    StartState(phi0 + Np * z.head(kp), w0 + Nw * z.tail(k - kp), state.data(), false);
+    cache_valid_ = false;
+    if (!Evaluate(t, state.data(), ydot.data()))
+      throw InputError("the initial equations on accelerations cannot be evaluated: " + error_);
+    r.resize(m);
+    for (int i = 0; i < m; ++i) {
+      const Equation& eq = equations[i];
+      r[i] = (eq.node >= 0 ? eval_.acc[eq.node] : ydot[eq.state]) - eq.target;
+    }
+  };
+  Eigen::VectorXd z = Eigen::VectorXd::Zero(k), r, r_probe;
+  residual(z, r);
+  // Accepted: each equation met to 1e-8 of its scale (the target and the residual at the start
+  // values); the iteration goes on while it improves, to 1e-15 of that scale.
+  Eigen::VectorXd tolerance(m);
+  for (int i = 0; i < m; ++i) tolerance[i] = 1e-8 * (1.0 + std::abs(equations[i].target) + std::abs(r[i]));
+  auto within = [&](const Eigen::VectorXd& res, double fraction) {
+    return (res.cwiseAbs().array() <= fraction * tolerance.array()).all();
+  };
+  auto converged = [&](const Eigen::VectorXd& res) { return within(res, 1.0); };
+  auto jacobian = [&](Eigen::MatrixXd& jac) {
+    jac.resize(m, k);
+    for (int j = 0; j < k; ++j) {
+      const double delta = 1e-6 * (1.0 + std::abs(z[j]));
+      Eigen::VectorXd probe = z;
+      probe[j] += delta;
+      residual(probe, r_probe);
+      jac.col(j) = (r_probe - r) / delta;
+    }
+    residual(z, r);
+  };
+  Eigen::MatrixXd jac;
+  jacobian(jac);
+  // The free values the equations involve, and whether the equations determine them.
+  std::vector<int> involved;
+  const double jac_max = k > 0 ? jac.cwiseAbs().maxCoeff() : 0.0;
+  for (int j = 0; j < k; ++j)
+    if (jac.col(j).cwiseAbs().maxCoeff() > 1e-12 * (1.0 + jac_max)) involved.push_back(j);
+  auto involved_matrix = [&](const Eigen::MatrixXd& full) {
+    Eigen::MatrixXd J(m, static_cast<int>(involved.size()));
+    for (std::size_t c = 0; c < involved.size(); ++c) J.col(static_cast<int>(c)) = full.col(involved[c]).normalized();
+    return J;
+  };
+  if (!involved.empty()) {
+    Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(involved_matrix(jac));
+    qr.setThreshold(1e-9);
+    if (qr.rank() < static_cast<int>(involved.size())) {
+      std::vector<std::string> names;
+      for (int j : involved) names.push_back(unknown_name(j));
+      std::ostringstream msg;
+      msg << equations[0].what << ": the initial equations on accelerations"
+          << (steady_state ? " (steady-state start)" : "") << " are under-determined: " << qr.rank()
+          << " independent equation" << (qr.rank() == 1 ? "" : "s") << " for the " << involved.size()
+          << " free start values " << Join(names)
+          << "; fix " << (involved.size() - qr.rank() == 1 ? "one" : std::to_string(involved.size() - qr.rank()))
+          << " of them (give phi_start / w_start, s_start / v_start with fixed = true)";
+      throw InputError(msg.str());
+    }
+  }
+  for (int iteration = 0; iteration < 20 && !within(r, 1e-7); ++iteration) {
+    if (iteration > 0) jacobian(jac);
+    if (involved.empty()) break;
+    const Eigen::MatrixXd J = involved_matrix(jac);
+    Eigen::VectorXd norms(static_cast<int>(involved.size()));
+    for (std::size_t c = 0; c < involved.size(); ++c) norms[static_cast<int>(c)] = jac.col(involved[c]).norm();
+    const Eigen::VectorXd step = J.colPivHouseholderQr().solve(-r).cwiseQuotient(norms);
+    if (!step.allFinite()) break;
+    Eigen::VectorXd trial = z;
+    for (std::size_t c = 0; c < involved.size(); ++c) trial[involved[c]] += step[static_cast<int>(c)];
+    // Damped: halve the step until the residual decreases.
+    double lambda = 1.0;
+    for (int halving = 0; halving < 12; ++halving) {
+      residual(trial, r_probe);
+      if (r_probe.norm() < r.norm()) break;
+      lambda *= 0.5;
+      for (std::size_t c = 0; c < involved.size(); ++c) trial[involved[c]] = z[involved[c]] + lambda * step[static_cast<int>(c)];
+    }
+    if (!(r_probe.norm() < r.norm())) break;
+    z = trial;
+    r = r_probe;
+  }
+  if (!converged(r)) {
+    int worst = 0;
+    for (int i = 0; i < m; ++i)
+      if (std::abs(r[i]) / tolerance[i] > std::abs(r[worst]) / tolerance[worst]) worst = i;
+    const Equation& eq = equations[worst];
+    const double value = r[worst] + eq.target;
+    std::ostringstream msg;
+    bool untouched = true;
+    for (int j : involved) untouched = untouched && jac(worst, j) == 0.0;
+    msg << eq.what << " does not hold at the start: " << (eq.node >= 0 ? "a" : "the derivative") << " = " << value
+        << eq.unit;
+    if (untouched)
+      msg << " whatever the free start values; the initial equations are over-determined: free a start value "
+             "that determines it (phi_fixed / w_fixed = false, or leave phi_start / w_start out) or remove "
+          << (steady_state ? "the steady-state start" : "a_start");
+    else
+      msg << " at best (no solution); change a_start or the start values and loads";
+    throw InputError(msg.str());
+  }
+  residual(z, r);
+  std::copy(state.begin(), state.end(), y.begin());
+  cache_valid_ = false;
+  std::ostringstream account;
+  account << (steady_state ? "steady-state start" : "initial accelerations") << ": " << m << " equation"
+          << (m == 1 ? "" : "s") << " on " << involved.size() << " free start value" << (involved.size() == 1 ? "" : "s");
+  std::vector<std::string> names;
+  for (int j : involved) names.push_back(unknown_name(j));
+  if (!names.empty()) account << " (" << Join(names) << ")";
+  return account.str();
 }
 
 double System::SolveEquilibrium(double t, double* y, bool& found) {

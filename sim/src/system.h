@@ -38,6 +38,22 @@ class System {
   /// contradictory initial values).
   std::vector<double> InitialState(double t0);
 
+  /// True when some element declares an initial equation a = a_start
+  /// (Element::InitialAccelerations).
+  bool HasInitialAccelerations() const;
+
+  /// The initial equations on derivatives, after InitialState and the initial modes: a =
+  /// a_start of the elements that declare it and, for a steady-state start, a = 0 at every node
+  /// with inertia and a constant twist (der(phi_rel) = 0) of every spring. The unknowns are the
+  /// start values that InitialState's equations leave free (the null space of those linear
+  /// equations: values not given and guesses, fixed = false); they are solved by Gauss-Newton
+  /// (difference-quotient Jacobian) and y is updated. Free values that no equation involves keep
+  /// their start values. Returns a one-line account for the event list ("" when there are no
+  /// such equations). Throws InputError naming the element and the remedy when the equations are
+  /// over-determined (one that no free start value changes does not hold), under-determined
+  /// (free values they involve are not all determined) or have no solution.
+  std::string SolveInitialAccelerations(double t, std::vector<double>& y, bool steady_state);
+
   /// The static equilibrium at rest: the spring twists (Element::TwistStates) for which every
   /// node acceleration vanishes with the speeds of y (Gauss-Newton, difference-quotient
   /// Jacobian), written into y when the equilibrium is found. Returns the largest torque
@@ -130,6 +146,17 @@ class System {
   /// Pressure derivatives of the hydraulic nodes, after the elements' Forces().
   bool HydraulicDerivatives(double* ydot);
   bool ProjectSpeeds(double* y);
+  /// The start state from node angles and speeds (indexed like start_unknown_): element
+  /// states (InitStates), hydraulic start pressures when `pressures`, balanced massless nodes.
+  void StartState(const Eigen::VectorXd& phi, const Eigen::VectorXd& w, double* y, bool pressures);
+  /// "J1.phi" (an Inertia or Mass on node n) or "flange 'x' angle": a start value for messages.
+  std::string StartValueName(int node, bool speed) const;
+
+  /// The linear initial equations of the last InitialState (with the holonomic rows) and the
+  /// map node -> unknown (-1 for ground nodes): SolveInitialAccelerations frees their null space.
+  std::vector<Element::InitialEquation> start_position_, start_speed_;
+  std::vector<int> start_unknown_;
+  int start_unknowns_ = 0;
 
   std::vector<std::unique_ptr<Element>> elements_;
   std::vector<Element*> assuming_;  ///< elements with HasAssumptions()

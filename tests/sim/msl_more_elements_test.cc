@@ -6,6 +6,8 @@
 
 #include <array>
 #include <cmath>
+#include <cstdio>
+#include <filesystem>
 #include <functional>
 #include <numbers>
 
@@ -543,6 +545,111 @@ TEST(StartValues, GuessesFillWhatTheFixedValuesLeaveFree) {
   EXPECT_NEAR(r.Col("b.w").front(), 1.0, 1e-12);    // the guess 5 contradicts w_a = 2 = 2 w_b
   EXPECT_NEAR(r.Col("b.phi").front(), 3.0, 1e-9);  // the guess fills the free angle
   EXPECT_NEAR(r.Col("a.phi").front(), 6.0, 1e-9);
+}
+
+// ------------------------------------------------------------------------------------------
+// Examples written from the MSL 4.0 examples the elements appear in (tests/sim/msl/*.json, each
+// naming its MSL example in its description), run as `highlift simulate` runs an element
+// network: the experiment's times and tolerance, the settings' absolute tolerance and start.
+
+Result RunExample(const std::string& name) {
+  const Project project =
+      LoadProject(std::filesystem::path(HIGHLIFT_SOURCE_DIR) / "tests" / "sim" / "msl" / (name + ".json"));
+  const Experiment& x = project.experiment.value();
+  SimulationOptions o;
+  o.start_time = x.start_time;
+  o.stop_time = x.stop_time;
+  o.output_interval = x.interval.value_or(project.settings.output_interval);
+  o.relative_tolerance = x.tolerance.value_or(project.settings.relative_tolerance);
+  if (project.settings.absolute_tolerance) o.absolute_tolerance = *project.settings.absolute_tolerance;
+  EXPECT_EQ(CheckStructure(NetworkFromProject(project), o.start_time), "") << name;
+  Result r;
+  Simulator sim(NetworkFromProject(project));
+  r.report = sim.Run(o, r.sink);
+  EXPECT_TRUE(r.report.ok()) << name << ": " << r.report.FullReport();
+  return r;
+}
+
+// Translational.Examples.Damper: v = 10 exp(-25 t) against the damper; the damper with the
+// parallel spring and the SpringDamper both give x'' + 25 x' + (x - 3.5) = 0, x(0) = 3.5,
+// x'(0) = 10: x = 3.5 + A (exp(r1 t) - exp(r2 t)), r1,2 = (-25 +- sqrt(621)) / 2, A = 10 / sqrt(621).
+TEST(MslExamples, TranslationalDamperAsTheClosedForm) {
+  const Result r = RunExample("TranslationalDamper");
+  const double root = std::sqrt(621.0), r1 = (-25 + root) / 2, r2 = (-25 - root) / 2, A = 10 / root;
+  EXPECT_LT(r.Error("mass1.v", [](double t) { return 10 * std::exp(-25 * t); }), 1e-6);
+  EXPECT_LT(r.Error("mass1.s", [](double t) { return 3.5 + 0.4 * (1 - std::exp(-25 * t)); }), 1e-8);
+  for (const char* mass : {"mass2", "mass3"}) {
+    EXPECT_LT(r.Error(std::string(mass) + ".s", [&](double t) { return 3.5 + A * (std::exp(r1 * t) - std::exp(r2 * t)); }),
+              1e-8)
+        << mass;
+    EXPECT_LT(
+        r.Error(std::string(mass) + ".v", [&](double t) { return A * (r1 * std::exp(r1 * t) - r2 * std::exp(r2 * t)); }),
+        1e-6)
+        << mass;
+  }
+  // The spring force of the parallel pair and of the SpringDamper: c (s_rel - s_rel0) = -(x - 3.5).
+  EXPECT_LT(r.Error("spring2.f", [&](double t) { return -A * (std::exp(r1 * t) - std::exp(r2 * t)); }), 1e-8);
+}
+
+// Translational.Examples.Sensors: a = 10 sin(8 pi t) from rest.
+TEST(MslExamples, TranslationalSensorsAsTheClosedForm) {
+  const Result r = RunExample("TranslationalSensors");
+  const double w = 8 * kPi, k = 10 / w;
+  auto s = [&](double t) { return k * t - k / w * std::sin(w * t); };
+  EXPECT_LT(r.Error("positionSensor1.s", s), 1e-7);
+  EXPECT_LT(r.Error("positionSensor2.s", s), 1e-7);  // MSL: 1 m ahead (L = 1 m); here the same
+  EXPECT_LT(r.Error("speedSensor1.v", [&](double t) { return k * (1 - std::cos(w * t)); }), 1e-7);
+  EXPECT_LT(r.Error("mass.a", [&](double t) { return 10 * std::sin(w * t); }), 1e-6);
+}
+
+// Rotational.Examples.ElasticBearing against an independent integration of its three inertias
+// (the gear's output flange is massless and kinematic: phi_b = phi_h + (phi_s - phi_h) / 3).
+TEST(MslExamples, ElasticBearingAgainstAnIndependentIntegration) {
+  const Result r = RunExample("ElasticBearing");
+  constexpr double Js = 1, Jh = 5, Jl = 50, c = 1e3, c2 = 1e5, d2 = 5, ratio = 3;
+  // x = phi_s, w_s, phi_h, w_h, phi_l, w_l
+  auto f = [&](double t, const std::array<double, 6>& x) {
+    const double tau = 100 * std::min(t / 5, 1.0);
+    const double T = c * (x[4] - x[2] - (x[0] - x[2]) / ratio);
+    return std::array<double, 6>{x[1], (tau + T / ratio) / Js, x[3], ((1 - 1 / ratio) * T - c2 * x[2] - d2 * x[3]) / Jh,
+                                 x[5], -T / Jl};
+  };
+  std::array<double, 6> x{};
+  double t = 0.0;
+  const auto ws = r.Col("shaft.w"), wh = r.Col("housing.w"), wl = r.Col("load.w"), tau = r.Col("multiSensor.tau"),
+             w_sensor = r.Col("multiSensor.w"), power = r.Col("multiSensor.power");
+  double err_s = 0, err_h = 0, err_l = 0, err_tau = 0, range_h = 0, range_tau = 0;
+  for (std::size_t i = 0; i < r.t().size(); ++i) {
+    RungeKutta(f, x, t, r.t()[i], 1e-4);
+    const double sensor_tau = -(c2 * x[2] + d2 * x[3]);  // multiSensor.tau = flange_a.tau = -springDamper.tau
+    err_s = std::max(err_s, std::abs(ws[i] - x[1]));
+    err_h = std::max(err_h, std::abs(wh[i] - x[3]));
+    err_l = std::max(err_l, std::abs(wl[i] - x[5]));
+    err_tau = std::max(err_tau, std::abs(tau[i] - sensor_tau));
+    range_h = std::max(range_h, std::abs(x[3]));
+    range_tau = std::max(range_tau, std::abs(sensor_tau));
+    EXPECT_NEAR(w_sensor[i], wh[i], 1e-12);
+    EXPECT_NEAR(power[i], tau[i] * wh[i], 1e-9 * (1 + std::abs(power[i])));
+  }
+  std::printf("ElasticBearing: largest errors shaft.w %.2e, housing.w %.2e (range %.2e), load.w %.2e rad/s, "
+              "multiSensor.tau %.2e N*m (range %.2e)\n", err_s, err_h, range_h, err_l, err_tau, range_tau);
+  EXPECT_NEAR(x[1], ws.back(), 1e-5);  // the shaft runs at about 280 rad/s at 10 s
+  EXPECT_LT(err_s, 1e-5);
+  EXPECT_LT(err_l, 1e-5);
+  EXPECT_LT(err_h, 1e-4 * range_h);
+  EXPECT_LT(err_tau, 1e-4 * range_tau);
+}
+
+// Translational.Examples.InitialConditions (first system), with the rest positions solved from
+// a_start = 0 (the speeds fixed, as in MSL) instead of given by hand: m3.s = 3 m, m4.s = 7 m, at
+// rest throughout; the steady-state start without a_start and v_start finds the same.
+TEST(MslExamples, InitialConditionsAtRestFromAStart) {
+  const Result r = RunExample("InitialConditions");
+  EXPECT_LT(r.Error("m3.s", [](double) { return 3.0; }), 1e-9);
+  EXPECT_LT(r.Error("m4.s", [](double) { return 7.0; }), 1e-9);
+  EXPECT_LT(r.Error("m3.v", [](double) { return 0.0; }), 1e-9);
+  EXPECT_LT(r.Error("m4.v", [](double) { return 0.0; }), 1e-9);
+  EXPECT_LT(r.Error("s2.f", [](double) { return 0.0; }), 1e-7);
 }
 
 }  // namespace

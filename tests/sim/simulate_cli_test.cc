@@ -143,19 +143,71 @@ TEST(SimulateCli, ExperimentBlockAndToleranceOptions) {
   EXPECT_NE(r.err.find("relative_tolerance"), std::string::npos) << r.err;
 }
 
+// --start steady-state: the free start values solved for a = 0 (and constant spring twists);
+// a start value that contradicts it is named.
+TEST(SimulateCli, SteadyStateStart) {
+  auto r = highlift::testing::RunCli(
+      {"simulate", "tests/sim/msl/InitialConditions.json", "--start", "steady-state", "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["start"], "steady_state");
+  bool solved = false;
+  for (const auto& e : j["events"])
+    solved = solved || e["what"].get<std::string>().find("steady-state start: 4 equations on 2 free start values "
+                                                         "(m3.s, m4.s)") != std::string::npos;
+  EXPECT_TRUE(solved) << j["events"].dump();
+  r = highlift::testing::RunCli({"simulate", "tests/sim/msl/TranslationalDamper.json", "--start", "steady-state"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("the steady-state start: der(mass1.v) = 0 does not hold at the start: a = -250"),
+            std::string::npos)
+      << r.err;
+  r = highlift::testing::RunCli({"simulate", "tests/sim/msl/First.json", "--start", "rest"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("unknown start 'rest'; choose \"given\""), std::string::npos) << r.err;
+}
+
+// The steady-state start from the project file (settings "initial"); --start overrides it; a
+// value other than "given" or "steady_state" is an input error naming the key.
+TEST(SimulateCli, SteadyStateStartFromTheProjectFile) {
+  std::ifstream in(std::string(HIGHLIFT_SOURCE_DIR) + "/tests/sim/msl/InitialConditions.json");
+  nlohmann::json doc = nlohmann::json::parse(in);
+  doc["settings"]["initial"] = "steady_state";
+  const auto dir = std::filesystem::path(HIGHLIFT_BINARY_DIR) / "tests" / "sim";
+  std::filesystem::create_directories(dir);
+  const auto file = dir / "InitialConditionsSteady.json";
+  std::ofstream(file) << doc.dump(1);
+  auto r = highlift::testing::RunCli({"simulate", file.string(), "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out)["start"], "steady_state");
+  r = highlift::testing::RunCli({"simulate", file.string(), "--start", "given", "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out)["start"], "given");
+  doc["settings"]["initial"] = "steady";
+  std::ofstream(file) << doc.dump(1);
+  r = highlift::testing::RunCli({"simulate", file.string()});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("settings 'initial' must be \"given\" (the start values) or \"steady_state\""),
+            std::string::npos)
+      << r.err;
+}
+
 // validate and simulate apply one structural check: they accept and reject the same networks
 // (a massless node between springs and an IdealPlanetary with an open ring are valid; a torque
 // on a massless node is not), with the same message.
 TEST(ValidateAndSimulate, AgreeOnEveryStructureExample) {
   for (const std::string file : {"tests/sim/msl/SeriesSprings.json", "tests/sim/structure/PlanetaryOpenRing.json",
-                                 "tests/sim/structure/MasslessDrivenNode.json"}) {
+                                 "tests/sim/structure/MasslessDrivenNode.json", "tests/sim/msl/InitialConditions.json",
+                                 "tests/sim/msl/ElasticBearing.json", "tests/sim/structure/OverDeterminedAStart.json"}) {
     const auto v = highlift::testing::RunCli({"validate", file});
     const auto s = highlift::testing::RunCli({"simulate", file});
     EXPECT_EQ(v.exit_code, s.exit_code) << file << "\nvalidate: " << v.err << "\nsimulate: " << s.err;
-    const bool valid = file.find("MasslessDriven") == std::string::npos;
+    const bool massless = file.find("MasslessDriven") != std::string::npos;
+    const bool valid = !massless && file.find("OverDetermined") == std::string::npos;
     EXPECT_EQ(v.exit_code, valid ? 0 : 2) << file << ": " << v.err;
     if (!valid) {
-      const std::string m = "element 'torque' (ConstantTorque) acts on it";
+      const std::string m = massless ? "element 'torque' (ConstantTorque) acts on it"
+                                     : "element 'inertia' (Inertia): the initial equation a = a_start = 1 rad/s^2 "
+                                       "does not hold at the start: a = 4 rad/s^2";
       EXPECT_NE(v.err.find(m), std::string::npos) << v.err;
       EXPECT_NE(s.err.find(m), std::string::npos) << s.err;
     }

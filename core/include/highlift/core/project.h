@@ -119,6 +119,9 @@ struct Settings {
   /// times its nominal value); absent: the simulator's default (SimulationOptions).
   std::optional<double> absolute_tolerance;
   double output_interval = 1e-3;      ///< s, simulator output step
+  /// Simulator start: "given" (the start values) or "steady_state" (every inertia starts with
+  /// a = 0, free speeds and twists solved; sim::StartKind).
+  std::string initial = "given";
   /// s, stiffness-proportional structural damping beta of the elastic elements of a
   /// transmission that give no damping of their own (d = beta*c): the damping ratio of a mode at
   /// w rad/s is beta*w/2. 4e-4 s: 1.6 % at the 13 Hz first mode of the A380-class example.

@@ -28,6 +28,15 @@
 
 namespace highlift::sim {
 
+/// How the run starts. kGiven: the start values of the elements (and their a_start initial
+/// equations). kSteadyState: besides, every inertia starts with a = 0 and every spring with a
+/// constant twist; the free speeds and angles are solved for it (an inertia with a damper under
+/// a constant torque starts at w = tau / d, a spring under a constant torque at its deflection).
+enum class StartKind { kGiven, kSteadyState };
+std::string ToString(StartKind start);  ///< "given", "steady_state"
+/// Reads "given", "steady_state" (or "steady-state"); InputError listing them otherwise.
+StartKind ParseStartKind(const std::string& text);
+
 struct SimulationOptions {
   double start_time = 0.0;           // s
   double stop_time = 1.0;            // s
@@ -53,6 +62,8 @@ struct SimulationOptions {
   /// acting at the start time (for instance airloads held by a brake), found after the
   /// initial modes; off: the springs start untwisted (or at their given start values).
   bool initial_equilibrium = false;
+  /// The start values as given (with the elements' a_start) or a steady-state start (StartKind).
+  StartKind start = StartKind::kGiven;
   /// Adds the energy columns energy.kinetic, energy.potential (J), energy.loss_power,
   /// energy.source_power (W) and energy.impulsive_loss (J) and fills SimulationReport::energy.
   bool energy = false;
