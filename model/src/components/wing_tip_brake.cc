@@ -17,10 +17,10 @@ class WingTipBrakeModel final : public NamedModel {
   }
   HIGHLIFT_PEAK_ALLOWABLE_LAW
 
-  /// Its static capacity holds the wing against the drive and against its airloads.
+  /// Its static capacity holds the wing against its airloads back-driving the shaft.
   std::vector<SettingRule> SettingRules() const override {
-    return {{"static_capacity", ">= 1.5 x the larger of the wing's operating and back-drive torques (domain.md s6)",
-             SettingRule::Against::kWingOperatingOrBackdrive, 1.5, 1.5, kInfinity}};
+    return {{"static_capacity", ">= 1.5 x wing back-drive torque (domain.md s6)", SettingRule::Against::kWingBackdrive,
+             1.5, 1.5, kInfinity}};
   }
 
   void Expand(const Component& c, ExpansionContext& x) const override {

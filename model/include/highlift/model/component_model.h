@@ -122,9 +122,7 @@ struct SettingRule {
     kOperating,         ///< the largest operating torque over every load case
     kOperatingExtend,   ///< ... over the extend load cases (every case when there is none)
     kOperatingRetract,  ///< ... over the retract load cases (every case when there is none)
-    /// the larger of the wing's operating torque (at its root, every load case) and its back-drive
-    /// torque (its airloads back-driving the shaft through the aiding efficiencies, no friction)
-    kWingOperatingOrBackdrive,
+    kWingBackdrive,     ///< the wing's back-drive torque: its airloads through the aiding efficiencies
   };
   std::string parameter;  ///< the setting, e.g. "lockout_torque_extend"
   std::string rule;       ///< the rule in words with its source
