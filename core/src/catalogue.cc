@@ -58,10 +58,10 @@ const PortSpec* ComponentTypeSpec::FindPort(std::string_view port) const {
   return nullptr;
 }
 
-bool ComponentTypeSpec::geared() const {
+const PortSpec* ComponentTypeSpec::GearedPort() const {
   for (const auto& p : ports)
-    if (!p.speed_ratio.empty()) return true;
-  return false;
+    if (!p.speed_ratio.empty()) return &p;
+  return nullptr;
 }
 
 const ParameterSpec* ComponentTypeSpec::FindParameter(std::string_view parameter) const {

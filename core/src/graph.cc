@@ -27,7 +27,7 @@ double RelativeToInput(const Component& c, std::string_view port, bool* known) {
 
 bool Geared(const Component& c) {
   const ComponentTypeSpec* type = FindComponentType(c.type);
-  return type && type->geared();
+  return type && type->GearedPort() != nullptr;
 }
 
 bool DriveUnit(const Component& c) {

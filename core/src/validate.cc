@@ -51,10 +51,9 @@ std::string Join(const std::vector<std::string>& items) {
 
 /// The name of a gear's geared flange (the one turning 1/ratio as fast as "input").
 std::string GearedPort(const Component& c) {
-  if (const ComponentTypeSpec* type = FindComponentType(c.type))
-    for (const auto& p : type->ports)
-      if (!p.speed_ratio.empty()) return p.name;
-  return "output";
+  const ComponentTypeSpec* type = FindComponentType(c.type);
+  const PortSpec* port = type ? type->GearedPort() : nullptr;
+  return port ? port->name : "output";
 }
 
 bool IsActuator(const std::string& type) { return RolesOf(type).actuator; }

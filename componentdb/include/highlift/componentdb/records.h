@@ -40,7 +40,7 @@ struct Quantity {
 
 /// A part: one existing (or plausible, tagged E) component of a catalogue type.
 struct Part {
-  std::string type;          ///< catalogue type name, e.g. "geared_rotary_actuator"
+  std::string type;          ///< catalogue type name (JSON "type" of the component)
   std::string designation;   ///< unique name, e.g. "GRA-200-A380C"
   std::string program;       ///< aircraft program or class, e.g. "A380-class flap"
   std::string supplier;      ///< supplier where known, else empty

@@ -133,8 +133,9 @@ struct ComponentTypeSpec {
   std::vector<ParameterRelation> relations;
 
   const PortSpec* FindPort(std::string_view port) const;
-  /// True when a flange has a speed_ratio: the type is a gear, entered at its flange "input".
-  bool geared() const;
+  /// The first flange with a speed_ratio (the type is a gear, entered at its flange "input"),
+  /// or nullptr.
+  const PortSpec* GearedPort() const;
   const ParameterSpec* FindParameter(std::string_view parameter) const;
 };
 
