@@ -22,6 +22,11 @@ ROOT = pathlib.Path(__file__).resolve().parent.parent
 EXAMPLES = ROOT / "examples"
 
 
+LIMIT_NOTE = ("estimate (E), the catalogue rule: actuator output side, 2.5 x the rated output torque; a jam "
+              "passes the station limiter's end stop, up to 1.6 x 1.25 x 1.1 = 2.2 x the operating torque "
+              "(domain.md s6)")
+
+
 def q(value, note, lo=None, hi=None):
     """A quantity in the object form with its provenance note (domain.md tag)."""
     out = {}
@@ -420,12 +425,9 @@ def requirements(wings, stations, d):
         "rupture_wtb_shaft", f"1.5 * peak.rupture_wtb.{last} <= {tube_capacity_expression(last)}",
         "peak torque in the outboard shaft when the left WTB stops the back-driven shaft after "
         "the rupture, times 1.5, stays below the tube's ultimate torque"))
-    # No requirement compares the rupture's dynamic peak with the WTB's static capacity: the
-    # brake slips above its max_dynamic_torque during the stop, and holding the back-driven shaft
-    # afterwards is the static requirement wtb_capacity_<side> above (static capacity >= 1.5 x the
-    # wing back-drive torque). The former "rupture_wtb_hold" (peak.rupture_wtb.wtb_left <=
-    # wtb_left.static_capacity) was mis-stated: with the reduced-model spin-up (issue 3) the
-    # rigid-stop peak is 2.7 kN*m against 600 N*m of static capacity.
+    # No requirement compares the rupture's peak with the WTB's static capacity: the peak at the
+    # brake is its own friction torque (the single-DOF estimate is capped there, where the brake
+    # slips), and holding the wing afterwards is the static requirement wtb_capacity_<side> above.
     return reqs
 
 
@@ -559,12 +561,14 @@ def a380_flaps():
             "coulomb_torque": q("0.2 N*m", f"{E}: actuator input side, part of the drag budget of the wing"),
             "output_torque_rating": q("20 kN*m", f"{E}: actuator output side, station output torque about "
                                       "20 kN m"),
+            "limit_output_torque": q("50 kN*m", LIMIT_NOTE),
             "travel_angle": q("2.2 rad", f"{E}: 2.5 m stroke over 2.2 rad GRA output rotation"),
         },
         "wtb": {
             "static_capacity": q("600 N*m", f"{E}: at least 1.5 x 360 N m = 550 N m", "550 N*m",
                                  "700 N*m"),
-            "max_dynamic_torque": q("550 N*m", f"{E}: 1.5 x 360 N m wing back-drive torque",
+            "max_dynamic_torque": q("550 N*m", f"{E}: 1.5 x 360 N m opposing wing torque, the larger of it "
+                                    "and the back-drive torque",
                                     "500 N*m", "700 N*m"),
             "engagement_latency": q("100 ms", f"{E}: engagement 50-150 ms after the trigger",
                                     "50 ms", "150 ms"),
@@ -762,6 +766,7 @@ def a320_flaps():
             "coulomb_torque": q("0.2 N*m", f"{E}: actuator input side, part of the drag budget of the wing"),
             "output_torque_rating": q("6 kN*m", f"{E}: actuator output side, station output torque about "
                                       "6 kN m"),
+            "limit_output_torque": q("15 kN*m", LIMIT_NOTE),
             "travel_angle": q("2.2 rad", f"{E}: 105 shaft revolutions / 300"),
         },
         "wtb": {
@@ -878,6 +883,7 @@ def a320_slats():
             "coulomb_torque": q("0.1 N*m", f"{E}: actuator input side; a 2 kN m slat actuator drags less "
                                 "than the catalogue's 20 kN m flap GRA (0.2 N m); part of the drag budget"),
             "output_torque_rating": q("2 kN*m", f"{E}: actuator output side, actuator output 2 kN m"),
+            "limit_output_torque": q("5 kN*m", LIMIT_NOTE),
             "travel_angle": q("2.5 rad", f"{E}: 2.5 rad pinion rotation, 60 shaft revolutions"),
         },
         "wtb": {

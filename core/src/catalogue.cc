@@ -693,6 +693,15 @@ ComponentTypeSpec GearedRotaryActuator() {
                    .Valid(0, 1e4)
                    .Source("domain.md s3 (E): station output torque about 20 kN m")
                    .Side(ReferenceSide::kActuatorOutput));
+  ps.push_back(Param("limit_output_torque", "tau_out_lim", Torque(), "kN*m",
+                     "limit (jam) output torque: the structural load it takes without damage when a jam puts the "
+                     "station limiter's end-stop torque through it")
+                   .Nominal(50)
+                   .Default(45, 75)
+                   .Valid(0, 1e5)
+                   .Source("estimate: 2.5 x the rated output torque; a jam passes the station limiter's end stop, up to "
+                           "1.6 x 1.25 x 1.1 = 2.2 x the operating torque (domain.md s6 trip 1.3-1.6 x, +-10 %)")
+                   .Side(ReferenceSide::kActuatorOutput));
   ps.push_back(Param("travel_angle", "phi_travel", Dimensionless(), "rad", "output rotation for full travel")
                    .Nominal(2.2)
                    .Default(1.5, 3)

@@ -749,11 +749,13 @@ class Builder {
         setting("", "lockout_torque_extend", "extend", "");
         if (HasParam(c, "lockout_torque_retract")) setting("_retract", "lockout_torque_retract", "retract", " in retract");
       } else if (roles.tip_brake && HasParam(c, "static_capacity")) {
-        // Holding: the airloads of the wing's actuators back-drive the shaft through their aiding
-        // efficiencies, friction neglected (as reduced_models' rule for the static capacity).
+        // Holding (as reduced_models' rule for the static capacity): the larger of the wing's
+        // operating torque at its root and the back-drive of its actuators' airloads through
+        // their aiding efficiencies, friction neglected.
         int wing = i;
         while (wing >= 0 && peaks_->nodes[wing].parent > 0) wing = peaks_->nodes[wing].parent;
         std::vector<Sym> terms;
+        if (wing >= 0) terms.push_back(operating(wing, ""));
         for (const auto& aiding : aidings) {
           const Sym t = -Backdrive(wing, aiding);
           double zero = 0.0;
@@ -764,7 +766,9 @@ class Builder {
         Sym sum = terms.front();
         for (std::size_t t = 1; t < terms.size(); ++t) sum = max(sum, terms[t]);
         const Sym holding = Define(p + "holding_torque", "N*m",
-                                   "back-driving torque of the wing's airloads the brake holds, the largest load case", sum);
+                                   "torque the brake holds, the larger of the wing's operating torque at its root and the "
+                                   "back-driving torque of its airloads, the largest load case",
+                                   sum);
         Define(p + "holding_margin", "N*m", "brake margin, static capacity minus holding torque",
                Var(p + "static_capacity") - holding, Whole());
       } else if (roles.drive_unit) {
@@ -932,9 +936,19 @@ class Builder {
         pc.kind == "jam" ? "static part of the jam: PDU stall torque capped by the system torque limiters"
                          : "static part after the rupture: the airload's back-drive torque",
         p + "static_torque == " + static_torque);
+    // A stop that slips (the friction brake after a rupture) passes at most its slipping torque.
+    std::string total = p + "torque + " + p + "static_torque", total_what = "dynamic plus static";
+    if (pc.kind == "rupture" && !pc.brake.empty()) {
+      const Component& stop = *Find(pc.brake);
+      if (const model::ComponentModel* m = ModelOf(stop)) {
+        if (const std::optional<Sym> limit = m->StopTorqueLimit(Reader(*this, stop)); limit && !limit->missing()) {
+          total = "min(" + total + ", " + limit->Text() + ")";
+          total_what += ", at most what " + stop.id + " passes before it slips";
+        }
+      }
+    }
     Derived(p + "total_torque", "N*m", Whole());
-    Law(p + "total_torque", "peak load of '" + pc.name + "', dynamic plus static",
-        p + "total_torque == " + p + "torque + " + p + "static_torque");
+    Law(p + "total_torque", "peak load of '" + pc.name + "', " + total_what, p + "total_torque == " + total);
     // The load of each component on the path (at the PDU speed); in a jam, what lies behind a
     // station torque limiter sees at most its end-stop torque.
     std::string cap;

@@ -469,7 +469,12 @@ PeakReport AnalysePeaks(const Project& project, const PeakOptions& options) {
     pc.first_mode_share = fm.oscillator.first_mode_share;
     pc.tau_dynamic.nominal = PeakTorque(pc.w_max, fm.oscillator);
     pc.note = "static part: airload back-drive torque through the aiding efficiencies, friction neglected; the brake "
-              "is taken as a rigid stop (it slips above its max_dynamic_torque, so this bounds the peak from above)";
+              "stops the part as a rigid stop until the shaft torque reaches what it can pass, where it slips";
+    if (const model::ComponentModel* m = detail::ModelOf(wtb)) {
+      const auto nominal_limit = m->StopTorqueLimit(detail::ModeReader<double>(wtb, nominal));
+      const auto limit_bounds = m->StopTorqueLimit(detail::ModeReader<Interval>(wtb, bounds.mode));
+      if (nominal_limit && limit_bounds) pc.stop_limit = Bounded{*nominal_limit, limit_bounds->ToDomain()};
+    }
     Interval omega(pc.omega), J(pc.J_star), w(pc.w_max);
     if (options.intervals) {
       Enclose(g, focus, elements, all, &omega, &J);
@@ -496,7 +501,12 @@ PeakReport AnalysePeaks(const Project& project, const PeakOptions& options) {
 
   for (auto& pc : report.cases) {
     pc.tau_total.nominal = pc.tau_dynamic.nominal + pc.tau_static;
-    pc.tau_total.bounds = (Interval::FromDomain(pc.tau_dynamic.bounds) + Interval::FromDomain(pc.tau_static_bounds)).ToDomain();
+    Interval total = Interval::FromDomain(pc.tau_dynamic.bounds) + Interval::FromDomain(pc.tau_static_bounds);
+    if (pc.stop_limit) {  // the stop slips: the shaft at it carries no more than it passes
+      pc.tau_total.nominal = std::min(pc.tau_total.nominal, pc.stop_limit->nominal);
+      total = detail::Min(total, Interval::FromDomain(pc.stop_limit->bounds));
+    }
+    pc.tau_total.bounds = total.ToDomain();
   }
 
   // Worst case per component on any load path, with its allowable. In a jam, a station torque
@@ -599,13 +609,13 @@ std::string PeakReport::BriefReport() const {
 std::string PeakReport::FullReport() const {
   std::string out = "Single-DOF peak loads (paper eq. 1): " + project + " (" + reduction + ")\n";
   TextTable table({"case", "acts at", "w_max [rad/s]", "J* [kg*m^2]", "c* [N*m/rad]", "f1 [Hz]", "mode-1 share",
-                   "tau_dyn [N*m]", "enclosure [N*m]", "tau_static [N*m]", "tau_max [N*m]", "enclosure [N*m]",
-                   "widest parameter"},
-                  {2, 3, 4, 5, 6, 7, 9, 10});
+                   "tau_dyn [N*m]", "enclosure [N*m]", "tau_static [N*m]", "stop slips at [N*m]", "tau_max [N*m]",
+                   "enclosure [N*m]", "widest parameter"},
+                  {2, 3, 4, 5, 6, 7, 9, 10, 11});
   for (const auto& c : cases)
     table.AddRow({c.name, c.acts_at, Fmt(c.w_max), Fmt(c.J_star), Fmt(c.c_star), Fmt(Hz(c.omega)), Fmt(c.first_mode_share, 3),
                   Fmt(c.tau_dynamic.nominal), "[" + Fmt(c.tau_dynamic.bounds.lo) + ", " + Fmt(c.tau_dynamic.bounds.hi) + "]",
-                  Fmt(c.tau_static), Fmt(c.tau_total.nominal),
+                  Fmt(c.tau_static), c.stop_limit ? Fmt(c.stop_limit->nominal) : "-", Fmt(c.tau_total.nominal),
                   "[" + Fmt(c.tau_total.bounds.lo) + ", " + Fmt(c.tau_total.bounds.hi) + "]",
                   c.ranking.empty() ? "-" : c.ranking[0].parameter + " (" + Fmt(100 * c.ranking[0].share, 3) + " %)"});
   out += table.ToString();
@@ -635,6 +645,7 @@ nlohmann::json PeakReport::ToJson() const {
                           {"first_mode_share", c.first_mode_share}, {"tau_dynamic_N_m", bounded(c.tau_dynamic)},
                           {"tau_static_N_m", c.tau_static},
                           {"tau_static_bounds_N_m", {c.tau_static_bounds.lo, c.tau_static_bounds.hi}},
+                          {"stop_limit_N_m", c.stop_limit ? bounded(*c.stop_limit) : nlohmann::json(nullptr)},
                           {"tau_max_N_m", bounded(c.tau_total)}, {"ranking", ranking},
                           {"note", c.note}});
   }

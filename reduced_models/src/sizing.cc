@@ -137,12 +137,13 @@ SizingReport Size(const Project& project, const SizingOptions& options) {
     }
     report.settings.push_back(r);
   };
-  // Wing back-drive torque at node `node`'s wing root: the airloads of the wing's actuators
+  // The torque a brake of node `node`'s wing holds: the larger of the wing's operating torque
+  // at its root and its back-drive torque there, the airloads of the wing's actuators
   // back-driving the shaft through their aiding efficiencies, friction neglected (conservative).
-  auto wing_backdrive = [&](int node) {
+  auto wing_holding = [&](int node) {
     int wing = node;
     while (g.nodes[wing].parent > 0) wing = g.nodes[wing].parent;
-    Bounded backdrive = Make(0.0);
+    Bounded backdrive = operating(wing, "");
     for (const LoadCase& load_case : project.load_cases) {
       std::map<std::string, double> aiding;
       for (const auto& [actuator, value] : detail::SizingLoads(load_case)) aiding[actuator] = -std::abs(value);
@@ -168,7 +169,7 @@ SizingReport Size(const Project& project, const SizingOptions& options) {
       const Bounded against = rule.against == Against::kOperating          ? operating(node, "")
                               : rule.against == Against::kOperatingExtend  ? operating(node, "extend")
                               : rule.against == Against::kOperatingRetract ? operating(node, "retract")
-                                                                           : wing_backdrive(node);
+                                                                           : wing_holding(node);
       recommend(node, rule.parameter, rule.rule, against, rule.factor, rule.factor_min, rule.factor_max);
     }
   }

@@ -253,3 +253,46 @@ TEST(Examples, RequirementsParseInTheConstraintLanguage) {
 
 }  // namespace
 }  // namespace highlift
+
+namespace highlift {
+namespace {
+
+// Issue 20: every bundled example passes its own sizing rules in size, check and peak; only the
+// infeasible variant, which exists to show a conflict, fails `check` (the README's table).
+TEST(Examples, SizeCheckAndPeakFindNoViolationButTheInfeasibleVariantsConflict) {
+  struct Expected {
+    std::string file;
+    int size, check, peak;
+  };
+  const Expected expected[] = {{"examples/a380_class_flaps.json", 0, 0, 0},
+                               {"examples/hydraulic_pdu_flaps.json", 0, 0, 0},
+                               {"examples/a320_class_flaps.json", 0, 0, 0},
+                               {"examples/a320_class_slats.json", 0, 0, 0},
+                               {"examples/a380_class_flaps_infeasible.json", 0, 1, 0}};
+  for (const auto& e : expected) {
+    SCOPED_TRACE(e.file);
+    const auto size = RunCli({"size", e.file});
+    EXPECT_EQ(size.exit_code, e.size) << size.out << size.err;
+    EXPECT_NE(size.out.find("all settings and margins ok"), std::string::npos) << size.out;
+    const auto check = RunCli({"check", e.file});
+    EXPECT_EQ(check.exit_code, e.check) << check.out << check.err;
+    if (e.check == 0) {
+      EXPECT_NE(check.out.find("the nominal design meets all"), std::string::npos) << check.out;
+    }
+    const auto peak = RunCli({"peak", e.file, "--json"});
+    EXPECT_EQ(peak.exit_code, e.peak) << peak.err;
+    const nlohmann::json j = nlohmann::json::parse(peak.out);
+    EXPECT_TRUE(j.at("ok").get<bool>());
+    // Every rupture is capped where its wing-tip brake slips, and the cap is what it reports.
+    for (const auto& c : j.at("cases")) {
+      if (c.at("kind") != "rupture") continue;
+      SCOPED_TRACE(c.at("name").get<std::string>());
+      ASSERT_FALSE(c.at("stop_limit_N_m").is_null());
+      EXPECT_LE(c.at("tau_max_N_m").at("nominal").get<double>(), c.at("stop_limit_N_m").at("nominal").get<double>());
+      EXPECT_LE(c.at("tau_max_N_m").at("max").get<double>(), c.at("stop_limit_N_m").at("max").get<double>());
+    }
+  }
+}
+
+}  // namespace
+}  // namespace highlift

@@ -45,6 +45,44 @@ TEST(Peak, JamAndRuptureCasesWithEnclosuresAndRanking) {
   EXPECT_FALSE(r.worst.empty());
 }
 
+// The wing-tip brake is a friction brake: after a rupture the shaft at it carries no more than it
+// passes before it slips, the larger of its dynamic and static torques (domain-wide too). A brake
+// stronger than the rigid-stop estimate leaves the estimate as it is.
+TEST(Peak, RuptureIsCappedWhereTheBrakeSlips) {
+  auto with_brake = [](double dynamic, double holding) {
+    Project p = test_projects::OneWingProject();
+    for (Component& c : p.components) {
+      if (c.id != "wtb") continue;
+      Parameter& d = c.parameters["max_dynamic_torque"];
+      d.nominal = dynamic;
+      d.domain = Domain{0.9 * dynamic, 1.1 * dynamic};
+      Parameter& h = c.parameters["static_capacity"];
+      h.nominal = holding;
+      h.domain = Domain::Point(holding);
+    }
+    PeakOptions options;
+    options.only_case = "rupture_shaft_1";
+    options.rank = false;
+    return AnalysePeaks(p, options).cases.at(0);
+  };
+  const PeakCase strong = with_brake(1e6, 1.2e6);
+  ASSERT_TRUE(strong.stop_limit.has_value());
+  EXPECT_DOUBLE_EQ(strong.stop_limit->nominal, 1.2e6);
+  EXPECT_DOUBLE_EQ(strong.tau_total.nominal, strong.tau_dynamic.nominal + strong.tau_static);
+  ASSERT_LT(strong.tau_total.nominal, 1e6);
+
+  // Slips at its dynamic torque while it turns; holds more once halted: the larger counts.
+  const double rigid = strong.tau_total.nominal;
+  const PeakCase weak = with_brake(0.2 * rigid, 0.3 * rigid);
+  EXPECT_DOUBLE_EQ(weak.tau_total.nominal, 0.3 * rigid);
+  EXPECT_DOUBLE_EQ(weak.tau_total.bounds.hi, 0.3 * rigid);  // the static capacity is a point
+  const PeakCase sliding = with_brake(0.3 * rigid, 0.2 * rigid);
+  EXPECT_DOUBLE_EQ(sliding.tau_total.nominal, 0.3 * rigid);
+  EXPECT_NEAR(sliding.tau_total.bounds.hi, 1.1 * 0.3 * rigid, 1e-9 * rigid);  // its domain's upper bound
+  // The dynamic part itself, equation (1), is what it was: only the total is capped.
+  EXPECT_DOUBLE_EQ(weak.tau_dynamic.nominal, strong.tau_dynamic.nominal);
+}
+
 TEST(Peak, EnclosureContainsSampledPointResults) {
   const Project base = test_projects::OneWingProject();
   PeakOptions options;

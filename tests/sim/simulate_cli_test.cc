@@ -102,13 +102,15 @@ TEST(PeakTransientCli, RuptureSimulatedWhileRetractingBelowTheSingleDofEstimate)
   EXPECT_EQ(c["scenario"], "rupture_shaft_l1");
   EXPECT_EQ(c["load_case"], "retract_aiding");
   EXPECT_TRUE(c["ok"].get<bool>()) << c.dump();
-  // The outboard part is stopped by the WTB, which slips: the largest torque is at the tip,
-  // well below the rigid-stop estimate and above the WTB's dynamic capacity (550 N*m).
+  // The outboard part is stopped by the WTB, which slips: the largest torque is at the tip, above
+  // the WTB's dynamic capacity (550 N*m), at its static capacity (600 N*m), where the single-DOF
+  // estimate caps the case. The shaft next to the brake also accelerates the brake rotor
+  // (5e-4 kg*m^2) when it slips, so the simulation may exceed the cap by that inertial torque.
   const std::string at = c["at"];
   EXPECT_TRUE(at == "shaft_l7" || at == "wtb_left") << at;
   const double ratio = c["ratio"];
-  EXPECT_GT(ratio, 0.1);
-  EXPECT_LT(ratio, 1.0);
+  EXPECT_GT(ratio, 0.9);
+  EXPECT_LT(ratio, 1.01);
   EXPECT_GT(c["transient"].get<double>(), 500.0);
   EXPECT_GT(c["time"].get<double>(), 1.0);  // after the rupture at 1 s
 }

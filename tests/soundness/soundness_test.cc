@@ -180,17 +180,23 @@ TEST(EnclosureRegression, RuptureBackDriveSpansTheAidingEfficiencyDomain) {
 TEST(EnclosureRegression, MarginIsTheWorstOverTheAllowableDomain) {
   // A margin must not read positive where a point of the domains violates it: the allowable
   // enters at its lower bound.
+  // The actuator's allowable, limit / (ratio eta_opposing), is smallest at the smallest limit
+  // and the largest efficiency: 10 kN*m / (200 x 0.9).
   Project p = SmallChain();
-  Component* wtb = p.FindComponent("wtb_l");
-  wtb->parameters["static_capacity"] = Uncertain(600.0, 100.0, 900.0);
+  Component* gra = p.FindComponent("gra_l1");
+  gra->parameters["ratio"] = Uncertain(200.0, 200.0, 200.0);
+  gra->parameters["eta_opposing"] = Uncertain(0.85, 0.8, 0.9);
+  gra->parameters["limit_output_torque"] = Uncertain(50e3, 10e3, 80e3);
   const auto report = reduced_models::AnalysePeaks(p, {});
+  const double smallest = 10e3 / (200.0 * 0.9);
   for (const auto& w : report.worst)
-    if (w.component == "wtb_l") {
-      EXPECT_DOUBLE_EQ(w.allowable_min, 100.0);
-      EXPECT_LE(w.margin, 100.0 / w.local_torque - 1.0 + 1e-12);
+    if (w.component == "gra_l1") {
+      EXPECT_NEAR(w.allowable_min, smallest, 1e-9 * smallest);
+      EXPECT_LE(w.allowable_min, smallest);  // rounded down
+      EXPECT_LE(w.margin, smallest / w.local_torque - 1.0 + 1e-12);
       return;
     }
-  ADD_FAILURE() << "wtb_l has no worst-case row";
+  ADD_FAILURE() << "gra_l1 has no worst-case row";
 }
 
 TEST(EnclosureRegression, ZeroLimiterInertiaIsValidWithIntervals) {

@@ -42,11 +42,16 @@ class GearedRotaryActuatorModel final : public ActuatorModel {
   }
   HIGHLIFT_LUMPED_LAW
 
-  /// Against the peak loads at its input: its rated output torque / ratio.
+  /// Against the peak loads at its input: the input torque that puts its limit (jam) torque on
+  /// the output when it drives against the stop, limit / (ratio eta_opposing). The rated output
+  /// torque is an operating rating and is checked by the steady-state sizing, not here: a jam
+  /// puts the station limiter's end-stop torque through the actuator, which its limit torque
+  /// must take.
   template <class T>
   std::optional<Allowable<T>> PeakLaw(const ParameterReader<T>& p) const {
-    if (!p.Has("output_torque_rating")) return std::nullopt;
-    return Allowable<T>{"rated output torque / ratio", p("output_torque_rating") / p("ratio")};
+    if (!p.Has("limit_output_torque")) return std::nullopt;
+    return Allowable<T>{"limit output torque / (ratio eta_opposing)",
+                        p("limit_output_torque") / (p("ratio") * p("eta_opposing"))};
   }
   HIGHLIFT_PEAK_ALLOWABLE_LAW
   /// In the steady state its rated output torque against its output load.
@@ -55,7 +60,8 @@ class GearedRotaryActuatorModel final : public ActuatorModel {
     return Allowable<Interval>{"rated output torque", p("output_torque_rating"), true};
   }
   /// Input inertia by gear scaling at the input torque of its rating, the surface's inertia from
-  /// labels "flap_mass" and "flap_stroke", its mass by gear scaling.
+  /// labels "flap_mass" and "flap_stroke", its limit torque from its rating, its mass by gear
+  /// scaling.
   std::vector<EstimationLaw> EstimationLaws() const override {
     const LawInput tau_out = FromParameter("output_torque_rating"), ratio = FromParameter("ratio");
     return {
@@ -68,6 +74,10 @@ class GearedRotaryActuatorModel final : public ActuatorModel {
                            FromParameter("travel_angle"), ratio},
                           "physics: J = m (s/phi_travel)^2 / ratio^2 from labels flap_mass, flap_stroke",
                           [](const auto& v) { return FlapInertiaAtInput(v[0], v[1], v[2], v[3]); }),
+        EstimateParameter("limit_output_torque", {tau_out},
+                          "estimate: 2.5 x the rated output torque, above the station limiter's end stop on the "
+                          "output (up to 2.2 x the operating torque, domain.md s6)",
+                          [](const auto& v) { return 2.5 * v[0]; }),
         DeriveQuantity("mass", "kg", {tau_out}, "gear scaling m = 20 kg (tau_out/20 kN m)^0.8 (estimate)",
                        [](const auto& v) { return MassFromTorque(v[0]); })};
   }

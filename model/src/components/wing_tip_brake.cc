@@ -9,17 +9,27 @@ class WingTipBrakeModel final : public NamedModel {
  public:
   WingTipBrakeModel() : NamedModel("wing_tip_brake") {}
 
-  /// Against the peak loads: the torque it holds once engaged.
-  template <class T>
-  std::optional<Allowable<T>> PeakLaw(const ParameterReader<T>& p) const {
-    if (!p.Has("static_capacity")) return std::nullopt;
-    return Allowable<T>{"static capacity", p("static_capacity")};
-  }
-  HIGHLIFT_PEAK_ALLOWABLE_LAW
+  // No allowable against the peak loads: in a rupture the torque through the brake is its own
+  // friction torque (at most the larger of max_dynamic_torque and static_capacity, which is
+  // where the peak analysis caps the case), so a margin against its own capacity says nothing.
+  // Its static capacity is sized by the setting rule below.
 
-  /// Its static capacity holds the wing against its airloads back-driving the shaft.
+  /// As the stop of a rupture it slips: while the shaft turns it passes its dynamic torque
+  /// (rising to max_dynamic_torque), once halted it holds up to its static capacity; the shaft
+  /// at the brake never carries more than the larger of the two (paper, shaft brake).
+  template <class T>
+  std::optional<T> StopLaw(const ParameterReader<T>& p) const {
+    if (!p.Has("max_dynamic_torque") || !p.Has("static_capacity")) return std::nullopt;
+    using std::max;
+    return max(p("max_dynamic_torque"), p("static_capacity"));
+  }
+  HIGHLIFT_STOP_LIMIT_LAW
+
+  /// Its static capacity holds the wing: against the drive torque of the wing (a PDU driving
+  /// into the engaged brake) and against its airloads back-driving the shaft.
   std::vector<SettingRule> SettingRules() const override {
-    return {{"static_capacity", ">= 1.5 x wing back-drive torque (domain.md s6)", SettingRule::Against::kWingBackdrive,
+    return {{"static_capacity", ">= 1.5 x the larger of the wing's operating and back-drive torques (domain.md s3, s6)",
+             SettingRule::Against::kWingHolding,
              1.5, 1.5, kInfinity}};
   }
 

@@ -122,7 +122,9 @@ struct SettingRule {
     kOperating,         ///< the largest operating torque over every load case
     kOperatingExtend,   ///< ... over the extend load cases (every case when there is none)
     kOperatingRetract,  ///< ... over the retract load cases (every case when there is none)
-    kWingBackdrive,     ///< the wing's back-drive torque: its airloads through the aiding efficiencies
+    /// the larger of the wing's operating torque at its root (over every load case) and its
+    /// back-drive torque (its airloads through the aiding efficiencies, friction neglected)
+    kWingHolding,
   };
   std::string parameter;  ///< the setting, e.g. "lockout_torque_extend"
   std::string rule;       ///< the rule in words with its source
@@ -223,6 +225,12 @@ class ComponentModel {
   virtual std::vector<EstimationLaw> EstimationLaws() const { return {}; }
   /// Its parameters that the estimator fits against a rating over the database parts of its type.
   virtual std::vector<FitRule> FitRules() const { return {}; }
+  /// When it is the stop of a peak case (the brake after a rupture): the largest torque it can
+  /// pass to ground at its flange, above which it slips (a friction brake); nullopt: a rigid stop
+  /// (the default), which takes whatever the single-DOF estimate puts into it.
+  virtual std::optional<double> StopTorqueLimit(const ParameterReader<double>&) const { return std::nullopt; }
+  virtual std::optional<Interval> StopTorqueLimit(const ParameterReader<Interval>&) const { return std::nullopt; }
+  virtual std::optional<Sym> StopTorqueLimit(const ParameterReader<Sym>&) const { return std::nullopt; }
 };
 
 /// In a ComponentModel: overrides the three LumpedAtInput with the member template
@@ -254,6 +262,15 @@ class ComponentModel {
   std::optional<Allowable<Interval>> PeakAllowable(const ParameterReader<Interval>& p) const override { \
     return PeakLaw(p);                                                                                  \
   }
+
+/// In a ComponentModel: overrides the three StopTorqueLimit with the member template
+/// `template <class T> std::optional<T> StopLaw(const ParameterReader<T>&) const`.
+#define HIGHLIFT_STOP_LIMIT_LAW                                                                        \
+  std::optional<double> StopTorqueLimit(const ParameterReader<double>& p) const override { return StopLaw(p); } \
+  std::optional<Interval> StopTorqueLimit(const ParameterReader<Interval>& p) const override {         \
+    return StopLaw(p);                                                                                 \
+  }                                                                                                    \
+  std::optional<Sym> StopTorqueLimit(const ParameterReader<Sym>& p) const override { return StopLaw(p); }
 
 /// The model of component type `type`, or nullptr.
 const ComponentModel* FindComponentModel(std::string_view type);

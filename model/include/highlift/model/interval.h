@@ -87,6 +87,9 @@ inline Interval abs(const Interval& x) {
   return {0.0, std::max(-x.lo, x.hi)};
 }
 inline Interval Hull(const Interval& a, const Interval& b) { return {std::min(a.lo, b.lo), std::max(a.hi, b.hi)}; }
+/// The larger and the smaller of two quantities: exact, bound by bound.
+inline Interval max(const Interval& a, const Interval& b) { return {std::max(a.lo, b.lo), std::max(a.hi, b.hi)}; }
+inline Interval min(const Interval& a, const Interval& b) { return {std::min(a.lo, b.lo), std::min(a.hi, b.hi)}; }
 
 /// The part of x at or above zero, and the part at or below; a side may be absent.
 inline bool HasNonNegativePart(const Interval& x) { return x.hi >= 0.0; }

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -72,7 +73,11 @@ struct PeakCase {
   Bounded tau_dynamic;     ///< N*m, equation (1)
   double tau_static = 0.0; ///< N*m, static drive (jam) or back-drive (rupture) torque, nominal
   Domain tau_static_bounds;  ///< N*m, its enclosure over the parameter domains
-  Bounded tau_total;       ///< N*m, tau_dynamic + tau_static
+  /// N*m at the stop: the largest torque the stop passes before it slips (a friction brake: the
+  /// larger of its dynamic and static torques), nominal and over the domains; absent for a rigid
+  /// stop (a jam).
+  std::optional<Bounded> stop_limit;
+  Bounded tau_total;       ///< N*m, tau_dynamic + tau_static, at most stop_limit
   std::vector<ParameterShare> ranking;  ///< by share of the tau_dynamic width, largest first
   std::string note;
 };
