@@ -1,5 +1,7 @@
 #include "estimated_project.h"
 
+#include <iostream>
+
 #include "highlift/componentdb/database.h"
 #include "highlift/core/project_io.h"
 #include "highlift/estimation/estimator.h"
@@ -9,12 +11,25 @@ namespace highlift::cli {
 EstimatedProject LoadEstimatedProject(const CommonOptions& options, bool estimate) {
   EstimatedProject out{LoadProject(options.project), "", 0};
   if (!estimate) return out;
-  componentdb::ComponentDatabase database =
-      componentdb::OpenDatabase(options.db, componentdb::ComponentDatabase::Mode::kReadOnly);
+  componentdb::ComponentDatabase database = OpenEstimationDatabase(options.db);
   const estimation::EstimationReport report = estimation::EstimateProject(out.project, &database, {});
   out.estimation_brief = report.BriefReport();
   out.conflicts = static_cast<int>(report.conflicts.size());
   return out;
+}
+
+componentdb::ComponentDatabase OpenEstimationDatabase(const std::string& db_option) {
+  componentdb::ComponentDatabase database =
+      componentdb::OpenDatabase(db_option, componentdb::ComponentDatabase::Mode::kReadOnly);
+  if (!db_option.empty()) return database;  // the user's own choice: no seed to compare with
+  const std::vector<std::string> differ = componentdb::DifferencesFromSeed(database);
+  if (!differ.empty())
+    std::cerr << "note: the component database " << database.file().string() << " lacks or holds with other values "
+              << differ.size() << " of the parts and materials this highlift ships (e.g. '" << differ.front()
+              << "'): it was created by an earlier version, or edited; the estimates use what it holds. To take this "
+                 "version's parts run 'highlift db import --seed --replace' (parts you added are kept), or remove "
+                 "the file to re-create it\n";
+  return database;
 }
 
 }  // namespace highlift::cli

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "command.h"
+#include "highlift/componentdb/database.h"
 #include "highlift/core/project.h"
 
 namespace highlift::cli {
@@ -19,5 +20,10 @@ struct EstimatedProject {
 /// Loads `options.project`; unless `estimate` is false, runs the estimator with the database
 /// `options.db` (the shipped default when empty).
 EstimatedProject LoadEstimatedProject(const CommonOptions& options, bool estimate);
+
+/// The database for the estimator: `db_option`, or the shipped default when empty. When it is
+/// the default and its shipped parts differ from this version's seed (it was created by an
+/// earlier highlift, or edited), says so on stderr with the way to take the new parts.
+componentdb::ComponentDatabase OpenEstimationDatabase(const std::string& db_option);
 
 }  // namespace highlift::cli

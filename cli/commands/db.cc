@@ -76,7 +76,11 @@ class DbCommand : public Command {
     find_options_.AddTo(*find_);
 
     import_ = app.add_subcommand("import", "Import parts and materials from CSV or JSON (all or nothing)");
-    import_->add_option("file", import_file_, "A .csv or .json file")->required();
+    auto* file = import_->add_option("file", import_file_, "A .csv or .json file");
+    auto* seed = import_->add_flag("--seed", import_seed_,
+                                   "Import the parts and materials this highlift ships (its seed) instead of a file");
+    file->excludes(seed);
+
     import_->add_flag("--replace", replace_, "Replace parts and materials that already exist instead of failing");
     import_options_.AddTo(*import_);
 
@@ -172,7 +176,9 @@ class DbCommand : public Command {
   }
 
   int Import() {
-    componentdb::Records records = componentdb::ReadRecords(import_file_);
+    if (import_file_.empty() && !import_seed_)
+      throw InputError("db import: give a .csv or .json file to import, or --seed for the parts this highlift ships");
+    componentdb::Records records = import_seed_ ? componentdb::SeedRecords() : componentdb::ReadRecords(import_file_);
     auto db = componentdb::OpenDatabase(import_options_.db, ComponentDatabase::Mode::kCreate);
     componentdb::ImportOptions options;
     options.replace = replace_;
@@ -183,7 +189,7 @@ class DbCommand : public Command {
                {"materials_replaced", report.materials_replaced}};
       std::cout << out.dump(2) << "\n";
     } else {
-      std::cout << "imported " << import_file_ << " into " << db.file().string() << ": " << report.BriefReport() << "\n";
+      std::cout << "imported " << (import_seed_ ? std::string("the shipped seed") : import_file_) << " into " << db.file().string() << ": " << report.BriefReport() << "\n";
     }
     return kSuccess;
   }
@@ -224,6 +230,7 @@ class DbCommand : public Command {
   std::string type_, designation_, find_type_, import_file_, export_file_, format_ = "json";
   std::vector<std::string> where_;
   bool replace_ = false;
+  bool import_seed_ = false;
 };
 
 }  // namespace

@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "command.h"
+#include "estimated_project.h"
 #include "highlift/componentdb/database.h"
 #include "highlift/core/error.h"
 #include "highlift/core/project_io.h"
@@ -28,7 +29,7 @@ class EstimateCommand : public Command {
     options_.Validate();
     Project project = LoadProject(common_.project);
     std::optional<componentdb::ComponentDatabase> database;
-    if (!no_db_) database.emplace(componentdb::OpenDatabase(common_.db, componentdb::ComponentDatabase::Mode::kReadOnly));
+    if (!no_db_) database.emplace(OpenEstimationDatabase(common_.db));
     const auto report = estimation::EstimateProject(project, database ? &*database : nullptr, options_);
     if (!write_.empty()) SaveProject(project, write_);
     if (common_.json) {

@@ -45,6 +45,20 @@ Records SeedRecords() {
   return r;
 }
 
+std::vector<std::string> DifferencesFromSeed(const ComponentDatabase& db) {
+  const Records seed = SeedRecords();
+  std::vector<std::string> out;
+  for (const Part& part : seed.parts) {
+    const std::optional<Part> held = db.FindPart(part.designation);
+    if (!held || !(*held == part)) out.push_back(part.designation);
+  }
+  for (const Material& material : seed.materials) {
+    const std::optional<Material> held = db.FindMaterial(material.name);
+    if (!held || !(*held == material)) out.push_back(material.name);
+  }
+  return out;
+}
+
 namespace {
 
 /// Builds the seed database under a temporary name and links it into place unless `file`

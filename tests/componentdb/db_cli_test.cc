@@ -5,7 +5,12 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include <optional>
+#include <string>
+#include <vector>
+
 #include "common/run_cli.h"
+#include "highlift/componentdb/database.h"
 #include "test_util.h"
 
 namespace highlift {
@@ -77,6 +82,83 @@ TEST(DbCli, ExportImportRoundTripsThroughCsv) {
   ASSERT_EQ(a.exit_code, 0);
   EXPECT_EQ(a.out, b.out);
   EXPECT_GT(a.out.size(), 10000u);
+}
+
+}  // namespace
+}  // namespace highlift
+
+namespace highlift {
+namespace {
+
+/// Sets HIGHLIFT_DATA_DIR for the life of the object, and puts the previous value back.
+class DataDirectory {
+ public:
+  explicit DataDirectory(const std::filesystem::path& dir) {
+    if (const char* old = std::getenv("HIGHLIFT_DATA_DIR")) old_ = old;
+    ::setenv("HIGHLIFT_DATA_DIR", dir.c_str(), 1);
+  }
+  ~DataDirectory() {
+    if (old_) {
+      ::setenv("HIGHLIFT_DATA_DIR", old_->c_str(), 1);
+    } else {
+      ::unsetenv("HIGHLIFT_DATA_DIR");
+    }
+  }
+
+ private:
+  std::optional<std::string> old_;
+};
+
+// A default database created by an earlier highlift (or edited) keeps its parts: the estimating
+// commands say that it differs from the shipped seed and how to take the new parts, and
+// `db import --seed --replace` does, keeping the parts the user added.
+TEST(DbCli, AnOutdatedDefaultDatabaseIsNotedAndTheSeedImportUpdatesItKeepingTheUsersParts) {
+  const ScratchDirectory scratch;
+  const std::filesystem::path dir = scratch.path();
+  const DataDirectory data(dir);
+  const std::string note = "note: the component database " + (dir / "components.sqlite").string();
+  auto fresh = RunCli({"estimate", "examples/a380_class_flaps.json"});
+  ASSERT_EQ(fresh.exit_code, 0) << fresh.err;
+  EXPECT_EQ(fresh.err.find(note), std::string::npos) << fresh.err;  // created from this seed
+
+  {  // An older seed: one shipped part with another note, one missing; and a part of the user's.
+    auto db = componentdb::ComponentDatabase::Open(dir / "components.sqlite",
+                                                   componentdb::ComponentDatabase::Mode::kReadWrite);
+    componentdb::Records edited;
+    edited.parts.push_back(*db.FindPart("GRA-200-A380C"));
+    edited.parts.back().note += " (an older estimate)";
+    componentdb::Part own = edited.parts.back();
+    own.designation = "GRA-MY-OWN";
+    edited.parts.push_back(own);
+    componentdb::ImportOptions replace;
+    replace.replace = true;
+    db.Import(edited, replace);
+    EXPECT_EQ(componentdb::DifferencesFromSeed(db), std::vector<std::string>{"GRA-200-A380C"});
+  }
+  const auto stale = RunCli({"check", "examples/a380_class_flaps.json"});
+  EXPECT_EQ(stale.exit_code, 0) << stale.err;
+  EXPECT_NE(stale.err.find(note + " lacks or holds with other values 1 of the parts"), std::string::npos) << stale.err;
+  EXPECT_NE(stale.err.find("(e.g. 'GRA-200-A380C')"), std::string::npos) << stale.err;
+  EXPECT_NE(stale.err.find("run 'highlift db import --seed --replace'"), std::string::npos) << stale.err;
+  // An explicit --db is the user's choice: nothing to compare with.
+  const auto chosen = RunCli({"estimate", "examples/a380_class_flaps.json", "--db", (dir / "components.sqlite").string()});
+  EXPECT_EQ(chosen.err.find("note: the component database"), std::string::npos) << chosen.err;
+
+  const auto update = RunCli({"db", "import", "--seed", "--replace"});
+  ASSERT_EQ(update.exit_code, 0) << update.err;
+  EXPECT_NE(update.out.find("imported the shipped seed into"), std::string::npos) << update.out;
+  const auto after = RunCli({"estimate", "examples/a380_class_flaps.json"});
+  EXPECT_EQ(after.err.find(note), std::string::npos) << after.err;
+  const auto db = componentdb::ComponentDatabase::Open(dir / "components.sqlite",
+                                                       componentdb::ComponentDatabase::Mode::kReadOnly);
+  EXPECT_TRUE(componentdb::DifferencesFromSeed(db).empty());
+  EXPECT_TRUE(db.FindPart("GRA-MY-OWN").has_value());
+
+  // Neither a file nor --seed, or both: a usage error that says what to give.
+  const auto neither = RunCli({"db", "import"});
+  EXPECT_EQ(neither.exit_code, 2);
+  EXPECT_NE(neither.err.find("give a .csv or .json file to import, or --seed"), std::string::npos) << neither.err;
+  EXPECT_EQ(RunCli({"db", "import", "x.csv", "--seed"}).exit_code, 2);
 }
 
 }  // namespace

@@ -123,6 +123,10 @@ const std::string& SeedCsv();
 /// The seed parsed and validated.
 Records SeedRecords();
 
+/// The seed's parts (designations) and materials (names) that `db` lacks or holds with other
+/// values, in seed order: empty when the database has this version's seed as it ships. A
+/// database created by an earlier highlift from an older seed, or edited, lists them.
+std::vector<std::string> DifferencesFromSeed(const ComponentDatabase& db);
 /// Creates a database at `file` from the seed. The database is built beside it under a
 /// temporary name and renamed into place, so a concurrent or interrupted first use never
 /// leaves a half-built database. Throws InputError when `file` exists.
