@@ -496,6 +496,71 @@ TEST(MasslessNode, DamperInSeriesWithASpringIsAMaxwellElement) {
   EXPECT_LT(worst, 1e-7);
 }
 
+// Angle and speed sensors on the massless node of two series springs read its static balance,
+// phi_n = c2 / (c1 + c2) phi; an acceleration sensor there, or a torque sensor joining two
+// massless flanges, is an input error (the balance gives no acceleration).
+TEST(MasslessNode, SensorsReadTheBalanceOrAreNamed) {
+  const double c1 = 1200, c2 = 2400, J = 2, c = c1 * c2 / (c1 + c2), omega = std::sqrt(c / J), k = c2 / (c1 + c2);
+  Network net;
+  net.AddElement("Fixed", "fixed");
+  net.AddElement("Spring", "spring1", P({{"c", c1}}));
+  net.AddElement("Spring", "spring2", P({{"c", c2}}));
+  net.AddElement("Inertia", "inertia", P({{"J", J}, {"phi_start", 0.1}, {"w_start", 0}}));
+  net.AddElement("AngleSensor", "angle");
+  net.AddElement("SpeedSensor", "speed");
+  net.AddElement("RelSpeedSensor", "relSpeed");
+  net.Connect("fixed.flange", "spring1.flange_a");
+  net.Connect("spring1.flange_b", "spring2.flange_a");
+  net.Connect("spring2.flange_b", "inertia.flange_a");
+  net.Connect("angle.flange", "spring1.flange_b");
+  net.Connect("speed.flange", "spring1.flange_b");
+  net.Connect("relSpeed.flange_a", "spring1.flange_b");
+  net.Connect("relSpeed.flange_b", "inertia.flange_b");
+  const Result r = Simulate(net, 0.5);
+  ASSERT_TRUE(r.report.ok()) << r.report.FullReport();
+  EXPECT_LT(r.Error("angle.phi", [&](double t) { return k * 0.1 * std::cos(omega * t); }), 1e-7);
+  EXPECT_LT(r.Error("speed.w", [&](double t) { return -k * 0.1 * omega * std::sin(omega * t); }), 1e-6);
+  EXPECT_LT(r.Error("relSpeed.w_rel", [&](double t) { return -(1 - k) * 0.1 * omega * std::sin(omega * t); }), 1e-6);
+
+  Network acc = net;
+  acc.AddElement("AccSensor", "acc");
+  acc.Connect("acc.flange", "spring1.flange_b");
+  EXPECT_NE(CheckStructure(acc).find("element 'acc' (AccSensor) measures the acceleration of flange "
+                                     "'spring1.flange_b', which has no inertia"),
+            std::string::npos)
+      << CheckStructure(acc);
+
+  Network torque;
+  torque.AddElement("Fixed", "fixed");
+  torque.AddElement("Spring", "spring1", P({{"c", c1}}));
+  torque.AddElement("TorqueSensor", "sensor");
+  torque.AddElement("Spring", "spring2", P({{"c", c2}}));
+  torque.AddElement("Inertia", "inertia", P({{"J", J}, {"phi_start", 0.1}, {"w_start", 0}}));
+  torque.Connect("fixed.flange", "spring1.flange_a");
+  torque.Connect("spring1.flange_b", "sensor.flange_a");
+  torque.Connect("sensor.flange_b", "spring2.flange_a");
+  torque.Connect("spring2.flange_b", "inertia.flange_a");
+  EXPECT_NE(CheckStructure(torque).find("element 'sensor' (TorqueSensor) joins flanges spring1.flange_b, "
+                                        "sensor.flange_b rigidly"),
+            std::string::npos)
+      << CheckStructure(torque);
+  // Next to the inertia the same sensor reads the spring torque c * phi.
+  Network beside;
+  beside.AddElement("Fixed", "fixed");
+  beside.AddElement("Spring", "spring1", P({{"c", c1}}));
+  beside.AddElement("Spring", "spring2", P({{"c", c2}}));
+  beside.AddElement("TorqueSensor", "sensor");
+  beside.AddElement("Inertia", "inertia", P({{"J", J}, {"phi_start", 0.1}, {"w_start", 0}}));
+  beside.Connect("fixed.flange", "spring1.flange_a");
+  beside.Connect("spring1.flange_b", "spring2.flange_a");
+  beside.Connect("spring2.flange_b", "sensor.flange_a");
+  beside.Connect("sensor.flange_b", "inertia.flange_a");
+  const Result b = Simulate(beside, 0.5);
+  ASSERT_TRUE(b.report.ok()) << b.report.FullReport();
+  // sensor.flange_a.tau = -spring2.flange_b.tau = -c2 (phi - phi_n) = -c phi.
+  EXPECT_LT(b.Error("sensor.tau", [&](double t) { return -c * 0.1 * std::cos(omega * t); }), 1e-4);
+}
+
 TEST(MasslessNode, PlanetaryWithAnOpenRingIdles) {
   Network net;
   net.AddElement("Fixed", "fixed");

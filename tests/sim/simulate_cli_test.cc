@@ -196,12 +196,19 @@ TEST(SimulateCli, SteadyStateStartFromTheProjectFile) {
 
 // validate and simulate apply one structural check: they accept and reject the same networks
 // (a massless node between springs and an IdealPlanetary with an open ring are valid; a torque
-// on a massless node is not), with the same message. Every example and structure network under
-// tests/sim/msl and tests/sim/structure is run through both.
+// on a massless node is not, nor a torque sensor between two springs or an acceleration sensor on
+// a massless node), with the same message.
+// Every example and structure network under tests/sim/msl and tests/sim/structure is run
+// through both.
 TEST(ValidateAndSimulate, AgreeOnEveryExampleAndStructureNetwork) {
   // The networks that both must reject, with the message.
   const std::map<std::string, std::string> invalid{
       {"MasslessDrivenNode.json", "element 'torque' (ConstantTorque) acts on it"},
+      {"AccSensorOnMasslessNode.json",
+       "element 'accSensor' (AccSensor) measures the acceleration of flange 'spring1.flange_b', which has no "
+       "inertia"},
+      {"SensorBetweenSprings.json",
+       "element 'torqueSensor' (TorqueSensor) joins flanges spring1.flange_b, torqueSensor.flange_b rigidly"},
       {"OverDeterminedAStart.json",
        "element 'inertia' (Inertia): the initial equation a = a_start = 1 rad/s^2 does not hold at the start: "
        "a = 4 rad/s^2"}};
