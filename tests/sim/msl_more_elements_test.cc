@@ -12,6 +12,7 @@
 #include <map>
 #include <numbers>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "highlift/core/error.h"
@@ -499,19 +500,28 @@ TEST(MasslessNode, DamperInSeriesWithASpringIsAMaxwellElement) {
 // Angle and speed sensors on the massless node of two series springs read its static balance,
 // phi_n = c2 / (c1 + c2) phi; an acceleration sensor there, or a torque sensor joining two
 // massless flanges, is an input error (the balance gives no acceleration).
-TEST(MasslessNode, SensorsReadTheBalanceOrAreNamed) {
-  const double c1 = 1200, c2 = 2400, J = 2, c = c1 * c2 / (c1 + c2), omega = std::sqrt(c / J), k = c2 / (c1 + c2);
+// The ground, then `chain` in series (flange_a to flange_b; spring1 c = 1200, spring2 c = 2400),
+// then an inertia J = 2 from phi = 0.1 at rest.
+Network InSeries(const std::vector<std::pair<std::string, std::string>>& chain) {
   Network net;
   net.AddElement("Fixed", "fixed");
-  net.AddElement("Spring", "spring1", P({{"c", c1}}));
-  net.AddElement("Spring", "spring2", P({{"c", c2}}));
-  net.AddElement("Inertia", "inertia", P({{"J", J}, {"phi_start", 0.1}, {"w_start", 0}}));
+  std::string previous = "fixed.flange";
+  for (const auto& [type, id] : chain) {
+    net.AddElement(type, id, type == "Spring" ? P({{"c", id == "spring1" ? 1200.0 : 2400.0}}) : P({}));
+    net.Connect(previous, id + ".flange_a");
+    previous = id + ".flange_b";
+  }
+  net.AddElement("Inertia", "inertia", P({{"J", 2}, {"phi_start", 0.1}, {"w_start", 0}}));
+  net.Connect(previous, "inertia.flange_a");
+  return net;
+}
+
+TEST(MasslessNode, SensorsReadTheBalanceOrAreNamed) {
+  const double c1 = 1200, c2 = 2400, J = 2, c = c1 * c2 / (c1 + c2), omega = std::sqrt(c / J), k = c2 / (c1 + c2);
+  Network net = InSeries({{"Spring", "spring1"}, {"Spring", "spring2"}});
   net.AddElement("AngleSensor", "angle");
   net.AddElement("SpeedSensor", "speed");
   net.AddElement("RelSpeedSensor", "relSpeed");
-  net.Connect("fixed.flange", "spring1.flange_a");
-  net.Connect("spring1.flange_b", "spring2.flange_a");
-  net.Connect("spring2.flange_b", "inertia.flange_a");
   net.Connect("angle.flange", "spring1.flange_b");
   net.Connect("speed.flange", "spring1.flange_b");
   net.Connect("relSpeed.flange_a", "spring1.flange_b");
@@ -530,31 +540,13 @@ TEST(MasslessNode, SensorsReadTheBalanceOrAreNamed) {
             std::string::npos)
       << CheckStructure(acc);
 
-  Network torque;
-  torque.AddElement("Fixed", "fixed");
-  torque.AddElement("Spring", "spring1", P({{"c", c1}}));
-  torque.AddElement("TorqueSensor", "sensor");
-  torque.AddElement("Spring", "spring2", P({{"c", c2}}));
-  torque.AddElement("Inertia", "inertia", P({{"J", J}, {"phi_start", 0.1}, {"w_start", 0}}));
-  torque.Connect("fixed.flange", "spring1.flange_a");
-  torque.Connect("spring1.flange_b", "sensor.flange_a");
-  torque.Connect("sensor.flange_b", "spring2.flange_a");
-  torque.Connect("spring2.flange_b", "inertia.flange_a");
+  const Network torque = InSeries({{"Spring", "spring1"}, {"TorqueSensor", "sensor"}, {"Spring", "spring2"}});
   EXPECT_NE(CheckStructure(torque).find("element 'sensor' (TorqueSensor) joins flanges spring1.flange_b, "
                                         "sensor.flange_b rigidly"),
             std::string::npos)
       << CheckStructure(torque);
   // Next to the inertia the same sensor reads the spring torque c * phi.
-  Network beside;
-  beside.AddElement("Fixed", "fixed");
-  beside.AddElement("Spring", "spring1", P({{"c", c1}}));
-  beside.AddElement("Spring", "spring2", P({{"c", c2}}));
-  beside.AddElement("TorqueSensor", "sensor");
-  beside.AddElement("Inertia", "inertia", P({{"J", J}, {"phi_start", 0.1}, {"w_start", 0}}));
-  beside.Connect("fixed.flange", "spring1.flange_a");
-  beside.Connect("spring1.flange_b", "spring2.flange_a");
-  beside.Connect("spring2.flange_b", "sensor.flange_a");
-  beside.Connect("sensor.flange_b", "inertia.flange_a");
+  const Network beside = InSeries({{"Spring", "spring1"}, {"Spring", "spring2"}, {"TorqueSensor", "sensor"}});
   const Result b = Simulate(beside, 0.5);
   ASSERT_TRUE(b.report.ok()) << b.report.FullReport();
   // sensor.flange_a.tau = -spring2.flange_b.tau = -c2 (phi - phi_n) = -c phi.
