@@ -233,6 +233,27 @@ TEST(MotionSources, ConstantSpeedHoldsItsSpeedAgainstTheDamper) {
   EXPECT_LT(r.Error("source.tau", [](double) { return 1.5; }), 1e-8);  // d * w
 }
 
+// Torque2 between two free inertias J_a = 1 and J_b = 3 from rest, tau = 2 sin(2 pi t):
+// J_b a_b = tau, J_a a_a = -tau (momentum is conserved).
+TEST(Torque2, ActsBetweenItsFlanges) {
+  Network net;
+  net.AddElement("Sine", "sine", P({{"amplitude", 2}, {"f", 1}}));
+  net.AddElement("Inertia", "a", P({{"J", 1}, {"phi_start", 0}, {"w_start", 0}}));
+  net.AddElement("Torque2", "torque2");
+  net.AddElement("Inertia", "b", P({{"J", 3}, {"phi_start", 0}, {"w_start", 0}}));
+  net.Connect("a.flange_b", "torque2.flange_a");
+  net.Connect("torque2.flange_b", "b.flange_a");
+  net.Connect("sine.y", "torque2.tau");
+  EXPECT_EQ(CheckStructure(net), "");
+  const Result r = Simulate(net, 1.0);
+  ASSERT_TRUE(r.report.ok()) << r.report.FullReport();
+  auto w = [](double J) { return [J](double t) { return 2 * (1 - std::cos(2 * kPi * t)) / (2 * kPi * J); }; };
+  EXPECT_LT(r.Error("b.w", w(3)), 1e-8);
+  EXPECT_LT(r.Error("a.w", [&](double t) { return -w(1)(t); }), 1e-8);
+  EXPECT_LT(r.Error("torque2.tau", [](double t) { return 2 * std::sin(2 * kPi * t); }), 1e-12);
+  EXPECT_LT(r.Error("torque2.w_rel", [&](double t) { return w(3)(t) + w(1)(t); }), 1e-7);
+}
+
 TEST(MotionSources, ExactSourceRejectsAnInputWithoutDerivatives) {
   Network net;
   net.AddElement("Fixed", "fixed");
