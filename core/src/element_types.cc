@@ -172,6 +172,10 @@ std::vector<ComponentTypeSpec> MakeElementTypes() {
   // --- Torque and speed sources -----------------------------------------------------------
   t.push_back(Type("Torque", "torque from the signal input tau accelerates the flange",
                    source_ports({Signal("tau", "driving torque [N*m]")}), {}));
+  t.push_back(Type("Torque2",
+                   "torque from the signal input tau between two flanges: +tau accelerates flange_b, "
+                   "-tau flange_a",
+                   {flange_a(), flange_b(), Signal("tau", "torque between the flanges [N*m]")}, {}));
   t.push_back(Type("ConstantTorque", "constant torque, independent of speed", source_ports(),
                    {Scalar("tau_constant", Torque(), "N*m", std::nullopt, any,
                            "accelerating torque (negative: braking)")}));

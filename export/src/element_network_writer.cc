@@ -24,7 +24,7 @@ const std::map<std::string, std::string>& ClassOfElementType() {
                           "BearingFriction", "Brake", "Clutch", "OneWayClutch", "RelativeStates",
                           "IdealGearR2T", "IdealRollingWheel"})
       m[c] = rotational + "Components." + c;
-    for (const char* c : {"Torque", "ConstantTorque", "TorqueStep", "LinearSpeedDependentTorque",
+    for (const char* c : {"Torque", "Torque2", "ConstantTorque", "TorqueStep", "LinearSpeedDependentTorque",
                           "QuadraticSpeedDependentTorque", "SignTorque", "EddyCurrentTorque", "Speed",
                           "Position", "ConstantSpeed", "Accelerate", "Move"})
       m[c] = rotational + "Sources." + c;

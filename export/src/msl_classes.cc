@@ -72,6 +72,7 @@ const Entry kEntries[] = {
      "flange_a:r flange_b:r f_normalized:ri heatPort:h"},
     // ---- Rotational sources ------------------------------------------------------------------
     {"Modelica.Mechanics.Rotational.Sources.Torque", "model", "useSupport phi", HL_ONE_SUPPORT " tau:ri"},
+    {"Modelica.Mechanics.Rotational.Sources.Torque2", "model", "", "flange_a:r flange_b:r tau:ri"},
     {"Modelica.Mechanics.Rotational.Sources.Speed", "model", "exact f_crit useSupport phi w a",
      HL_ONE_SUPPORT " w_ref:ri"},
     {"Modelica.Mechanics.Rotational.Sources.Position", "model", "exact f_crit useSupport phi w a",

@@ -351,6 +351,20 @@ class Force : public TorqueSource {
   int u = -1;
 };
 
+/// Torque2: the input tau acts between the flanges (MSL flange_a.tau = tau, flange_b.tau = -tau):
+/// +tau on flange_b, -tau on flange_a, i.e. a Torque whose support is flange_a.
+class Torque2 : public TorqueInput {
+ public:
+  std::vector<std::string> Flanges() const override { return {"flange_a", "flange_b"}; }
+  void Bind(const std::function<int(const std::string&)>& node_of,
+            const std::function<int(const std::string&)>& signal_of) override {
+    n = node_of("flange_b");
+    s = node_of("flange_a");
+    BindSignals(signal_of);
+  }
+  std::vector<std::string> OutputNames() const override { return {"tau", "w_rel"}; }
+};
+
 class TranslationalSensor : public Element {
  public:
   explicit TranslationalSensor(bool speed) : speed(speed) {}
@@ -383,6 +397,7 @@ std::unique_ptr<Element> MakeMoreMslElement(const NetworkElement& e) {
   if (t == "Speed") return std::make_unique<Speed>(e);
   if (t == "Accelerate") return std::make_unique<Accelerate>(e);
   if (t == "Move") return std::make_unique<Move>();
+  if (t == "Torque2") return std::make_unique<Torque2>();
   if (t == "ConstantSpeed") return std::make_unique<ConstantSpeed>(e);
   if (t == "IdealGearR2T") return std::make_unique<RotationalToTranslational>(1.0 / Param(e, "ratio"));
   if (t == "IdealRollingWheel") return std::make_unique<RotationalToTranslational>(Param(e, "radius"));

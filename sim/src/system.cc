@@ -553,6 +553,31 @@ void System::AssignStates(const std::map<std::string, int>& signal_source, const
 }
 
 void System::ClassifyMasslessNodes() {
+  // Flanges joined only by rigid sensors, none with inertia or fixed: their common acceleration
+  // is undetermined (a massless node is solved between springs and dampers only).
+  auto rigid_sensor = [](const Element& el) {
+    return el.type == "TorqueSensor" || el.type == "PowerSensor" || el.type == "MultiSensor";
+  };
+  UnionFind rigid(static_cast<int>(nodes_.size()));
+  for (const auto& el : elements_) {
+    const auto nodes = el->CoupledNodes();
+    for (std::size_t k = 1; k < nodes.size(); ++k) rigid.Unite(nodes[0], nodes[k]);
+  }
+  std::vector<char> anchored(nodes_.size(), 0);  // inertia, a fixed flange or another coupling
+  for (std::size_t n = 0; n < nodes_.size(); ++n)
+    if (nodes_[n].ground || nodes_[n].J > 0) anchored[rigid.Find(static_cast<int>(n))] = 1;
+  for (const auto& el : elements_)
+    if (!rigid_sensor(*el))
+      for (int n : el->CoupledNodes()) anchored[rigid.Find(n)] = 1;
+  for (const auto& el : elements_) {
+    if (!rigid_sensor(*el) || anchored[rigid.Find(el->CoupledNodes().front())]) continue;
+    std::vector<std::string> names;
+    for (int n : el->CoupledNodes()) names.push_back(nodes_[n].name);
+    throw InputError("element '" + el->id + "' (" + el->type + ") joins flanges " + Join(names) +
+                     " rigidly, and none of the flanges joined so has inertia or is fixed: their "
+                     "acceleration is undetermined (a flange without inertia is solved as a static "
+                     "balance of springs and dampers only); connect the sensor next to an Inertia");
+  }
   std::vector<bool> coupled(nodes_.size(), false);
   for (const auto& el : elements_)
     for (int n : el->CoupledNodes()) coupled[n] = true;
@@ -586,6 +611,15 @@ void System::ClassifyMasslessNodes() {
   }
   massless_local_.assign(nodes_.size(), -1);
   for (std::size_t i = 0; i < massless_.size(); ++i) massless_local_[massless_[i]] = static_cast<int>(i);
+  // The balance gives a massless node's angle and speed, not its acceleration.
+  for (const auto& el : elements_)
+    if (el->type == "AccSensor" || el->type == "RelAccSensor")
+      for (int n : el->Nodes())
+        if (nodes_[n].massless)
+          throw InputError("element '" + el->id + "' (" + el->type + ") measures the acceleration of flange '" +
+                           nodes_[n].name +
+                           "', which has no inertia (a static balance of springs and dampers): its "
+                           "acceleration is not computed; measure it at a flange with inertia");
 }
 
 // The speeds of the massless nodes: the torque balance sum(T_k) = 0 of the compliant elements

@@ -2,8 +2,11 @@
 // errors with exit code 2.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -195,25 +198,42 @@ TEST(SimulateCli, SteadyStateStartFromTheProjectFile) {
 
 // validate and simulate apply one structural check: they accept and reject the same networks
 // (a massless node between springs and an IdealPlanetary with an open ring are valid; a torque
-// on a massless node is not), with the same message.
-TEST(ValidateAndSimulate, AgreeOnEveryStructureExample) {
-  for (const std::string file : {"tests/sim/msl/SeriesSprings.json", "tests/sim/structure/PlanetaryOpenRing.json",
-                                 "tests/sim/structure/MasslessDrivenNode.json", "tests/sim/msl/InitialConditions.json",
-                                 "tests/sim/msl/ElasticBearing.json", "tests/sim/structure/OverDeterminedAStart.json"}) {
+// on a massless node is not, nor a torque sensor between two springs or an acceleration sensor on
+// a massless node), with the same message.
+// Every example and structure network under tests/sim/msl and tests/sim/structure is run
+// through both.
+TEST(ValidateAndSimulate, AgreeOnEveryExampleAndStructureNetwork) {
+  // The networks that both must reject, with the message.
+  const std::map<std::string, std::string> invalid{
+      {"MasslessDrivenNode.json", "element 'torque' (ConstantTorque) acts on it"},
+      {"AccSensorOnMasslessNode.json",
+       "element 'accSensor' (AccSensor) measures the acceleration of flange 'spring1.flange_b', which has no "
+       "inertia"},
+      {"SensorBetweenSprings.json",
+       "element 'torqueSensor' (TorqueSensor) joins flanges spring1.flange_b, torqueSensor.flange_b rigidly"},
+      {"OverDeterminedAStart.json",
+       "element 'inertia' (Inertia): the initial equation a = a_start = 1 rad/s^2 does not hold at the start: "
+       "a = 4 rad/s^2"}};
+  std::vector<std::filesystem::path> files;
+  for (const char* dir : {"tests/sim/msl", "tests/sim/structure"})
+    for (const auto& entry : std::filesystem::directory_iterator(std::filesystem::path(HIGHLIFT_SOURCE_DIR) / dir))
+      if (entry.path().extension() == ".json") files.push_back(std::filesystem::path(dir) / entry.path().filename());
+  std::sort(files.begin(), files.end());
+  ASSERT_GE(files.size(), 19u);
+  std::size_t rejected = 0;
+  for (const auto& path : files) {
+    const std::string file = path.string();
     const auto v = highlift::testing::RunCli({"validate", file});
     const auto s = highlift::testing::RunCli({"simulate", file});
     EXPECT_EQ(v.exit_code, s.exit_code) << file << "\nvalidate: " << v.err << "\nsimulate: " << s.err;
-    const bool massless = file.find("MasslessDriven") != std::string::npos;
-    const bool valid = !massless && file.find("OverDetermined") == std::string::npos;
-    EXPECT_EQ(v.exit_code, valid ? 0 : 2) << file << ": " << v.err;
-    if (!valid) {
-      const std::string m = massless ? "element 'torque' (ConstantTorque) acts on it"
-                                     : "element 'inertia' (Inertia): the initial equation a = a_start = 1 rad/s^2 "
-                                       "does not hold at the start: a = 4 rad/s^2";
-      EXPECT_NE(v.err.find(m), std::string::npos) << v.err;
-      EXPECT_NE(s.err.find(m), std::string::npos) << s.err;
-    }
+    const auto it = invalid.find(path.filename().string());
+    EXPECT_EQ(v.exit_code, it == invalid.end() ? 0 : 2) << file << ": " << v.err;
+    if (it == invalid.end()) continue;
+    ++rejected;
+    EXPECT_NE(v.err.find(it->second), std::string::npos) << v.err;
+    EXPECT_NE(s.err.find(it->second), std::string::npos) << s.err;
   }
+  EXPECT_EQ(rejected, invalid.size());
 }
 
 }  // namespace
