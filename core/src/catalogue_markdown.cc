@@ -48,12 +48,13 @@ std::string Kind(const ParameterSpec& p) {
 std::string CatalogueMarkdown() {
   std::string md;
   md += "# Component reference\n\n";
-  md += "<!-- Generated from core/src/catalogue.cc by highlift::CatalogueMarkdown(); do not edit by hand.\n";
+  md += "<!-- Generated from the type declarations (model/src/components/<type>.cc) by highlift::CatalogueMarkdown();\n"
+        "     do not edit by hand.\n";
   md += "     Regenerate: HIGHLIFT_UPDATE_DOCS=1 ctest -R CatalogueMarkdown.DocsAreUpToDate -->\n\n";
   md += "The drive-system component types of a project file ([project-format.md](project-format.md)). Each type\n"
-        "declares its ports and its parameters once, in `core/src/catalogue.cc`; the reader, the interval\n"
-        "propagator, the estimator, the database, the reduced models, the simulator and the Modelica exporter\n"
-        "all read that declaration.\n\n";
+        "declares its ports and its parameters once, in its own file (`model/src/components/<type>.cc`); the\n"
+        "reader, the interval propagator, the estimator, the database, the reduced models, the simulator and the\n"
+        "Modelica exporter all read that declaration.\n\n";
   md += "Columns: **unit** is the display unit (a file may use any unit of the same dimension; inside\n"
         "highlift all values are SI); **nominal** is the default value when the file gives none; **default\n"
         "domain** the default interval (a single number: a point); **valid range** the physically valid\n"

@@ -6,6 +6,7 @@
 #include <limits>
 #include <numbers>
 #include <functional>
+#include <iterator>
 #include <optional>
 #include <queue>
 #include <set>
@@ -733,16 +734,19 @@ class Builder {
         if (Has(p + "polar_moment"))
           Define(p + "shear_stress", "MPa", "shear stress from the drive torque, T D / (2 Ip)",
                  model::TubeShearStress(drive, Reader(*this, c)("outer_diameter"), Var(p + "polar_moment")));
-      } else if ((roles.wing_limiter || roles.station_limiter) && HasParam(c, "lockout_torque_extend")) {
+      } else if ((roles.wing_limiter || roles.station_limiter) && HasParam(c, "lockout_torque_extend") &&
+                 LimitedNode(i) >= 0) {
         // As reduced_models' setting rules: a system limiter against the largest wing torque of
-        // every case, a station limiter against its largest extending torque.
+        // every case, a station limiter against its largest extending torque; both against the
+        // torque through the limiter (at its input, or at the port of a down-drive limiter).
         const bool station = roles.station_limiter;
+        const int limited = LimitedNode(i);
         auto setting = [&](const std::string& suffix, const std::string& lockout, const std::string& direction,
                            const std::string& in) {
           const Sym through = Define(p + "torque_through" + suffix, "N*m",
                                      station ? "operating torque through the limiter, the largest of the " + direction + "ing load cases"
                                              : "operating torque through the limiter, the largest of the load cases",
-                                     operating(i, station ? direction : ""));
+                                     operating(limited, station ? direction : ""));
           Define(p + "margin" + suffix, "N*m", "limiter margin" + in + ", lockout setting minus operating torque",
                  Var(p + lockout) - through, Whole());
         };
@@ -856,6 +860,15 @@ class Builder {
     const std::string name = peaks_->nodes[k].id + "." + what;
     return Has(name) ? name : std::string();
   }
+  /// The node whose input torque passes node k's torque limiter: k for an in-line limiter, the
+  /// child on the model's LimitedPort() for a limiter in a gearbox's down-drive (-1: none there).
+  int LimitedNode(int k) const {
+    const model::ComponentModel* m = ModelOf(NodeComponent(k));
+    if (!m || m->LimitedPort().empty()) return k;
+    for (int child : peaks_->nodes[k].children)
+      if (parent_port_.at(peaks_->nodes[child].id) == m->LimitedPort()) return child;
+    return -1;
+  }
   /// 1 / (product of the gear ratios inboard of node k) as text: w_k / w_pdu.
   std::string SpeedRatio(int k) const { return "(" + SpeedRatioOf(peaks_->nodes[k].id).Text() + ")"; }
 
@@ -957,8 +970,12 @@ class Builder {
       Derived(p + c.id, "N*m", Whole());
       Law(p + c.id, "peak load of '" + pc.name + "' at " + c.id,
           p + c.id + " == " + (cap.empty() ? p + "total_torque" : "min(" + p + "total_torque, " + cap + ")"));
-      if (pc.kind == "jam" && HasRole(c, &model::ComponentRoles::station_limiter) && HasValue(c, "end_stop_torque")) {
-        const std::string end_stop = Value(c, "end_stop_torque") + " * " + SpeedRatio(node_index_.at(c.id));
+      // A limiter in a down-drive (LimitedPort) caps only when the path goes on through that port.
+      const int k = node_index_.at(c.id), limited = LimitedNode(k);
+      const bool behind = limited == k || (std::next(id) != pc.load_path.rend() && node_index_.at(*std::next(id)) == limited);
+      if (pc.kind == "jam" && behind && HasRole(c, &model::ComponentRoles::station_limiter) &&
+          HasValue(c, "end_stop_torque")) {
+        const std::string end_stop = Value(c, "end_stop_torque") + " * " + SpeedRatio(limited);
         cap = cap.empty() ? end_stop : "min(" + cap + ", " + end_stop + ")";
       }
     }

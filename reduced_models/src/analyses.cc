@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <functional>
+#include <iterator>
 #include <numbers>
 #include <optional>
 
@@ -529,10 +530,15 @@ PeakReport AnalysePeaks(const Project& project, const PeakOptions& options) {
         w.worst_case = pc.name;
         w.torque = torque;
       }
-      if (pc.kind == "jam" && g.Roles(k).station_limiter && detail::HasValue(*g.nodes[k].component, "end_stop_torque")) {
+      // A limiter in a down-drive (LimitedPort) caps only when the path goes on through that port.
+      const int limited = g.LimitedNode(k);
+      const bool behind = limited == k || (std::next(id) != pc.load_path.rend() && g.Find(*std::next(id)) == limited);
+      if (pc.kind == "jam" && behind && g.Roles(k).station_limiter &&
+          detail::HasValue(*g.nodes[k].component, "end_stop_torque")) {
         const Component& limiter = *g.nodes[k].component;
-        cap = std::min(cap, detail::NominalValue(limiter, "end_stop_torque") * speed_ratio[k]);
-        cap_bounds = detail::Min(cap_bounds, detail::Read<Interval>(limiter, "end_stop_torque", bounds.mode) * bounds.n[k]);
+        cap = std::min(cap, detail::NominalValue(limiter, "end_stop_torque") * speed_ratio[limited]);
+        cap_bounds =
+            detail::Min(cap_bounds, detail::Read<Interval>(limiter, "end_stop_torque", bounds.mode) * bounds.n[limited]);
       }
     }
   }

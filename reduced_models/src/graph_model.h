@@ -55,6 +55,16 @@ struct Graph {
     const model::ComponentModel* m = nodes[i].model;
     return m && m->roles().*role;
   }
+  /// The node whose input torque passes node i's torque limiter: node i itself for an in-line
+  /// limiter, the child on its model's LimitedPort() for a limiter inside a gearbox's down-drive
+  /// (-1 when nothing is connected there).
+  int LimitedNode(int i) const {
+    const model::ComponentModel* m = nodes[i].model;
+    if (!m || m->LimitedPort().empty()) return i;
+    for (int child : nodes[i].children)
+      if (nodes[child].parent_port == m->LimitedPort()) return child;
+    return -1;
+  }
   /// Path from node i up to the PDU (i first).
   std::vector<int> PathToRoot(int i) const {
     std::vector<int> path;

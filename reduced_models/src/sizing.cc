@@ -164,11 +164,13 @@ SizingReport Size(const Project& project, const SizingOptions& options) {
     const int node = static_cast<int>(i);
     const model::ComponentModel* m = detail::ModelOf(*g.nodes[node].component);
     if (!m) continue;
+    const int limited = g.LimitedNode(node);  // the torque through its limiter: at its input or a port
     for (const model::SettingRule& rule : m->SettingRules()) {
       using Against = model::SettingRule::Against;
-      const Bounded against = rule.against == Against::kOperating          ? operating(node, "")
-                              : rule.against == Against::kOperatingExtend  ? operating(node, "extend")
-                              : rule.against == Against::kOperatingRetract ? operating(node, "retract")
+      if (limited < 0 && rule.against != Against::kWingHolding) continue;
+      const Bounded against = rule.against == Against::kOperating          ? operating(limited, "")
+                              : rule.against == Against::kOperatingExtend  ? operating(limited, "extend")
+                              : rule.against == Against::kOperatingRetract ? operating(limited, "retract")
                                                                            : wing_holding(node);
       recommend(node, rule.parameter, rule.rule, against, rule.factor, rule.factor_min, rule.factor_max);
     }

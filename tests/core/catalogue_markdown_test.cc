@@ -33,7 +33,7 @@ TEST(CatalogueMarkdown, DocsAreUpToDate) {
   std::stringstream committed;
   committed << in.rdbuf();
   EXPECT_TRUE(committed.str() == md)
-      << path << " is out of date with core/src/catalogue.cc; regenerate it: HIGHLIFT_UPDATE_DOCS=1 ctest -R "
+      << path << " is out of date with the declarations (model/src/components/<type>.cc); regenerate it: HIGHLIFT_UPDATE_DOCS=1 ctest -R "
                  "CatalogueMarkdown.DocsAreUpToDate";
 }
 

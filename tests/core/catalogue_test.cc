@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include "highlift/core/error.h"
+#include "highlift/model/component_model.h"
+
 #include <algorithm>
 #include <cmath>
 #include <set>
@@ -9,14 +12,33 @@
 namespace highlift {
 namespace {
 
-TEST(Catalogue, HasTheFourteenDriveSystemTypesInOrder) {
+TEST(Catalogue, HasTheFifteenDriveSystemTypesInOrder) {
   const std::vector<std::string> expected = {
       "pdu", "system_torque_limiter", "torque_shaft", "steady_bearing", "universal_joint", "angle_gearbox",
-      "branch_gearbox", "station_torque_limiter", "geared_rotary_actuator", "ballscrew_actuator", "wing_tip_brake",
-      "position_sensor", "disconnector", "jam"};
+      "branch_gearbox", "station_torque_limiter", "station_input_gearbox", "geared_rotary_actuator",
+      "ballscrew_actuator", "wing_tip_brake", "position_sensor", "disconnector", "jam"};
   EXPECT_EQ(ComponentTypeNames(), expected);
   for (const auto& name : expected) EXPECT_NE(FindComponentType(name), nullptr) << name;
   EXPECT_EQ(FindComponentType("gra"), nullptr);
+}
+
+// The declarations live in the model layer, which installs them when the program starts; a
+// program without it is told what to link.
+TEST(Catalogue, IsInstalledByTheModelLayerAndSaysSoWhenItIsNot) {
+  ASSERT_TRUE(ComponentCatalogueInstalled());
+  EXPECT_EQ(&ComponentTypes(), &model::ComponentCatalogue());
+  InstallComponentCatalogue(nullptr);
+  EXPECT_FALSE(ComponentCatalogueInstalled());
+  try {
+    FindComponentType("pdu");
+    ADD_FAILURE() << "expected an InternalError";
+  } catch (const InternalError& e) {
+    EXPECT_NE(std::string(e.what()).find("no component catalogue is installed"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("link highlift::model"), std::string::npos) << e.what();
+  }
+  model::InstallComponentCatalogue();
+  ASSERT_TRUE(ComponentCatalogueInstalled());
+  EXPECT_NE(FindComponentType("pdu"), nullptr);
 }
 
 TEST(Catalogue, EveryTypeHasItsPorts) {
@@ -29,6 +51,7 @@ TEST(Catalogue, EveryTypeHasItsPorts) {
       {"angle_gearbox", {{"input", true}, {"output", true}}},
       {"branch_gearbox", {{"input", true}, {"through", false}, {"branch", true}}},
       {"station_torque_limiter", {{"input", true}, {"output", true}}},
+      {"station_input_gearbox", {{"input", true}, {"through", false}, {"branch", true}}},
       {"geared_rotary_actuator", {{"input", true}}},
       {"ballscrew_actuator", {{"input", true}}},
       {"wing_tip_brake", {{"a", true}, {"b", false}}},

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "component_util.h"
+#include "declaration.h"
 #include "highlift/core/text_table.h"
 #include "highlift/model/drive_network.h"
 

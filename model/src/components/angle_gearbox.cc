@@ -3,6 +3,25 @@
 #include "gearbox.h"
 
 namespace highlift::model::components {
+
+// The declaration: ports, parameters (units, defaults, domains, sources) and roles.
+ComponentTypeSpec AngleGearboxDeclaration() {
+  ComponentTypeSpec t;
+  t.name = "angle_gearbox";
+  t.display_name = "angle gearbox";
+  t.description = "Angle, bevel, offset or kink gearbox (root gearbox) changing the shaft direction.";
+  t.ports = {Flange("input", "flange nearer the PDU"), GearedFlange("output", "flange farther from the PDU")};
+  AddGearbox(t.parameters, "gear ratio, input speed / output speed (MSL IdealGear)", 1, 1, 2,
+             "domain.md s6 (E): 1:1 to 2:1", 2e-3, "domain.md s3 (E): root gearbox 2e-3 kg m2");
+  t.parameters.push_back(Param("shaft_angle", "alpha", Dimensionless(), "deg", "angle between input and output shafts")
+                             .Valid(0, 180)
+                             .Optional()
+                             .Source("domain.md s1 (P): e.g. 19 deg, 63.5 deg (A320 slats)"));
+  t.parameters.push_back(SpanPosition());
+  t.roles = {.lumps_inertia = true};
+  return t;
+}
+
 namespace {
 
 class AngleGearboxModel final : public NamedModel {

@@ -3,6 +3,27 @@
 #include "gearbox.h"
 
 namespace highlift::model::components {
+
+// The declaration: ports, parameters (units, defaults, domains, sources) and roles.
+ComponentTypeSpec BranchGearboxDeclaration() {
+  ComponentTypeSpec t;
+  t.name = "branch_gearbox";
+  t.display_name = "branch gearbox";
+  t.description =
+      "T-gearbox or down-drive (station gearbox): the shaft passes through 1:1 and a branch "
+      "drives the station. ratio = input speed / branch speed.";
+  t.ports = {Flange("input", "flange nearer the PDU"),
+             Flange("through", "through-drive flange, 1:1 with the input (open at the last station)", false),
+             GearedFlange("branch", "down-drive flange to the station")};
+  AddGearbox(t.parameters, "gear ratio, input speed / branch speed", 2, 1, 2,
+             "domain.md s3 (E): station gearbox 2:1; s6 1:1 to 2:1", 6.25e-4,
+             "domain.md s3 (E): station input 1e-3 kg m2 at the shaft in all = this 6.25e-4 + (limiter 5e-4 + "
+             "actuator input 1e-3) / 2^2 behind the default 2:1");
+  t.parameters.push_back(SpanPosition());
+  t.roles = {.lumps_inertia = true};
+  return t;
+}
+
 namespace {
 
 class BranchGearboxModel final : public NamedModel {
@@ -14,8 +35,7 @@ class BranchGearboxModel final : public NamedModel {
   /// Steady state: the through shaft 1:1, the branch a gear stage, plus its Stribeck friction.
   template <class T>
   T SteadyLaw(const ParameterReader<T>& p, const SteadyFlow<T>& in) const {
-    const T eta = MeshEfficiency(p);
-    return in.through + GearInputTorque(in.branch, p("ratio"), eta, eta) + in.friction * StribeckOf(p, in.w);
+    return BranchGearboxInputTorque(p, in);
   }
   HIGHLIFT_STEADY_LAW
 

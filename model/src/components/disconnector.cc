@@ -1,8 +1,22 @@
 // disconnector: a coupling that a rupture scenario may open, ports a and b; one
 // HighLift.Mechanical.Disconnector (stiff spring-damper until t_disconnect).
-#include "component_util.h"
+#include "declaration.h"
 
 namespace highlift::model::components {
+
+// The declaration: ports, parameters (units, defaults, domains, sources) and roles.
+ComponentTypeSpec DisconnectorDeclaration() {
+  ComponentTypeSpec t;
+  t.name = "disconnector";
+  t.display_name = "disconnector";
+  t.description = "Failure element: a rigid (or elastic) coupling that breaks at the scenario's rupture time (shaft rupture).";
+  t.ports = {Flange("a", "flange nearer the PDU"), Flange("b", "flange farther from the PDU")};
+  t.parameters.push_back(OptionalStiffness("torsional stiffness before the rupture", ReferenceSide::kShaft));
+  t.parameters.push_back(SpanPosition());
+  t.roles = {.rupturable = true};
+  return t;
+}
+
 namespace {
 
 constexpr double kDefaultStiffness = 1e6;  // N*m/rad, far above any shaft segment

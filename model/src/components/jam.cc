@@ -1,8 +1,27 @@
 // jam: a jam element on a flange (port a), tying it to the structure at the scenario's time;
 // one HighLift.Mechanical.Jam.
-#include "component_util.h"
+#include "declaration.h"
 
 namespace highlift::model::components {
+
+// The declaration: ports, parameters (units, defaults, domains, sources) and roles.
+ComponentTypeSpec JamDeclaration() {
+  ComponentTypeSpec t;
+  t.name = "jam";
+  t.display_name = "jam";
+  t.description = "Failure element: locks its flange to structure at the scenario's jam time.";
+  t.ports = {Flange("a", "flange on the transmission (usually an actuator input)")};
+  t.parameters.push_back(Param("stiffness", "c", Torque(), "N*m/rad", "stiffness of the jammed load path to structure, at the flange it locks (an actuator input)")
+                             .Nominal(1e5)
+                             .Default(2e4, 5e5)
+                             .Valid(0, 1e12)
+                             .Source("estimate: stiff compared with the shaft segments (1.4-3.3 kN*m/rad)")
+                             .Side(ReferenceSide::kActuatorInput));
+  t.parameters.push_back(SpanPosition());
+  t.roles = {.jammable = true, .lumps_inertia = true};
+  return t;
+}
+
 namespace {
 
 class JamModel final : public NamedModel {

@@ -1,5 +1,8 @@
-// The component registry: one line per component type (its model is in <type>.cc beside this
-// file). The order is the catalogue's.
+// The component registry: one line per component type (its declaration and its model are in
+// <type>.cc beside this file). The order is the catalogue's. The registry installs the
+// declarations as core's catalogue (highlift::ComponentTypes) when the program starts: every
+// program linking highlift::model links this file, since model/CMakeLists.txt makes the linker
+// keep it (-u highlift_model_component_registry).
 #include <algorithm>
 #include <unordered_map>
 
@@ -16,6 +19,7 @@
   X(AngleGearbox)                   \
   X(BranchGearbox)                  \
   X(StationTorqueLimiter)           \
+  X(StationInputGearbox)            \
   X(GearedRotaryActuator)           \
   X(BallscrewActuator)              \
   X(WingTipBrake)                   \
@@ -25,7 +29,9 @@
 
 namespace highlift::model {
 namespace components {
-#define HIGHLIFT_DECLARE(Name) const ComponentModel& Name##Component();
+#define HIGHLIFT_DECLARE(Name)             \
+  ComponentTypeSpec Name##Declaration(); \
+  const ComponentModel& Name##Component();
 HIGHLIFT_COMPONENT_TYPES(HIGHLIFT_DECLARE)
 #undef HIGHLIFT_DECLARE
 
@@ -61,6 +67,22 @@ void CheckBacklash(const Component& c) {
 }
 
 }  // namespace components
+
+const std::vector<ComponentTypeSpec>& ComponentCatalogue() {
+  static const std::vector<ComponentTypeSpec> types = {
+#define HIGHLIFT_LIST(Name) components::Name##Declaration(),
+      HIGHLIFT_COMPONENT_TYPES(HIGHLIFT_LIST)
+#undef HIGHLIFT_LIST
+  };
+  return types;
+}
+
+void InstallComponentCatalogue() { highlift::InstallComponentCatalogue(&ComponentCatalogue); }
+
+namespace {
+/// Installs the catalogue before main: a static initialiser in the file the linker is told to keep.
+const bool kCatalogueInstalled = (InstallComponentCatalogue(), true);
+}  // namespace
 
 ComponentRoles ComponentModel::roles() const { return RolesOf(type()); }
 
@@ -122,3 +144,7 @@ std::vector<std::string> TypesWithRole(bool ComponentRoles::*role) {
 }
 
 }  // namespace highlift::model
+
+/// The symbol model/CMakeLists.txt asks the linker for (-u), so every program linking
+/// highlift::model keeps this file and its static initialiser, also from a static library.
+extern "C" const bool* highlift_model_component_registry() { return &highlift::model::kCatalogueInstalled; }

@@ -1,8 +1,24 @@
 // steady_bearing: a bearing of the transmission with Stribeck friction, ports a and b; one
 // HighLift.Mechanical.LossyInertia, or a member of a lumped chain at reduced resolution.
-#include "component_util.h"
+#include "declaration.h"
 
 namespace highlift::model::components {
+
+// The declaration: ports, parameters (units, defaults, domains, sources) and roles.
+ComponentTypeSpec SteadyBearingDeclaration() {
+  ComponentTypeSpec t;
+  t.name = "steady_bearing";
+  t.display_name = "steady bearing";
+  t.description = "Steady bearing supporting the shaft; Stribeck friction (paper eq. 3).";
+  t.ports = {Flange("a", "flange nearer the PDU"), Flange("b", "flange farther from the PDU")};
+  AddStribeck(t.parameters, 0.1, 0.05, 0.2, "domain.md s6 (E): drag 0.05-0.2 N m each", ReferenceSide::kShaft);
+  t.parameters.push_back(
+      Inertia(5e-5, 1e-5, 1e-4, "inertia of the bearing's rotating parts", "estimate: small", ReferenceSide::kShaft));
+  t.parameters.push_back(SpanPosition());
+  t.roles = {.chain_member = true};
+  return t;
+}
+
 namespace {
 
 class SteadyBearingModel final : public NamedModel {

@@ -5,11 +5,78 @@
 // "<id>.m0".."<id>.mN"; reduced resolution: a member of a lumped chain.
 #include <algorithm>
 
-#include "component_util.h"
+#include "declaration.h"
 #include "highlift/model/drive_network.h"
 #include "highlift/model/laws.h"
 
 namespace highlift::model::components {
+
+// The declaration: ports, parameters (units, defaults, domains, sources) and roles.
+ComponentTypeSpec TorqueShaftDeclaration() {
+  ComponentTypeSpec t;
+  t.name = "torque_shaft";
+  t.display_name = "torque shaft";
+  t.description =
+      "Torque shaft segment: a tube (length, outer diameter, wall thickness, material) or given "
+      "directly by stiffness and inertia. c = G*pi/32*(D^4 - d^4)/L, J = rho*pi/32*(D^4 - d^4)*L.";
+  t.ports = {Flange("a", "flange nearer the PDU"), Flange("b", "flange farther from the PDU")};
+  auto& ps = t.parameters;
+  ps.push_back(Param("length", "L", Length(), "m", "length of the segment")
+                   .Valid(0.01, 100)
+                   .Source("none: given per segment (domain.md s3 lists 1.5-4 m)"));
+  ps.push_back(Param("outer_diameter", "D", Length(), "mm", "outer diameter of the tube")
+                   .Nominal(50)
+                   .Default(38, 60)
+                   .Valid(5, 500)
+                   .Source("domain.md s3 (E): 50 mm inboard, 45 mm outboard; s4: 38 mm"));
+  ps.push_back(Param("wall_thickness", "t", Length(), "mm", "wall thickness of the tube")
+                   .Nominal(2.0)
+                   .Default(1.4, 2.1)
+                   .Valid(0.1, 100)
+                   .Source("domain.md s3 (E): 2.0 mm inboard, 1.8 mm outboard, +-0.1 mm"));
+  ps.push_back(Param("shear_modulus", "G", Pressure(), "GPa", "shear modulus of the tube material")
+                   .Nominal(44)
+                   .Default(43, 51)
+                   .Valid(1, 300)
+                   .Source("domain.md s6 (P-low): Ti-6Al-4V G 44 [43, 51] GPa"));
+  ps.push_back(Param("density", "rho", Density(), "kg/m^3", "density of the tube material")
+                   .Nominal(4420)
+                   .Valid(100, 30000)
+                   .Source("domain.md s1 (P): Ti-6Al-4V 4420 kg/m3"));
+  ps.push_back(Param("allowable_shear_stress", "tau_allow", Pressure(), "MPa", "allowable (ultimate) shear stress of the material")
+                   .Nominal(550)
+                   .Default(500, 600)
+                   .Valid(1, 5000)
+                   .Source("domain.md s6 (E): Ti-6Al-4V ultimate shear about 550 MPa"));
+  ps.push_back(OptionalStiffness("torsional stiffness of the whole segment; overrides the tube geometry",
+                                 ReferenceSide::kShaft, "none: from the tube geometry unless given"));
+  ps.push_back(Param("inertia", "J", dimensions::Inertia(), "kg*m^2", "inertia of the whole segment; overrides the tube geometry")
+                   .Valid(0, 1e3)
+                   .Optional()
+                   .Source("none: from the tube geometry unless given")
+                   .Side(ReferenceSide::kShaft));
+  ps.push_back(Param("linear_density", "m_l", LinearDensity(), "kg/m", "mass per length (for a composite tube whose density is not known)")
+                   .Valid(0, 1e3)
+                   .Optional()
+                   .Source("domain.md s1 (P): Ti 1.2 kg/m, CFRP 0.28 kg/m"));
+  ps.push_back(Param("damping", "d", RotationalDamping(), "N*m*s/rad", "structural damping of the segment")
+                   .Valid(0, 1e6)
+                   .Optional()
+                   .Source("none")
+                   .Side(ReferenceSide::kShaft));
+  ps.push_back(Param("drag_per_length", "tau_d", TorquePerLength(), "N*m/m",
+                     "drag torque of the bearings and joints along the segment, per metre of shaft")
+                   .Nominal(0.25)
+                   .Default(0.1, 0.5)
+                   .Valid(0, 100)
+                   .Source("domain.md s3 (E): 0.2-0.3 N m per metre, domain [0.1, 0.5]")
+                   .Side(ReferenceSide::kShaft));
+  ps.push_back(SpanPosition());
+  t.relations = {{"wall_thickness", "outer_diameter", 2.0, "the radius", "equal: a solid shaft"}};
+  t.roles = {.chain_member = true, .rupturable = true, .segment = true};
+  return t;
+}
+
 namespace {
 
 struct ShaftValues {

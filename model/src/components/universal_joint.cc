@@ -1,9 +1,31 @@
 // universal_joint: a joint of the transmission with efficiency, optional stiffness and backlash,
 // ports a and b; a HighLift.Mechanical.GeneralRotationalElement when elastic, else a
 // LossyInertia; a member of a lumped chain at reduced resolution.
-#include "component_util.h"
+#include "declaration.h"
 
 namespace highlift::model::components {
+
+// The declaration: ports, parameters (units, defaults, domains, sources) and roles.
+ComponentTypeSpec UniversalJointDeclaration() {
+  ComponentTypeSpec t;
+  t.name = "universal_joint";
+  t.display_name = "universal joint";
+  t.description = "Universal (Cardan) joint compensating a change in shaft direction.";
+  t.ports = {Flange("a", "flange nearer the PDU"), Flange("b", "flange farther from the PDU")};
+  auto& ps = t.parameters;
+  ps.push_back(Efficiency("efficiency", "eta", 0.985, 0.98, 0.99, "efficiency of the joint", "domain.md s6 (E): 0.98-0.99"));
+  ps.push_back(Inertia(2e-4, 1e-4, 3e-4, "inertia of the joint", "domain.md s6 (E): 1e-4 to 3e-4 kg m2", ReferenceSide::kShaft));
+  ps.push_back(Param("joint_angle", "beta", Dimensionless(), "deg", "bend angle of the joint")
+                   .Valid(0, 45)
+                   .Optional()
+                   .Source("none: from the installation"));
+  ps.push_back(Backlash("total backlash of the joint", ReferenceSide::kShaft));
+  ps.push_back(OptionalStiffness("torsional stiffness of the joint", ReferenceSide::kShaft));
+  ps.push_back(SpanPosition());
+  t.roles = {.chain_member = true};
+  return t;
+}
+
 namespace {
 
 class UniversalJointModel final : public NamedModel {

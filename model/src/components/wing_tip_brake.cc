@@ -1,8 +1,50 @@
 // wing_tip_brake: the brake at a wing tip, ports a and b; one HighLift.Mechanical.WingTipBrake
 // whose input apply the monitor's command drives (drive_network.cc, EmitMonitoring).
-#include "component_util.h"
+#include "declaration.h"
 
 namespace highlift::model::components {
+
+// The declaration: ports, parameters (units, defaults, domains, sources) and roles.
+ComponentTypeSpec WingTipBrakeDeclaration() {
+  ComponentTypeSpec t;
+  t.name = "wing_tip_brake";
+  t.display_name = "wing-tip brake";
+  t.description =
+      "Wing-tip brake (WTB) at the shaft end: on a monitor command, friction packs stop and hold "
+      "the transmission (paper 'shaft brake').";
+  t.ports = {Flange("a", "flange towards the transmission"),
+             Flange("b", "outboard flange when the brake is inline", false)};
+  auto& ps = t.parameters;
+  ps.push_back(Param("max_dynamic_torque", "tauB_max", Torque(), "N*m", "maximum dynamic (sliding) brake torque")
+                   .Nominal(550)
+                   .Default(500, 700)
+                   .Valid(0, 1e6)
+                   .Source("domain.md s3/s6 (E): 1.5 x the larger of the wing's opposing torque (360 N m) and its "
+                           "back-drive torque")
+                   .Side(ReferenceSide::kShaft));
+  ps.push_back(Param("static_capacity", "tauB_lim", Torque(), "N*m", "maximum static (holding) brake torque after the halt")
+                   .Nominal(700)
+                   .Default(550, 900)
+                   .Valid(0, 1e6)
+                   .Source("domain.md s3 (E): static capacity at least 550 N m")
+                   .Side(ReferenceSide::kShaft));
+  ps.push_back(Param("time_to_max_torque", "t_B", Time(), "ms", "time from engagement to the maximum dynamic torque")
+                   .Nominal(30)
+                   .Default(10, 60)
+                   .Valid(0, 1e4)
+                   .Source("estimate: friction packs close in tens of ms"));
+  ps.push_back(Param("engagement_latency", "t_lat", Time(), "ms", "delay from the monitor trigger to brake engagement")
+                   .Nominal(100)
+                   .Default(50, 150)
+                   .Valid(0, 1e4)
+                   .Source("domain.md s3/s6 (E): 50-150 ms"));
+  ps.push_back(Inertia(5e-4, 2e-4, 1e-3, "inertia of the brake rotor", "domain.md s3 (E): brake rotor 5e-4 kg m2",
+                       ReferenceSide::kShaft));
+  ps.push_back(SpanPosition());
+  t.roles = {.tip_brake = true, .lumps_inertia = true};
+  return t;
+}
+
 namespace {
 
 class WingTipBrakeModel final : public NamedModel {

@@ -139,10 +139,18 @@ struct ComponentTypeSpec {
   const ParameterSpec* FindParameter(std::string_view parameter) const;
 };
 
-/// All drive-system component types, in a fixed order. Names (JSON "type"):
-///   pdu, system_torque_limiter, torque_shaft, steady_bearing, universal_joint, angle_gearbox,
-///   branch_gearbox, station_torque_limiter, geared_rotary_actuator, ballscrew_actuator,
-///   wing_tip_brake, position_sensor, disconnector, jam.
+/// The provider of the component types' declarations: every type, in a fixed order.
+using ComponentCatalogueProvider = const std::vector<ComponentTypeSpec>& (*)();
+/// Installs the provider. Each type is declared in its own file of the model layer
+/// (model/src/components/<type>.cc), above core; the model layer's registry installs them when a
+/// program linking highlift::model starts (model/src/components/registry.cc).
+void InstallComponentCatalogue(ComponentCatalogueProvider provider);
+/// True when a provider is installed.
+bool ComponentCatalogueInstalled();
+
+/// All drive-system component types, in a fixed order (the catalogue's, docs/components.md).
+/// Throws InternalError when no provider is installed (a program that does not link
+/// highlift::model).
 const std::vector<ComponentTypeSpec>& ComponentTypes();
 /// The type named `name`, or nullptr.
 const ComponentTypeSpec* FindComponentType(std::string_view name);

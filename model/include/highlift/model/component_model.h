@@ -209,6 +209,11 @@ class ComponentModel {
   }
   /// The sizing rules of its settings (`highlift size` recommends them); none by default.
   virtual std::vector<SettingRule> SettingRules() const { return {}; }
+  /// The port whose power passes through its torque limiter (a limiter role): its settings are
+  /// set against, and in a jam cap, the torque leaving at this port, at this port's speed (the
+  /// torque at the input of what is connected there). Empty (default): the torque at its input
+  /// flange, the limiter being in line (a station or system torque limiter).
+  virtual std::string_view LimitedPort() const { return {}; }
   /// Adds the component's elements (full resolution; at reduced resolution the chain members
   /// are lumped by the translation from ChainMember). Throws InputError naming the component and
   /// parameter for a value it cannot translate.
@@ -271,6 +276,13 @@ class ComponentModel {
     return StopLaw(p);                                                                                 \
   }                                                                                                    \
   std::optional<Sym> StopTorqueLimit(const ParameterReader<Sym>& p) const override { return StopLaw(p); }
+
+/// The declarations of every component type (ports, parameters, roles: the Declaration() in each
+/// type's file), in catalogue order.
+const std::vector<ComponentTypeSpec>& ComponentCatalogue();
+/// Installs ComponentCatalogue() as core's catalogue (highlift::ComponentTypes). Done when a
+/// program linking highlift::model starts; needed again only after installing another provider.
+void InstallComponentCatalogue();
 
 /// The model of component type `type`, or nullptr.
 const ComponentModel* FindComponentModel(std::string_view type);
