@@ -1659,14 +1659,21 @@ bool System::ProjectSpeeds(double* y) {
         K(local_[n], nn + j) += coef;
       }
   }
-  // The constraints are mostly those of the last projection (the next pass of the event
+  // The active constraints are mostly those of a recent projection (the passes of the event
   // iteration, the next event): the decomposition of the same matrix (bit for bit) is reused.
-  if (project_matrix_.rows() != K.rows() || project_matrix_.cols() != K.cols() ||
-      std::memcmp(project_matrix_.data(), K.data(), sizeof(double) * static_cast<std::size_t>(K.size())) != 0) {
-    project_matrix_ = K;
-    project_decomposition_.compute(K);
+  auto same = [&](const Projection& p) {
+    return p.matrix.rows() == K.rows() && p.matrix.cols() == K.cols() &&
+           std::memcmp(p.matrix.data(), K.data(), sizeof(double) * static_cast<std::size_t>(K.size())) == 0;
+  };
+  auto hit = std::find_if(projections_.begin(), projections_.end(), same);
+  if (hit == projections_.end()) {
+    if (projections_.size() < kProjections) projections_.emplace_back();
+    hit = projections_.end() - 1;  // the least recent one is replaced
+    hit->matrix = K;
+    hit->decomposition.compute(K);
   }
-  Eigen::VectorXd x = project_decomposition_.solve(b);
+  std::rotate(projections_.begin(), hit, hit + 1);
+  Eigen::VectorXd x = projections_.front().decomposition.solve(b);
   double kinetic_change = 0.0;
   for (int i = 0; i < nn; ++i) {
     double& w = y[nodes_[node_list[i]].s_w];

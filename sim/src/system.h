@@ -146,9 +146,14 @@ class System {
   /// Pressure derivatives of the hydraulic nodes, after the elements' Forces().
   bool HydraulicDerivatives(double* ydot);
   bool ProjectSpeeds(double* y);
-  /// The matrix of the last speed projection and its decomposition (reused for the same matrix).
-  Eigen::MatrixXd project_matrix_;
-  Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> project_decomposition_;
+  /// The matrices of the last speed projections and their decompositions, most recent first
+  /// (an event iteration alternates between a few sets of active constraints).
+  struct Projection {
+    Eigen::MatrixXd matrix;
+    Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> decomposition;
+  };
+  static constexpr std::size_t kProjections = 4;
+  std::vector<Projection> projections_;
   /// The start state from node angles and speeds (indexed like start_unknown_): element
   /// states (InitStates), hydraulic start pressures when `pressures`, balanced massless nodes.
   void StartState(const Eigen::VectorXd& phi, const Eigen::VectorXd& w, double* y, bool pressures);
