@@ -198,19 +198,20 @@ void StribeckFriction::Forces(Eval& e) {
     e.AddForce(m, tau_stribeck);
     tau = tau_stribeck;
   };
-  if (regularized) {
-    // tanh(w/w_small) * (tau_C + tau_S*exp(-f_exp*|w|)) + d_vis*w: continuous and odd in w.
-    const double w = WF(e);
-    tau_stribeck = Smooth(e) * (tau_C + tau_S * Decay(f_exp * std::abs(w))) + d_vis * w;
-    apply();
-    return;
-  }
-  if (!Sliding()) {
+  if (!regularized && !Sliding()) {
     if (mode != msl::kStuck) tau = 0.0;
     return;
   }
+  // The law at the last (w, mode) is remembered (Memo): the Jacobian's difference quotients
+  // mostly leave this element's flanges alone.
   const double w = WF(e);
-  tau_stribeck = mode == msl::kForward ? Stribeck(w) : -Stribeck(-w);
+  if (!law_memo_.Same({w, static_cast<double>(mode)})) {
+    if (regularized)  // tanh(w/w_small) * (tau_C + tau_S*exp(-f_exp*|w|)) + d_vis*w: continuous and odd in w
+      law_ = Smooth(e) * (tau_C + tau_S * Decay(f_exp * std::abs(w))) + d_vis * w;
+    else
+      law_ = mode == msl::kForward ? Stribeck(w) : -Stribeck(-w);
+  }
+  tau_stribeck = law_;
   apply();
 }
 

@@ -96,7 +96,11 @@ class StribeckFriction : public msl::Friction {
   bool HasAssumptions() const override { return regularized && split; }
   bool Reassume(const Eval& e) override;
   /// Regularised law: tanh(w/w_small), the smooth sign of the sliding speed.
-  double Smooth(const Eval& e) const { return SmoothSign(WF(e) / w_small); }
+  double Smooth(const Eval& e) const {
+    const double w = WF(e);
+    if (!smooth_memo_.Same({w})) smooth_ = SmoothSign(w / w_small);
+    return smooth_;
+  }
   void PrepareEvent(const Eval& e) override;
   double Violation(const Eval& e) const override;
   void Fix(const Eval& e) override;
@@ -120,6 +124,10 @@ class StribeckFriction : public msl::Friction {
   int rigid = -1, stuck = -1;  // constraint indices of this evaluation
   double tau_load = 0.0;      // N*m
   double tau_stribeck = 0.0;  // N*m, the part of tau from law (3) while sliding
+  mutable Memo<1> smooth_memo_;  // Smooth at the last w
+  mutable double smooth_ = 0.0;
+  Memo<2> law_memo_;  // tau_stribeck at the last (w, mode)
+  double law_ = 0.0;
 };
 
 /// Boolean command to the normalized brake torque: applied = trigger or (latch and applied);

@@ -102,10 +102,14 @@ class GearedRotaryActuator : public LossyGear {
     return std::min(e_angle, e_speed);
   }
   /// Quadrant 1 (power from flange_a to flange_b): eta_op; quadrant 2: eta_ai.
+  /// Called by every phase of an evaluation (forces, constraints, the loss after the solve, the
+  /// quadrant check): computed once per point and mode (Memo).
   Coefficients RollingCoefficients(const Eval& e) const override {
+    if (rolling_memo_.Same({Phi(e), WA(e), phi_start, static_cast<double>(mode)})) return rolling_;
     const double m = Engagement(e);
     const double bf = Stribeck(WA(e));
-    return Make(1.0 - m * (1.0 - eta_op), 1.0 - m * (1.0 - eta_ai), bf, bf);
+    rolling_ = Make(1.0 - m * (1.0 - eta_op), 1.0 - m * (1.0 - eta_ai), bf, bf);
+    return rolling_;
   }
   /// At standstill eta_GE = 1: the stuck actuator breaks away at peak*(tau_C + tau_S).
   Coefficients RestCoefficients() const override {
@@ -176,6 +180,8 @@ class GearedRotaryActuator : public LossyGear {
   mutable double phi_start = 0.0;  // set by InitStates (const) and at events
   double phi_event = 0.0;
   int mode_before = kUnknown;
+  mutable Memo<4> rolling_memo_;  ///< RollingCoefficients at the last (phi, w, phi_start, mode)
+  mutable Coefficients rolling_{};
 };
 
 // ------------------------------------------------------------------------------------------

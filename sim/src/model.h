@@ -3,8 +3,12 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <functional>
+#include <initializer_list>
 #include <memory>
 #include <string>
 #include <utility>
@@ -23,6 +27,29 @@ using Table = std::vector<std::vector<double>>;
 inline double SmoothSign(double x) { return x > 20.0 ? 1.0 : (x < -20.0 ? -1.0 : std::tanh(x)); }
 /// exp(-x) for x >= 0 (the Stribeck decay), 0 beyond x = 40 where it is below 5e-18.
 inline double Decay(double x) { return x > 40.0 ? 0.0 : std::exp(-x); }
+
+/// Remembers the arguments of the last call of a pure function of N doubles: a law evaluated
+/// again at the same arguments (the phases of one evaluation, the Jacobian's difference
+/// quotients that leave an element's flanges alone) reuses its value instead of calling the
+/// library again. The arguments compare bit for bit, so the reused value is exactly the one the
+/// function would return.
+template <std::size_t N>
+class Memo {
+ public:
+  /// True when `args` are the arguments of the last call; otherwise they become it.
+  bool Same(const std::array<double, N>& args) {
+    std::array<std::uint64_t, N> bits;
+    for (std::size_t i = 0; i < N; ++i) bits[i] = std::bit_cast<std::uint64_t>(args[i]);
+    if (valid_ && bits == key_) return true;
+    key_ = bits;
+    valid_ = true;
+    return false;
+  }
+
+ private:
+  std::array<std::uint64_t, N> key_{};
+  bool valid_ = false;
+};
 
 /// Modelica.Math.Vectors.interpolate on column `column` of `table` against column 0:
 /// piecewise linear with linear extrapolation; a one-row table is constant.
@@ -60,11 +87,54 @@ struct HydraulicNode {
   int s_p = -1;                ///< state index of the pressure (-1 for a fixed node)
 };
 
+/// The entries (node, coefficient) of a constraint's row or column. Elements set them at every
+/// evaluation, so up to kInline of them (a gear, a planetary: 3; a rack: 4) live in the
+/// constraint itself; more spill into a vector.
+class ConstraintEntries {
+ public:
+  using value_type = std::pair<int, double>;
+  static constexpr std::size_t kInline = 4;
+  ConstraintEntries() = default;
+  ConstraintEntries(std::initializer_list<value_type> list) { assign(list); }
+  ConstraintEntries& operator=(std::initializer_list<value_type> list) {
+    assign(list);
+    return *this;
+  }
+  void assign(std::initializer_list<value_type> list) {
+    size_ = list.size();
+    if (size_ <= kInline) std::copy(list.begin(), list.end(), inline_.begin());
+    else spill_.assign(list);
+  }
+  void push_back(const value_type& v) {
+    if (size_ < kInline) {
+      inline_[size_] = v;
+    } else {
+      if (size_ == kInline) spill_.assign(inline_.begin(), inline_.end());
+      spill_.push_back(v);
+    }
+    ++size_;
+  }
+  void clear() { size_ = 0; }
+  std::size_t size() const { return size_; }
+  bool empty() const { return size_ == 0; }
+  const value_type* begin() const { return size_ <= kInline ? inline_.data() : spill_.data(); }
+  const value_type* end() const { return begin() + size_; }
+  value_type* begin() { return size_ <= kInline ? inline_.data() : spill_.data(); }
+  value_type* end() { return begin() + size_; }
+  const value_type& operator[](std::size_t i) const { return begin()[i]; }
+  value_type& operator[](std::size_t i) { return begin()[i]; }
+
+ private:
+  std::array<value_type, kInline> inline_{};
+  std::vector<value_type> spill_;  ///< every entry, once there are more than kInline
+  std::size_t size_ = 0;
+};
+
 /// One linear constraint on node accelerations: sum(row) = rhs, with the torque it exerts on
 /// the nodes per unit multiplier (column). Ideal constraints have column = -row or +row.
 struct Constraint {
-  std::vector<std::pair<int, double>> row;
-  std::vector<std::pair<int, double>> column;
+  ConstraintEntries row;
+  ConstraintEntries column;
   double rhs = 0.0;
   bool velocity_level = true;  ///< the same relation holds for the speeds (projected at events)
   double velocity_rhs = 0.0;   ///< the speed relation sum(row * w) = velocity_rhs (velocity_level)

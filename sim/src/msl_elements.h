@@ -346,7 +346,7 @@ class GearBase : public Element {
     return {{a, 1.0}, {b, -ratio}, {s, ratio - 1.0}};
   }
   /// The row into an existing constraint (reuses its storage: no allocation per evaluation).
-  void SetRow(std::vector<std::pair<int, double>>& row) const { row.assign({{a, 1.0}, {b, -ratio}, {s, ratio - 1.0}}); }
+  void SetRow(ConstraintEntries& row) const { row.assign({{a, 1.0}, {b, -ratio}, {s, ratio - 1.0}}); }
   void HolonomicRows(std::vector<InitialEquation>& rows) const override {
     rows.push_back({Row(), 0.0});
   }
@@ -391,7 +391,7 @@ class IdealPlanetary : public Element {
   std::vector<std::pair<int, double>> Row() const {
     return {{sun, -1.0}, {ring, -ratio}, {carrier, 1.0 + ratio}};
   }
-  void SetRow(std::vector<std::pair<int, double>>& row) const {
+  void SetRow(ConstraintEntries& row) const {
     row.assign({{sun, -1.0}, {ring, -ratio}, {carrier, 1.0 + ratio}});
   }
   void HolonomicRows(std::vector<InitialEquation>& rows) const override {
@@ -772,7 +772,11 @@ class LossyGear : public GearBase {
   /// input speed, with the loss of that direction scaled by |tanh(w_a/w_small)|; continuous
   /// in the state, no stuck mode and no stick/slip events.
   bool Regularized() const { return w_small > 0; }
-  double Smooth(const Eval& e) const { return SmoothSign(WA(e) / w_small); }
+  double Smooth(const Eval& e) const {
+    const double w = WA(e);
+    if (!smooth_memo_.Same({w})) smooth_ = SmoothSign(w / w_small);
+    return smooth_;
+  }
   /// Direction of rolling: the mode, or the sign of the speed when regularised.
   int Direction(const Eval& e) const {
     if (!Regularized()) return mode;
@@ -980,6 +984,8 @@ class LossyGear : public GearBase {
   bool start_forward = false, start_backward = false;
   int kinematic = -1, stuck_constraint = -1;
   double tau_a = 0.0, tau_loss = 0.0;
+  mutable Memo<1> smooth_memo_;  ///< Smooth at the last w_a
+  mutable double smooth_ = 0.0;
 };
 
 // ------------------------------------------------------------------------------------------

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <functional>
 #include <limits>
 #include <map>
@@ -1490,6 +1491,30 @@ void System::BuildGroups() {
     // The Schur complement path needs the inertia of every node of the group.
     g.schur = size <= kSmallGroup;
     for (int n : g.nodes) g.schur = g.schur && nodes_[n].J > 0;
+    if (!g.schur) continue;
+    for (std::size_t i = 0; i < g.nodes.size(); ++i) local_[g.nodes[i]] = static_cast<int>(i);
+    g.J.clear();
+    for (int n : g.nodes) g.J.push_back(nodes_[n].J);
+    auto entries = [&](const ConstraintEntries& list, std::vector<int>& begin,
+                       std::vector<int>& entry, std::vector<int>& local) {
+      for (std::size_t p = 0; p < list.size(); ++p)
+        if (!nodes_[list[p].first].ground) {
+          entry.push_back(static_cast<int>(p));
+          local.push_back(local_[list[p].first]);
+        }
+      begin.push_back(static_cast<int>(entry.size()));
+    };
+    g.column_begin.assign(1, 0);
+    g.row_begin.assign(1, 0);
+    g.column_entry.clear();
+    g.column_local.clear();
+    g.row_entry.clear();
+    g.row_local.clear();
+    for (int k : g.rows) {
+      entries(e.constraints[k].column, g.column_begin, g.column_entry, g.column_local);
+      entries(e.constraints[k].row, g.row_begin, g.row_entry, g.row_local);
+    }
+    for (int n : g.nodes) local_[n] = -1;
   }
 }
 
@@ -1504,32 +1529,45 @@ bool System::SolveSchur(Group& g) {
   double* column = g.b.data();      // M^-1 C_k, scattered over the group's nodes
   double* S = g.lu_work.data();     // m x m, column-major
   double* r = g.x.data() + nn;      // right-hand side, then lambda
-  for (int i = 0; i < nn; ++i) acc0[i] = e.force[g.nodes[i]] / nodes_[g.nodes[i]].J;
+  const double* J = g.J.data();
+  for (int i = 0; i < nn; ++i) acc0[i] = e.force[g.nodes[i]] / J[i];
   for (int k = 0; k < m; ++k) {
-    const Constraint& ck = e.constraints[g.rows[k]];
+    const auto* ck = e.constraints[g.rows[k]].column.begin();
     for (int i = 0; i < nn; ++i) column[i] = 0.0;
-    for (auto [n, coef] : ck.column)
-      if (!nodes_[n].ground) column[local_[n]] += coef / nodes_[n].J;
+    for (int p = g.column_begin[k]; p < g.column_begin[k + 1]; ++p) {
+      const int i = g.column_local[p];
+      column[i] += ck[g.column_entry[p]].second / J[i];
+    }
     for (int j = 0; j < m; ++j) {
+      const auto* rj = e.constraints[g.rows[j]].row.begin();
       double sum = 0.0;
-      for (auto [n, coef] : e.constraints[g.rows[j]].row)
-        if (!nodes_[n].ground) sum += coef * column[local_[n]];
+      for (int p = g.row_begin[j]; p < g.row_begin[j + 1]; ++p) sum += rj[g.row_entry[p]].second * column[g.row_local[p]];
       S[j + k * m] = sum;
     }
   }
   for (int j = 0; j < m; ++j) {
     const Constraint& cj = e.constraints[g.rows[j]];
+    const auto* rj = cj.row.begin();
     double v = cj.rhs;
-    for (auto [n, coef] : cj.row)
-      if (!nodes_[n].ground) v -= coef * acc0[local_[n]];
+    for (int p = g.row_begin[j]; p < g.row_begin[j + 1]; ++p) v -= rj[g.row_entry[p]].second * acc0[g.row_local[p]];
     r[j] = v;
   }
-  if (!SmallLuSolve(S, r, m)) return false;
+  if (m == 1) {
+    // SmallLuSolve of the 1 x 1 system, the same operations.
+    if (!(std::abs(S[0]) > 1e-12 * std::max(0.0, std::abs(S[0])))) return false;
+    r[0] = r[0] / S[0];
+  } else if (!SmallLuSolve(S, r, m)) {
+    return false;
+  }
   for (int k = 0; k < m; ++k) {
     const double lambda = r[k];
-    e.constraints[g.rows[k]].lambda = lambda;
-    for (auto [n, coef] : e.constraints[g.rows[k]].column)
-      if (!nodes_[n].ground) acc0[local_[n]] += coef * lambda / nodes_[n].J;
+    Constraint& ck = e.constraints[g.rows[k]];
+    ck.lambda = lambda;
+    const auto* column_k = ck.column.begin();
+    for (int p = g.column_begin[k]; p < g.column_begin[k + 1]; ++p) {
+      const int i = g.column_local[p];
+      acc0[i] += column_k[g.column_entry[p]].second * lambda / J[i];
+    }
   }
   for (int i = 0; i < nn; ++i) e.acc[g.nodes[i]] = acc0[i];
   return true;
@@ -1552,11 +1590,8 @@ bool System::Solve() {
   for (int k : grounded_rows_) e.constraints[k].lambda = 0.0;
   for (Group& g : groups_) {
     const int nn = static_cast<int>(g.nodes.size()), m = static_cast<int>(g.rows.size());
+    if (g.schur && SolveSchur(g)) continue;
     for (int i = 0; i < nn; ++i) local_[g.nodes[i]] = i;
-    if (g.schur && SolveSchur(g)) {
-      for (int n : g.nodes) local_[n] = -1;
-      continue;
-    }
     g.A.setZero();
     for (int i = 0; i < nn; ++i) {
       g.A(i, i) = nodes_[g.nodes[i]].J;
@@ -1658,7 +1693,21 @@ bool System::ProjectSpeeds(double* y) {
         K(local_[n], nn + j) += coef;
       }
   }
-  Eigen::VectorXd x = K.completeOrthogonalDecomposition().solve(b);
+  // The active constraints are mostly those of a recent projection (the passes of the event
+  // iteration, the next event): the decomposition of the same matrix (bit for bit) is reused.
+  auto same = [&](const Projection& p) {
+    return p.matrix.rows() == K.rows() && p.matrix.cols() == K.cols() &&
+           std::memcmp(p.matrix.data(), K.data(), sizeof(double) * static_cast<std::size_t>(K.size())) == 0;
+  };
+  auto hit = std::find_if(projections_.begin(), projections_.end(), same);
+  if (hit == projections_.end()) {
+    if (projections_.size() < kProjections) projections_.emplace_back();
+    hit = projections_.end() - 1;  // the least recent one is replaced
+    hit->matrix = K;
+    hit->decomposition.compute(K);
+  }
+  std::rotate(projections_.begin(), hit, hit + 1);
+  Eigen::VectorXd x = projections_.front().decomposition.solve(b);
   double kinetic_change = 0.0;
   for (int i = 0; i < nn; ++i) {
     double& w = y[nodes_[node_list[i]].s_w];

@@ -146,6 +146,14 @@ class System {
   /// Pressure derivatives of the hydraulic nodes, after the elements' Forces().
   bool HydraulicDerivatives(double* ydot);
   bool ProjectSpeeds(double* y);
+  /// The matrices of the last speed projections and their decompositions, most recent first
+  /// (an event iteration alternates between a few sets of active constraints).
+  struct Projection {
+    Eigen::MatrixXd matrix;
+    Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> decomposition;
+  };
+  static constexpr std::size_t kProjections = 4;
+  std::vector<Projection> projections_;
   /// The start state from node angles and speeds (indexed like start_unknown_): element
   /// states (InitStates), hydraulic start pressures when `pressures`, balanced massless nodes.
   void StartState(const Eigen::VectorXd& phi, const Eigen::VectorXd& w, double* y, bool pressures);
@@ -203,6 +211,13 @@ class System {
     Eigen::PartialPivLU<Eigen::MatrixXd> lu;  ///< groups larger than kSmallGroup
     Eigen::MatrixXd lu_work;                  ///< the factored copy of A, small groups
     bool schur = false;                       ///< every node has inertia: SolveSchur
+    // SolveSchur's view of the constraint pattern (fixed while the signature matches): the
+    // inertia of each node, and per constraint (in `rows` order) its column and row entries on
+    // the group's nodes (ground entries left out) as the entry's position in
+    // Constraint::column / row and the node's local index, entries [begin[k], begin[k + 1]).
+    std::vector<double> J;
+    std::vector<int> column_begin, column_entry, column_local;
+    std::vector<int> row_begin, row_entry, row_local;
   };
   bool SolveSchur(Group& g);
   static constexpr int kSmallGroup = 16;  ///< up to this size: our own elimination
