@@ -130,6 +130,40 @@ std::vector<ComponentTypeSpec> MakeElementTypes() {
                    "spring-damper with total backlash b; in contact tau = c*phi_contact + "
                    "d*w_rel (jumps at contact), set to 0 where it would pull",
                    {flange_a(), flange_b()}, backlash()));
+  t.push_back(Type("Disc",
+                   "rigid connection without inertia, flange_b turned by deltaPhi: phi_b = phi_a + "
+                   "deltaPhi, flange_a.tau + flange_b.tau = 0",
+                   {flange_a(), flange_b()},
+                   {Scalar("deltaPhi", angle, "rad", 0.0, any,
+                           "fixed rotation of flange_b with respect to flange_a (phi_b - phi_a)")}));
+  t.push_back(Type("InitializeFlange",
+                   "sets the flange's angle, speed and acceleration at the start time from the "
+                   "inputs phi_start, w_start, a_start (each when enabled); no torque",
+                   {Flange("flange", "the flange that is initialized"),
+                    Signal("phi_start", "initial angle [rad] (use_phi_start)", false),
+                    Signal("w_start", "initial speed [rad/s] (use_w_start)", false),
+                    Signal("a_start", "initial acceleration [rad/s^2] (use_a_start)", false)},
+                   {Flag("use_phi_start", true, "true: flange.phi = phi_start at the start"),
+                    Flag("use_w_start", true, "true: der(flange.phi) = w_start at the start"),
+                    Flag("use_a_start", true, "true: der(w) = a_start at the start")}));
+  t.push_back(Type("AngleToTorqueAdaptor",
+                   "moves the flange by the inputs phi, w, a (consistent: w = der(phi), a = der(w)) "
+                   "and outputs the torque tau that takes",
+                   {Flange("flange", "the driven flange"), Signal("phi", "angle [rad]"),
+                    Signal("w", "speed [rad/s] (use_w or use_a)", false),
+                    Signal("a", "acceleration [rad/s^2] (use_a)", false),
+                    SignalOutput("tau", "torque needed to drive the flange [N*m]")},
+                   {Flag("use_w", true, "true: the input w is enabled"),
+                    Flag("use_a", true, "true: the input a is enabled (the flange follows phi, w, a); "
+                                        "false: it follows phi exactly (phi differentiated)")}));
+  t.push_back(Type("TorqueToAngleAdaptor",
+                   "the input torque tau acts on the flange (flange.tau = tau); outputs its angle, "
+                   "speed and acceleration",
+                   {Flange("flange", "the flange"), Signal("tau", "torque acting on the flange [N*m]"),
+                    SignalOutput("phi", "angle [rad]"), SignalOutput("w", "speed [rad/s] (use_w)"),
+                    SignalOutput("a", "acceleration [rad/s^2] (use_a)")},
+                   {Flag("use_w", true, "true: the output w is enabled"),
+                    Flag("use_a", true, "true: the output a is enabled")}));
   t.push_back(Type("RelativeStates",
                    "relative angle and speed of two flanges as states of their own (no torque)",
                    {flange_a(), flange_b()}, relative_starts({})));
@@ -153,6 +187,20 @@ std::vector<ComponentTypeSpec> MakeElementTypes() {
                     TableParameter("lossTable",
                                    "[|w_a|, eta_mf1, eta_mf2, tau_bf1, tau_bf2] rows; default "
                                    "[0, 1, 1, 0, 0] (ideal)")}));
+  t.push_back(Type("Gearbox",
+                   "realistic gearbox (MSL): LossyGear (ratio, lossTable) from flange_a in series "
+                   "with ElastoBacklash (c, d, b) to flange_b; no inertia",
+                   {flange_a(), flange_b(), Support()},
+                   relative_starts({Scalar("ratio", Dimensionless(), "1", std::nullopt, any,
+                                           "transmission ratio w_a / w_b (not 0)"),
+                                    TableParameter("lossTable",
+                                                   "[|w_a|, eta_mf1, eta_mf2, tau_bf1, tau_bf2] rows; "
+                                                   "default [0, 1, 1, 0, 0] (ideal)"),
+                                    Scalar("c", Torque(), "N*m/rad", std::nullopt, positive,
+                                           "gear elasticity (spring constant)"),
+                                    Scalar("d", RotationalDamping(), "N*m*s/rad", 0.0, non_negative,
+                                           "gear damping"),
+                                    Scalar("b", angle, "rad", 0.0, non_negative, "total backlash")})));
   t.push_back(Type("BearingFriction", "Coulomb friction in a bearing, stick-slip (MSL state machine)",
                    {optional_a(), optional_b(), Support()},
                    friction_parameters("tau_pos",
@@ -190,6 +238,16 @@ std::vector<ComponentTypeSpec> MakeElementTypes() {
   t.push_back(Type("QuadraticSpeedDependentTorque",
                    "tau = tau_nominal * (w/w_nominal)^2 (TorqueDirection) or tau_nominal*w*|w|/w_nominal^2",
                    source_ports(), speed_torque("speed at which |torque| = |tau_nominal|")));
+  t.push_back(Type("InverseSpeedDependentTorque",
+                   "tau = tau_nominal * w_nominal / max(|w|, w0) (TorqueDirection) or "
+                   "tau_nominal * w / w0 below w0 and tau_nominal * w_nominal / w above (MSL after 4.0.0)",
+                   source_ports(),
+                   [&] {
+                     auto p = speed_torque("speed at which |torque| = |tau_nominal|");
+                     p.push_back(Scalar("w0", AngularVelocity(), "rad/s", 0.1, positive,
+                                        "regularization below w0"));
+                     return p;
+                   }()));
   t.push_back(Type("SignTorque",
                    "tau = tau_nominal * (2 / (1 + exp(-w / (0.01 * w0))) - 1)", source_ports(),
                    {Scalar("tau_nominal", Torque(), "N*m", std::nullopt, any, "nominal torque"),

@@ -22,11 +22,12 @@ const std::map<std::string, std::string>& ClassOfElementType() {
     for (const char* c : {"Fixed", "Inertia", "Spring", "Damper", "SpringDamper", "ElastoBacklash",
                           "ElastoBacklash2", "IdealGear", "IdealPlanetary", "LossyGear",
                           "BearingFriction", "Brake", "Clutch", "OneWayClutch", "RelativeStates",
-                          "IdealGearR2T", "IdealRollingWheel"})
+                          "IdealGearR2T", "IdealRollingWheel", "Disc", "InitializeFlange", "Gearbox",
+                          "AngleToTorqueAdaptor", "TorqueToAngleAdaptor"})
       m[c] = rotational + "Components." + c;
     for (const char* c : {"Torque", "Torque2", "ConstantTorque", "TorqueStep", "LinearSpeedDependentTorque",
-                          "QuadraticSpeedDependentTorque", "SignTorque", "EddyCurrentTorque", "Speed",
-                          "Position", "ConstantSpeed", "Accelerate", "Move"})
+                          "QuadraticSpeedDependentTorque", "InverseSpeedDependentTorque", "SignTorque",
+                          "EddyCurrentTorque", "Speed", "Position", "ConstantSpeed", "Accelerate", "Move"})
       m[c] = rotational + "Sources." + c;
     for (const char* c : {"AngleSensor", "SpeedSensor", "AccSensor", "TorqueSensor", "RelAngleSensor",
                           "RelSpeedSensor", "RelAccSensor", "PowerSensor", "MultiSensor"})

@@ -13,6 +13,7 @@ std::optional<Composite> Expand(const NetworkElement& e) {
   if (auto c = ExpandGearComposite(e)) return c;
   if (auto c = ExpandDriveComposite(e)) return c;
   if (auto c = ExpandHydraulicComposite(e)) return c;
+  if (auto c = ExpandMslComposite(e)) return c;
   return std::nullopt;
 }
 

@@ -28,6 +28,8 @@ std::optional<Composite> ExpandBrakeComposite(const NetworkElement& element);
 std::optional<Composite> ExpandGearComposite(const NetworkElement& element);
 std::optional<Composite> ExpandDriveComposite(const NetworkElement& element);
 std::optional<Composite> ExpandHydraulicComposite(const NetworkElement& element);
+/// MSL composites (msl_extra_elements.cc): Gearbox.
+std::optional<Composite> ExpandMslComposite(const NetworkElement& element);
 
 /// `network` with every composite replaced by its parts (recursively, at most 8 levels).
 /// Throws InputError when an expansion is inconsistent (a part id outside the composite's name

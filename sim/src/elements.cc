@@ -60,6 +60,7 @@ std::unique_ptr<Element> MakeElement(const NetworkElement& e) {
   else if (t == "Product") el = std::make_unique<Product>();
   else if (t == "Feedback") el = std::make_unique<Feedback>();
   else if ((el = MakeMoreMslElement(e))) {
+  } else if ((el = MakeExtraMslElement(e))) {
   } else if ((el = MakeBrakeElement(e))) {
   } else if ((el = MakeGearElement(e))) {
   } else if ((el = MakeDriveElement(e))) {

@@ -492,5 +492,8 @@ std::unique_ptr<Element> MakeHydraulicElement(const NetworkElement& element);
 /// acceleration, RelativeStates, the motion sources Position, Speed (exact), Accelerate, Move,
 /// ConstantSpeed, and the translational elements a ballscrew or rack needs.
 std::unique_ptr<Element> MakeMoreMslElement(const NetworkElement& element);
+/// The last MSL Rotational elements (msl_extra_elements.cc): Disc, InitializeFlange,
+/// InverseSpeedDependentTorque.
+std::unique_ptr<Element> MakeExtraMslElement(const NetworkElement& element);
 
 }  // namespace highlift::sim::detail

@@ -557,7 +557,7 @@ void System::ClassifyMasslessNodes() {
   // Flanges joined only by rigid sensors, none with inertia or fixed: their common acceleration
   // is undetermined (a massless node is solved between springs and dampers only).
   auto rigid_sensor = [](const Element& el) {
-    return el.type == "TorqueSensor" || el.type == "PowerSensor" || el.type == "MultiSensor";
+    return el.type == "TorqueSensor" || el.type == "PowerSensor" || el.type == "MultiSensor" || el.type == "Disc";
   };
   UnionFind rigid(static_cast<int>(nodes_.size()));
   for (const auto& el : elements_) {
@@ -577,7 +577,7 @@ void System::ClassifyMasslessNodes() {
     throw InputError("element '" + el->id + "' (" + el->type + ") joins flanges " + Join(names) +
                      " rigidly, and none of the flanges joined so has inertia or is fixed: their "
                      "acceleration is undetermined (a flange without inertia is solved as a static "
-                     "balance of springs and dampers only); connect the sensor next to an Inertia");
+                     "balance of springs and dampers only); connect it next to an Inertia");
   }
   std::vector<bool> coupled(nodes_.size(), false);
   for (const auto& el : elements_)
@@ -612,9 +612,10 @@ void System::ClassifyMasslessNodes() {
   }
   massless_local_.assign(nodes_.size(), -1);
   for (std::size_t i = 0; i < massless_.size(); ++i) massless_local_[massless_[i]] = static_cast<int>(i);
-  // The balance gives a massless node's angle and speed, not its acceleration.
+  // The balance gives a massless node's angle and speed, not its acceleration (RelativeStates
+  // reports a_rel).
   for (const auto& el : elements_)
-    if (el->type == "AccSensor" || el->type == "RelAccSensor")
+    if (el->type == "AccSensor" || el->type == "RelAccSensor" || el->type == "RelativeStates")
       for (int n : el->Nodes())
         if (nodes_[n].massless)
           throw InputError("element '" + el->id + "' (" + el->type + ") measures the acceleration of flange '" +

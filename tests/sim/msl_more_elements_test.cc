@@ -912,5 +912,293 @@ TEST(MslExamples, InitializationSpringDamperAsTheClosedForm) {
   EXPECT_LT(r.Error("spring.tau", [&](double t) { return 1e4 * rel(t); }), kOscillate * 1e4 / W);
 }
 
+
+// ------------------------------------------------------------------------------------------
+// The last MSL Rotational elements (sim/src/msl_extra_elements.cc).
+
+// Disc: torque 2 on J1 = 1, through the disc (deltaPhi = 0.5) to J2 = 3: a = 0.5 for both,
+// inertia2.phi = inertia1.phi + 0.5 from the holonomic start row, the torque through J2 * a.
+TEST(Disc, TurnsFlangeBByDeltaPhiAndPassesTheTorque) {
+  Network net;
+  net.AddElement("Fixed", "fixed");
+  net.AddElement("ConstantTorque", "drive", P({{"tau_constant", 2}}));
+  net.AddElement("Inertia", "inertia1", P({{"J", 1}, {"phi_start", 0.25}, {"w_start", 0}}));
+  net.AddElement("Disc", "disc", P({{"deltaPhi", 0.5}}));
+  net.AddElement("Inertia", "inertia2", P({{"J", 3}}));
+  net.Connect("drive.flange", "inertia1.flange_a");
+  net.Connect("drive.support", "fixed.flange");
+  net.Connect("inertia1.flange_b", "disc.flange_a");
+  net.Connect("disc.flange_b", "inertia2.flange_a");
+  EXPECT_EQ(CheckStructure(net), "");
+  const Result r = Simulate(net, 1.0);
+  ASSERT_TRUE(r.report.ok()) << r.report.FullReport();
+  EXPECT_LT(r.Error("inertia1.phi", [](double t) { return 0.25 + 0.25 * t * t; }), 1e-8);
+  EXPECT_LT(r.Error("inertia2.phi", [](double t) { return 0.75 + 0.25 * t * t; }), 1e-8);
+  EXPECT_LT(r.Error("inertia2.w", [](double t) { return 0.5 * t; }), 1e-8);
+  EXPECT_LT(r.Error("disc.phi", [](double t) { return 0.5 + 0.25 * t * t; }), 1e-8);
+  EXPECT_LT(r.Error("disc.flange_a.tau", [](double) { return 1.5; }), 1e-8);
+}
+
+// A fixed inertia2 start angle that contradicts deltaPhi is named; a Disc between two springs
+// joins two flanges without inertia rigidly (undetermined), as a torque sensor there.
+TEST(Disc, ContradictingStartsAndAMasslessJointAreNamed) {
+  Network net;
+  net.AddElement("Inertia", "inertia1", P({{"J", 1}, {"phi_start", 0}}));
+  net.AddElement("Disc", "disc", P({{"deltaPhi", 0.5}}));
+  net.AddElement("Inertia", "inertia2", P({{"J", 3}, {"phi_start", 0}}));
+  net.Connect("inertia1.flange_b", "disc.flange_a");
+  net.Connect("disc.flange_b", "inertia2.flange_a");
+  EXPECT_NE(CheckStructure(net).find("initial angles contradict"), std::string::npos) << CheckStructure(net);
+  Network springs;
+  springs.AddElement("Fixed", "fixed");
+  springs.AddElement("Spring", "spring1", P({{"c", 1}}));
+  springs.AddElement("Disc", "disc");
+  springs.AddElement("Spring", "spring2", P({{"c", 1}}));
+  springs.AddElement("Inertia", "inertia", P({{"J", 1}}));
+  springs.Connect("fixed.flange", "spring1.flange_a");
+  springs.Connect("spring1.flange_b", "disc.flange_a");
+  springs.Connect("disc.flange_b", "spring2.flange_a");
+  springs.Connect("spring2.flange_b", "inertia.flange_a");
+  EXPECT_NE(CheckStructure(springs).find("element 'disc' (Disc) joins flanges"), std::string::npos)
+      << CheckStructure(springs);
+}
+
+// tests/sim/msl/Disc.json: 4 x'' + 16 x = 2 sin(2 pi t) from rest, inertia2 turned by 0.5.
+TEST(MslExamples, DiscAsTheClosedForm) {
+  const Result r = RunExample("Disc");
+  const double A = 0.5 / (4 - 4 * kPi * kPi);
+  auto x = [&](double t) { return A * (std::sin(2 * kPi * t) - kPi * std::sin(2 * t)); };
+  auto xdd = [&](double t) { return A * (-4 * kPi * kPi * std::sin(2 * kPi * t) + 4 * kPi * std::sin(2 * t)); };
+  EXPECT_LT(r.Error("inertia1.phi", x), 1e-7);
+  EXPECT_LT(r.Error("inertia2.phi", [&](double t) { return x(t) + 0.5; }), 1e-7);
+  EXPECT_LT(r.Error("disc.flange_a.tau", [&](double t) { return 3 * xdd(t) + 16 * x(t); }), 1e-6);
+}
+
+
+// InitializeFlange: phi_start = 1 and w_start = 3 from inputs (a_start not used), torque 4 on
+// J = 2: phi = 1 + 3 t + t^2.
+TEST(InitializeFlange, SetsTheStartAngleAndSpeedFromItsInputs) {
+  Network net;
+  net.AddElement("Fixed", "fixed");
+  net.AddElement("ConstantTorque", "drive", P({{"tau_constant", 4}}));
+  net.AddElement("Inertia", "inertia", P({{"J", 2}}));
+  net.AddElement("InitializeFlange", "init", P({{"use_a_start", 0}}));
+  net.AddElement("Constant", "phi0", P({{"k", 1}}));
+  net.AddElement("Constant", "w0", P({{"k", 3}}));
+  net.Connect("drive.flange", "inertia.flange_a");
+  net.Connect("drive.support", "fixed.flange");
+  net.Connect("init.flange", "inertia.flange_b");
+  net.Connect("phi0.y", "init.phi_start");
+  net.Connect("w0.y", "init.w_start");
+  EXPECT_EQ(CheckStructure(net), "");
+  const Result r = Simulate(net, 1.0);
+  ASSERT_TRUE(r.report.ok()) << r.report.FullReport();
+  EXPECT_LT(r.Error("inertia.phi", [](double t) { return 1 + 3 * t + t * t; }), 1e-8);
+  EXPECT_LT(r.Error("init.w_flange", [](double t) { return 3 + 2 * t; }), 1e-8);
+}
+
+// An enabled input left open is named; a fixed Inertia start angle that differs from the
+// input is a contradiction (MSL: an overdetermined initialization).
+TEST(InitializeFlange, OpenInputsAndContradictingStartsAreNamed) {
+  Network open;
+  open.AddElement("Inertia", "inertia", P({{"J", 1}}));
+  open.AddElement("InitializeFlange", "init", P({{"use_w_start", 0}, {"use_a_start", 0}}));
+  open.Connect("init.flange", "inertia.flange_a");
+  EXPECT_NE(CheckStructure(open).find("signal input 'phi_start' is not connected"), std::string::npos)
+      << CheckStructure(open);
+  Network twice;
+  twice.AddElement("Inertia", "inertia", P({{"J", 1}, {"phi_start", 2}}));
+  twice.AddElement("InitializeFlange", "init", P({{"use_w_start", 0}, {"use_a_start", 0}}));
+  twice.AddElement("Constant", "phi0", P({{"k", 1}}));
+  twice.Connect("init.flange", "inertia.flange_a");
+  twice.Connect("phi0.y", "init.phi_start");
+  EXPECT_NE(CheckStructure(twice).find("initial angles contradict"), std::string::npos) << CheckStructure(twice);
+}
+
+// tests/sim/msl/InitializeFlange.json: der(w) = a_start = -2 on the spring c = 4 gives
+// phi(0) = 0.5, then phi = 0.5 cos(2 t).
+TEST(MslExamples, InitializeFlangeAsTheClosedForm) {
+  const Result r = RunExample("InitializeFlange");
+  EXPECT_LT(r.Error("inertia.phi", [](double t) { return 0.5 * std::cos(2 * t); }), 1e-7);
+  EXPECT_LT(r.Error("inertia.w", [](double t) { return -std::sin(2 * t); }), 1e-7);
+  EXPECT_LT(r.Error("initializeFlange.phi_flange", [](double t) { return 0.5 * std::cos(2 * t); }), 1e-7);
+}
+
+
+// InverseSpeedDependentTorque, TorqueDirection = false below w0: tau = tau_nominal * w / w0 =
+// -w on J = 1 from w = 0.5 (< w0 = 1): w = 0.5 exp(-t); above w0 -tau_nominal*w_nominal/w.
+TEST(InverseSpeedDependentTorque, OddLawBelowAndAboveW0) {
+  for (double w_start : {0.5, 4.0}) {
+    Network net;
+    net.AddElement("Inertia", "inertia", P({{"J", 1}, {"phi_start", 0}, {"w_start", w_start}}));
+    net.AddElement("InverseSpeedDependentTorque", "load",
+                   P({{"tau_nominal", -1}, {"w_nominal", 2}, {"w0", 1}, {"TorqueDirection", 0}}));
+    net.Connect("load.flange", "inertia.flange_a");
+    const Result r = Simulate(net, w_start < 1 ? 1.0 : 3.0);
+    ASSERT_TRUE(r.report.ok()) << r.report.FullReport();
+    if (w_start < 1) {
+      EXPECT_LT(r.Error("inertia.w", [](double t) { return 0.5 * std::exp(-t); }), 1e-8);
+      EXPECT_LT(r.Error("load.tau", [](double t) { return -0.5 * std::exp(-t); }), 1e-8);
+    } else {  // w w' = -2: w = sqrt(16 - 4 t) while w >= 1 (t <= 3.75)
+      EXPECT_LT(r.Error("inertia.w", [](double t) { return std::sqrt(16 - 4 * t); }), 1e-6);
+    }
+  }
+}
+
+// tests/sim/msl/InverseSpeedDependentTorque.json: the braking of inertia6 in three pieces.
+TEST(MslExamples, InverseSpeedDependentTorqueAsTheClosedForm) {
+  const Result r = RunExample("InverseSpeedDependentTorque");
+  const double t1 = (1e4 - 1) / 2e4, t2 = t1 + 2e-4;
+  auto w = [&](double t) {
+    if (t <= t1) return std::sqrt(1e4 - 2e4 * t);
+    if (t <= t2) return 1 - 1e4 * (t - t1);
+    return -std::sqrt(1 + 2e4 * (t - t2));
+  };
+  auto phi = [&](double t) {
+    if (t <= t1) return (1e6 - std::pow(1e4 - 2e4 * t, 1.5)) / 3e4;
+    const double p1 = (1e6 - 1) / 3e4;
+    if (t <= t2) return p1 + (t - t1) - 0.5e4 * (t - t1) * (t - t1);
+    return p1 - (std::pow(1 + 2e4 * (t - t2), 1.5) - 1) / 3e4;
+  };
+  // Near t1 the speed falls at 1e4 rad/s^2 (w = 1): a time error of 1e-7 s is 1e-3 rad/s there.
+  EXPECT_LT(r.Error("inertia6.w", w), 1e-3);
+  EXPECT_LT(r.Error("inertia6.phi", phi), 1e-5);
+  EXPECT_LT(r.Error("inverseSpeedDependentTorque.tau", [&](double t) { return -1e4 / std::max(std::abs(w(t)), 1.0); }),
+            5.0);  // of 1e4 N*m
+}
+
+
+// Gearbox: the same network written with the MSL Gearbox and with its parts (LossyGear with a
+// loss table, then ElastoBacklash with backlash) runs the same, state for state.
+Network GearboxDrive(bool composite) {
+  Network net;
+  net.AddElement("Fixed", "fixed");
+  net.AddElement("Sine", "sine", P({{"amplitude", 10}, {"f", 1}}));
+  net.AddElement("Torque", "torque");
+  net.AddElement("Inertia", "inertia1", P({{"J", 0.1}, {"phi_start", 0}, {"w_start", 0}}));
+  net.AddElement("Inertia", "inertia2", P({{"J", 2}, {"phi_start", 0}, {"w_start", 0}}));
+  net.AddElement("Damper", "load", P({{"d", 5}}));
+  const std::vector<std::vector<double>> loss{{0, 0.9, 0.8, 0.2, 0.2}, {10, 0.85, 0.75, 0.3, 0.3}};
+  if (composite) {
+    net.AddElement("Gearbox", "gearbox", {.scalars = {{"ratio", 4}, {"c", 1e3}, {"d", 10}, {"b", 0.02}},
+                                          .tables = {{"lossTable", loss}}});
+  } else {
+    net.AddElement("LossyGear", "lossyGear", {.scalars = {{"ratio", 4}}, .tables = {{"lossTable", loss}}});
+    net.AddElement("ElastoBacklash", "gearbox", P({{"c", 1e3}, {"d", 10}, {"b", 0.02}}));
+    net.Connect("lossyGear.flange_b", "gearbox.flange_a");
+    net.Connect("lossyGear.support", "fixed.flange");
+  }
+  net.Connect("sine.y", "torque.tau");
+  net.Connect("torque.support", "fixed.flange");
+  net.Connect("torque.flange", "inertia1.flange_a");
+  net.Connect("inertia1.flange_b", composite ? "gearbox.flange_a" : "lossyGear.flange_a");
+  net.Connect("gearbox.flange_b", "inertia2.flange_a");
+  if (composite) net.Connect("gearbox.support", "fixed.flange");
+  net.Connect("inertia2.flange_b", "load.flange_a");
+  net.Connect("load.flange_b", "fixed.flange");
+  return net;
+}
+
+TEST(Gearbox, IsLossyGearThenElastoBacklash) {
+  EXPECT_EQ(CheckStructure(GearboxDrive(true)), "");
+  const Result box = Simulate(GearboxDrive(true), 2.0);
+  const Result parts = Simulate(GearboxDrive(false), 2.0);
+  ASSERT_TRUE(box.report.ok()) << box.report.FullReport();
+  ASSERT_TRUE(parts.report.ok()) << parts.report.FullReport();
+  ASSERT_EQ(box.t().size(), parts.t().size());
+  for (const char* column : {"inertia1.w", "inertia2.w", "inertia2.phi", "gearbox.phi_rel"}) {
+    const auto a = box.Col(column), b = parts.Col(column);
+    double worst = 0.0, range = 0.0;
+    for (std::size_t i = 0; i < a.size(); ++i) worst = std::max(worst, std::abs(a[i] - b[i])), range = std::max(range, std::abs(b[i]));
+    EXPECT_LT(worst, 1e-9 * (1 + range)) << column;
+    EXPECT_GT(range, 0.0) << column;
+  }
+}
+
+TEST(Gearbox, RequiresItsStiffness) {
+  Network net;
+  try {
+    net.AddElement("Gearbox", "gearbox", P({{"ratio", 2}}));
+    net.AddElement("Inertia", "inertia", P({{"J", 1}}));
+    net.Connect("gearbox.flange_b", "inertia.flange_a");
+    const std::string error = CheckStructure(net);
+    EXPECT_NE(error.find("'c'"), std::string::npos) << error;
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("'c'"), std::string::npos) << e.what();
+  }
+}
+
+// tests/sim/msl/Gearbox.json: the ideal gearbox against Runge-Kutta of
+// J1 a1 = tau + T / 4, J2 a2 = -T, T = c (phi2 - phi1 / 4) + d (w2 - w1 / 4).
+TEST(MslExamples, GearboxAgainstAnIndependentIntegration) {
+  const Result r = RunExample("Gearbox");
+  auto f = [](double t, const State4& x) {  // phi1, w1, phi2, w2
+    const double T = 1e3 * (x[2] - x[0] / 4) + 10 * (x[3] - x[1] / 4);
+    return State4{x[1], (10 * std::sin(2 * kPi * t) + T / 4) / 0.1, x[3], -T / 2};
+  };
+  const auto dev = DeviationFromIntegration<4>(
+      r, f, State4{0, 0, 0, 0}, 1e-4,
+      {{"inertia1.w", [](double, const State4& x) { return x[1]; }},
+       {"inertia2.phi", [](double, const State4& x) { return x[2]; }},
+       {"inertia2.w", [](double, const State4& x) { return x[3]; }},
+       {"gearbox.phi_rel", [](double, const State4& x) { return x[2] - x[0] / 4; }}});
+  for (const auto& [name, e] : dev) EXPECT_LT(e.error, 1e-6 * e.range) << name;
+}
+
+
+// RelativeStates reports a_rel; on a massless node the balance gives no acceleration, so
+// validate and simulate name it (the same shared check), as for the acceleration sensors.
+TEST(MasslessNode, RelativeStatesAcrossAMasslessNodeIsNamed) {
+  Network net = InSeries({{"Spring", "spring1"}, {"Spring", "spring2"}});
+  net.AddElement("RelativeStates", "relativeStates");
+  net.Connect("relativeStates.flange_a", "spring1.flange_b");
+  net.Connect("relativeStates.flange_b", "inertia.flange_b");
+  const std::string error = CheckStructure(net);
+  EXPECT_NE(error.find("element 'relativeStates' (RelativeStates) measures the acceleration of flange "
+                       "'spring1.flange_b', which has no inertia"),
+            std::string::npos)
+      << error;
+  try {
+    Simulator sim(net);
+    MemorySink sink;
+    sim.Run(SimulationOptions{}, sink);
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), error);
+  }
+}
+
+
+// tests/sim/msl/Adaptors.json: torqueToAngle drives inertia1 by -tau = -10 sin(4 pi t):
+// a = -tau / 1.1, w = -10 (1 - cos(4 pi t)) / (4 pi 1.1); angleToTorque moves inertia2 by
+// phi = 0.1 sin(2 pi t) and gives tau = 2.2 a.
+TEST(MslExamples, AdaptorsAsTheClosedForm) {
+  const Result r = RunExample("Adaptors");
+  const double w4 = 4 * kPi;
+  EXPECT_LT(r.Error("a1.y", [&](double t) { return -10 * std::sin(w4 * t) / 1.1; }), 1e-7);
+  EXPECT_LT(r.Error("w1.y", [&](double t) { return -10 * (1 - std::cos(w4 * t)) / (w4 * 1.1); }), 1e-7);
+  EXPECT_LT(r.Error("phi1.y", [&](double t) { return -10 * (t - std::sin(w4 * t) / w4) / (w4 * 1.1); }), 1e-7);
+  EXPECT_LT(r.Error("inertia1.w", [&](double t) { return -10 * (1 - std::cos(w4 * t)) / (w4 * 1.1); }), 1e-7);
+  EXPECT_LT(r.Error("inertia2.phi", [](double t) { return 0.1 * std::sin(2 * kPi * t); }), 1e-8);
+  EXPECT_LT(r.Error("tau2.y", [](double t) { return -2.2 * 0.4 * kPi * kPi * std::sin(2 * kPi * t); }), 1e-6);
+}
+
+// AngleToTorqueAdaptor with use_a = false follows phi exactly (differentiated, MSL Move_phi).
+TEST(AngleToTorqueAdaptor, FollowsTheAngleAloneWithoutA) {
+  Network net;
+  net.AddElement("Sine", "phiRef", P({{"amplitude", 0.1}, {"f", 1}}));
+  net.AddElement("AngleToTorqueAdaptor", "adaptor", P({{"use_w", 0}, {"use_a", 0}}));
+  net.AddElement("Inertia", "inertia", P({{"J", 2.2}}));
+  net.AddElement("Gain", "tau", P({{"k", 1}}));
+  net.Connect("phiRef.y", "adaptor.phi");
+  net.Connect("adaptor.flange", "inertia.flange_a");
+  net.Connect("adaptor.tau", "tau.u");
+  EXPECT_EQ(CheckStructure(net), "");
+  const Result r = Simulate(net, 1.0);
+  ASSERT_TRUE(r.report.ok()) << r.report.FullReport();
+  EXPECT_LT(r.Error("inertia.phi", [](double t) { return 0.1 * std::sin(2 * kPi * t); }), 1e-8);
+  EXPECT_LT(r.Error("tau.y", [](double t) { return -2.2 * 0.4 * kPi * kPi * std::sin(2 * kPi * t); }), 1e-6);
+}
+
 }  // namespace
 }  // namespace highlift::sim
