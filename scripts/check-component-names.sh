@@ -17,9 +17,7 @@ set -euo pipefail
 allowed=(
   "sim/src/gear_elements.cc:jam"          # the input port "jam" of the Jam element
   "core/src/element_types_gears.cc:jam"   # its declaration
-  "core/src/project_io.cc:jam"            # the project file's scenario key "jam"
-  "core/src/validate.cc:jam"              # the scenario key "jam" in its messages
-  "reduced_models/src/analyses.cc:jam"    # the failure kind "jam" of the peak cases
+  "core/include/highlift/core/project.h:jam"  # kJamKind: the failure kind "jam", written once
 )
 cd "$(dirname "$0")/.."
 

@@ -137,7 +137,7 @@ std::vector<CampaignCase> AllCases(const Project& project) {
     }
   };
   for (const auto& pc : peaks.cases)
-    if (pc.kind == "jam") add_failure("jam", pc.component);
+    if (pc.kind == kJamKind) add_failure(kJamKind, pc.component);
   for (const auto& pc : peaks.cases)
     if (pc.kind == "rupture") add_failure("rupture", pc.component);
   // Rupturable components that are no shaft segment (disconnectors): the peak analysis chooses

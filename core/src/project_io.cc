@@ -806,7 +806,7 @@ class Reader {
 
   void ReadScenarios(const Node& n, Project& p) const {
     RequireArray(n, "'scenarios'");
-    const std::vector<std::string> kinds = {"extension", "jam", "rupture"};
+    const std::vector<std::string> kinds = {"extension", kJamKind, "rupture"};
     for (std::size_t i = 0; i < n.value.size(); ++i) {
       const Node item = n[i];
       const std::string anonymous = "scenario " + std::to_string(i);
@@ -815,7 +815,7 @@ class Reader {
       Scenario s;
       s.name = String(item["name"], anonymous + ": 'name'");
       const std::string what = "scenario '" + s.name + "'";
-      CheckKeys(item, {"name", "kind", "description", "load_case", "stop_time", "output_interval", "jam", "rupture", "wtb",
+      CheckKeys(item, {"name", "kind", "description", "load_case", "stop_time", "output_interval", kJamKind, "rupture", "wtb",
                        "values"},
                 what);
       Require(item, "kind", what);
@@ -833,13 +833,14 @@ class Reader {
         if (!(*s.output_interval > 0))
           Fail(item["output_interval"], what + ": 'output_interval' must be > 0 (e.g. \"10 ms\")");
       }
-      if (s.kind == "jam" && !item.has("jam"))
+      if (s.kind == kJamKind && !item.has(kJamKind))
         Fail(item, what + ": kind \"jam\" needs \"jam\": {\"component\": ..., \"time\": ...}");
       if (s.kind == "rupture" && !item.has("rupture"))
         Fail(item, what + ": kind \"rupture\" needs \"rupture\": {\"component\": ..., \"time\": ...}");
-      if (item.has("jam")) {
-        if (s.kind != "jam") Fail(item["jam"], what + ": 'jam' is only allowed with kind \"jam\" (kind is \"" + s.kind + "\")");
-        auto [component, time] = ReadEvent(item["jam"], what + ": 'jam'");
+      if (item.has(kJamKind)) {
+        if (s.kind != kJamKind)
+          Fail(item[kJamKind], what + ": 'jam' is only allowed with kind \"jam\" (kind is \"" + s.kind + "\")");
+        auto [component, time] = ReadEvent(item[kJamKind], what + ": 'jam'");
         s.jam_component = component;
         s.jam_time = time;
       }
@@ -1056,7 +1057,7 @@ nlohmann::json ProjectToJson(const Project& project) {
       if (s.output_interval) item["output_interval"] = *s.output_interval;
       if (!s.description.empty()) item["description"] = s.description;
       if (!s.load_case.empty()) item["load_case"] = s.load_case;
-      if (s.jam_component) item["jam"] = {{"component", *s.jam_component}, {"time", s.jam_time.value_or(0.0)}};
+      if (s.jam_component) item[kJamKind] = {{"component", *s.jam_component}, {"time", s.jam_time.value_or(0.0)}};
       if (s.rupture_component)
         item["rupture"] = {{"component", *s.rupture_component}, {"time", s.rupture_time.value_or(0.0)}};
       if (s.wtb_trigger != "monitor" || s.wtb_time) {

@@ -390,13 +390,13 @@ class Validator {
         Add(Severity::kError, "", "",
             "scenario '" + s.name + "': unknown load case '" + s.load_case + "'" + SuggestionHint(s.load_case, load_cases, "load cases"),
             s.where);
-      CheckReference(s, s.jam_component, "jam", ComponentTypesWith(&ComponentRoles::jammable));
+      CheckReference(s, s.jam_component, kJamKind, ComponentTypesWith(&ComponentRoles::jammable));
       CheckReference(s, s.rupture_component, "rupture", ComponentTypesWith(&ComponentRoles::rupturable));
-      if (s.kind == "jam" && !s.jam_component)
+      if (s.kind == kJamKind && !s.jam_component)
         Add(Severity::kError, "", "", "scenario '" + s.name + "': kind jam without a jammed component", s.where);
       if (s.kind == "rupture" && !s.rupture_component)
         Add(Severity::kError, "", "", "scenario '" + s.name + "': kind rupture without a ruptured component", s.where);
-      for (const auto& [time, name] : {std::pair{s.jam_time, "jam"}, std::pair{s.rupture_time, "rupture"},
+      for (const auto& [time, name] : {std::pair{s.jam_time, kJamKind.c_str()}, std::pair{s.rupture_time, "rupture"},
                                        std::pair{s.wtb_time, "wtb"}}) {
         if (time && *time > s.stop_time)
           Add(Severity::kWarning, "", "",

@@ -926,7 +926,7 @@ class Builder {
     // Speed at the stop and static torque.
     std::string static_torque;
     const Component& pdu = *Find(root_);
-    if (pc.kind == "jam") {
+    if (pc.kind == kJamKind) {
       if (!Has(root_ + ".max_output_speed")) return;
       Derived(p + "speed", "rad/s");
       Law(p + "speed", "drive speed at the jam, the operating speed", p + "speed == " + OperatingSpeed());
@@ -946,7 +946,7 @@ class Builder {
         p + "torque == " + p + "speed * " + p + "omega * " + p + "inertia");
     Derived(p + "static_torque", "N*m", Whole());
     Law(p + "static_torque",
-        pc.kind == "jam" ? "static part of the jam: PDU stall torque capped by the system torque limiters"
+        pc.kind == kJamKind ? "static part of the jam: PDU stall torque capped by the system torque limiters"
                          : "static part after the rupture: the airload's back-drive torque",
         p + "static_torque == " + static_torque);
     // A stop that slips (the friction brake after a rupture) passes at most its slipping torque.
@@ -973,7 +973,7 @@ class Builder {
       // A limiter in a down-drive (LimitedPort) caps only when the path goes on through that port.
       const int k = node_index_.at(c.id), limited = LimitedNode(k);
       const bool behind = limited == k || (std::next(id) != pc.load_path.rend() && node_index_.at(*std::next(id)) == limited);
-      if (pc.kind == "jam" && behind && HasRole(c, &model::ComponentRoles::station_limiter) &&
+      if (pc.kind == kJamKind && behind && HasRole(c, &model::ComponentRoles::station_limiter) &&
           HasValue(c, "end_stop_torque")) {
         const std::string end_stop = Value(c, "end_stop_torque") + " * " + SpeedRatio(limited);
         cap = cap.empty() ? end_stop : "min(" + cap + ", " + end_stop + ")";

@@ -507,7 +507,7 @@ void Builder::CheckScenario() {
       throw InputError("scenario '" + scenario_->name + "': the rupture has no time: give rupture.time",
                        scenario_->where);
   }
-  if (scenario_->kind == "jam") {
+  if (scenario_->kind == kJamKind) {
     if (!scenario_->jam_component)
       throw InputError("scenario '" + scenario_->name + "': a jam scenario names no component: give jam.component "
                            "(an actuator or a jam element)",
@@ -629,7 +629,7 @@ DriveModel BuildDriveModel(const Project& project, const Scenario* scenario, con
 }
 
 Scenario SizingScenario(const Project& project, const std::string& kind, const std::string& component) {
-  if (kind != "jam" && kind != "rupture")
+  if (kind != kJamKind && kind != "rupture")
     throw InputError("sizing case kind '" + kind + "' is unknown; choose 'jam' or 'rupture'");
   // A jam at full speed while extending (the kinetic energy of the drive goes into the jammed
   // load path); a rupture while retracting, when the airload aids the motion: the outboard part
@@ -645,7 +645,7 @@ Scenario SizingScenario(const Project& project, const std::string& kind, const s
   for (const LoadCase& lc : project.load_cases) has_preferred = has_preferred || lc.direction == preferred;
   for (const Scenario& s : project.scenarios) {
     if (s.kind != kind) continue;
-    const auto& target = kind == "jam" ? s.jam_component : s.rupture_component;
+    const auto& target = kind == kJamKind ? s.jam_component : s.rupture_component;
     if (target && *target == component && (!has_preferred || direction_of(s.load_case) == preferred)) return s;
   }
   Scenario s;
@@ -664,7 +664,7 @@ Scenario SizingScenario(const Project& project, const std::string& kind, const s
         break;
       }
   if (s.load_case.empty() && !project.load_cases.empty()) s.load_case = project.load_cases.front().name;
-  if (kind == "jam") {
+  if (kind == kJamKind) {
     s.jam_component = component;
     s.jam_time = kFailureTime;
     s.stop_time = 2 * kFailureTime;

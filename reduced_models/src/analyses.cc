@@ -361,7 +361,7 @@ PeakReport AnalysePeaks(const Project& project, const PeakOptions& options) {
   auto scenario_name = [&](const std::string& kind, const std::string& component) {
     for (const Scenario& s : project.scenarios) {
       if (s.kind != kind) continue;
-      const auto& target = kind == "jam" ? s.jam_component : s.rupture_component;
+      const auto& target = kind == kJamKind ? s.jam_component : s.rupture_component;
       if (target && *target == component) return s.name;
     }
     return kind + "_" + component;
@@ -373,9 +373,9 @@ PeakReport AnalysePeaks(const Project& project, const PeakOptions& options) {
     const int a = static_cast<int>(i);
     if (!g.IsActuator(a)) continue;
     PeakCase pc;
-    pc.kind = "jam";
+    pc.kind = kJamKind;
     pc.component = g.Id(a);
-    pc.name = scenario_name("jam", pc.component);
+    pc.name = scenario_name(kJamKind, pc.component);
     if (!options.only_case.empty() && pc.name != options.only_case) continue;
     const Focus focus{-1, a};
     const FocusModel fm = Reduce(g, focus, elements);
@@ -533,7 +533,7 @@ PeakReport AnalysePeaks(const Project& project, const PeakOptions& options) {
       // A limiter in a down-drive (LimitedPort) caps only when the path goes on through that port.
       const int limited = g.LimitedNode(k);
       const bool behind = limited == k || (std::next(id) != pc.load_path.rend() && g.Find(*std::next(id)) == limited);
-      if (pc.kind == "jam" && behind && g.Roles(k).station_limiter &&
+      if (pc.kind == kJamKind && behind && g.Roles(k).station_limiter &&
           detail::HasValue(*g.nodes[k].component, "end_stop_torque")) {
         const Component& limiter = *g.nodes[k].component;
         cap = std::min(cap, detail::NominalValue(limiter, "end_stop_torque") * speed_ratio[limited]);
@@ -709,7 +709,7 @@ PeakStructure DescribePeaks(const Project& project, const PeakOptions& options) 
   auto scenario_name = [&](const std::string& kind, const std::string& component) {
     for (const Scenario& s : project.scenarios) {
       if (s.kind != kind) continue;
-      const auto& target = kind == "jam" ? s.jam_component : s.rupture_component;
+      const auto& target = kind == kJamKind ? s.jam_component : s.rupture_component;
       if (target && *target == component) return s.name;
     }
     return kind + "_" + component;
@@ -731,9 +731,9 @@ PeakStructure DescribePeaks(const Project& project, const PeakOptions& options) 
     const int a = static_cast<int>(i);
     if (!g.IsActuator(a)) continue;
     PeakCaseStructure pc;
-    pc.kind = "jam";
+    pc.kind = kJamKind;
     pc.component = g.Id(a);
-    pc.name = scenario_name("jam", pc.component);
+    pc.name = scenario_name(kJamKind, pc.component);
     pc.acts_at = g.Id(a);
     for (int k : g.PathToRoot(a)) pc.load_path.push_back(g.Id(k));
     fill(pc, -1, a);

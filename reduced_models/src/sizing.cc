@@ -143,7 +143,7 @@ SizingReport Size(const Project& project, const SizingOptions& options) {
   auto wing_holding = [&](int node) {
     int wing = node;
     while (g.nodes[wing].parent > 0) wing = g.nodes[wing].parent;
-    Bounded backdrive = operating(wing, "");
+    Bounded holding = operating(wing, "");
     for (const LoadCase& load_case : project.load_cases) {
       std::map<std::string, double> aiding;
       for (const auto& [actuator, value] : detail::SizingLoads(load_case)) aiding[actuator] = -std::abs(value);
@@ -155,9 +155,9 @@ SizingReport Size(const Project& project, const SizingOptions& options) {
                                                       detail::SizingSpeed<Interval>(load_case, pdu, interval_mode), false);
         b.bounds = {std::max(0.0, -wide.tau_in[wing].hi), std::max(0.0, -wide.tau_in[wing].lo)};
       }
-      backdrive = Max(backdrive, b);
+      holding = Max(holding, b);
     }
-    return backdrive;
+    return holding;
   };
   // The settings by the sizing rules their component types declare.
   for (std::size_t i = 0; i < g.nodes.size(); ++i) {

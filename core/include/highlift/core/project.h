@@ -83,6 +83,11 @@ struct LoadCase {
 /// single point becomes a constant (two rows); no load case or no profile gives 0.
 std::vector<std::vector<double>> SpeedCommandRows(const LoadCase* load_case);
 
+/// The failure kind of a jam scenario and sizing case (Scenario::kind, the peak cases' kind), and
+/// the project file's key of its event: written once here. Not the catalogue type "jam" (the
+/// ground stop a jam scenario adds), which only its own file names.
+inline const std::string kJamKind = "jam";
+
 /// A failure or operating scenario run by the simulator and the peak-load analysis.
 struct Scenario {
   std::string name;
