@@ -136,6 +136,7 @@ class GearedRotaryActuator : public LossyGear {
   }
   bool IsSwitching() const override { return !RegularizedLaw() && LossyGear::IsSwitching(); }
   bool RootRestarts(int k) const override { return !RegularizedLaw() && LossyGear::RootRestarts(k); }
+  bool RootFromStates(int k) const override { return RegularizedLaw() && k == 0; }  // WA: node speeds
   void ContinuousRoot(int k, const Eval& e) override {
     if (RegularizedLaw() && k == 0) phi_start = Phi(e);
   }

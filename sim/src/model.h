@@ -390,6 +390,13 @@ class Element {
     (void)k;
     return IsSwitching();
   }
+  /// Whether root k (one for which RootRestarts() is false) is a function of the node angles
+  /// and speeds alone (e.phi, e.w and e.y; no torque, acceleration or signal): the simulator
+  /// then locates its crossings without evaluating the model (System::KinematicRoots).
+  virtual bool RootFromStates(int k) const {
+    (void)k;
+    return false;
+  }
   /// Root k (one for which RootRestarts() is false) was crossed at the state of `e`; the
   /// element may update discrete variables that leave the right-hand side continuous there.
   virtual void ContinuousRoot(int k, const Eval& e) {

@@ -281,6 +281,14 @@ System::System(const Network& original) {
   for (auto& el : elements_) {
     el->root_offset = n_roots_;
     n_roots_ += el->NumRoots();
+    bool kinematic = false;
+    for (int k = 0; k < el->NumRoots(); ++k) {
+      const bool from_states = el->RootFromStates(k) && !el->RootRestarts(k);
+      kinematic_root_.push_back(from_states ? 1 : 0);
+      kinematic = kinematic || from_states;
+    }
+    if (kinematic) kinematic_root_elements_.push_back(el.get());
+    kinematic_scratch_.resize(std::max<std::size_t>(kinematic_scratch_.size(), el->NumRoots()));
   }
   ClassifyMasslessNodes();
   AssignStates(signal_source, slot_owner);
@@ -1283,20 +1291,13 @@ void System::EvaluateSignals(const std::vector<int>& order) {
   }
 }
 
-bool System::Evaluate(double t, const double* y, double* ydot) {
-  // Evaluated at this very point already (CVODE's root function at the end of a step, then the
-  // sampling of that step end): the elements hold its values.
-  if (ydot == nullptr && cache_enabled_ && cache_valid_ && t == cache_t_ && t_segment_ == cache_segment_ &&
-      std::equal(y, y + n_states_, cache_y_.begin())) {
-    eval_.y = y;
-    return true;
-  }
+void System::SetKinematics(double t, const double* y) {
   cache_valid_ = false;
   Eval& e = eval_;
   e.t = t;
   e.t_segment = t_segment_;
   e.y = y;
-  e.ydot = ydot;
+  e.ydot = nullptr;
   for (std::size_t n = 0; n < nodes_.size(); ++n) {
     const Node& node = nodes_[n];
     if (node.ground) {
@@ -1315,6 +1316,34 @@ bool System::Evaluate(double t, const double* y, double* ydot) {
     e.q[n] = 0.0;
     e.cap[n] = 0.0;
   }
+}
+
+void System::KinematicRoots(double t, const double* y, double* g) {
+  // At the point of the last full evaluation (CVODE's root functions at the end of a step) its
+  // angles and speeds are those of y; anywhere else they are set afresh, and that evaluation is
+  // no longer current.
+  if (cache_valid_ && t == cache_t_ && t_segment_ == cache_segment_ && std::equal(y, y + n_states_, cache_y_.begin()))
+    eval_.y = y;
+  else
+    SetKinematics(t, y);
+  for (Element* el : kinematic_root_elements_) {
+    el->Roots(eval_, kinematic_scratch_.data());
+    for (int k = 0; k < el->NumRoots(); ++k)
+      if (el->RootFromStates(k)) g[el->root_offset + k] = kinematic_scratch_[k];
+  }
+}
+
+bool System::Evaluate(double t, const double* y, double* ydot) {
+  // Evaluated at this very point already (CVODE's root function at the end of a step, then the
+  // sampling of that step end): the elements hold its values.
+  if (ydot == nullptr && cache_enabled_ && cache_valid_ && t == cache_t_ && t_segment_ == cache_segment_ &&
+      std::equal(y, y + n_states_, cache_y_.begin())) {
+    eval_.y = y;
+    return true;
+  }
+  Eval& e = eval_;
+  SetKinematics(t, y);
+  e.ydot = ydot;
   EvaluateSignals(signal_order_before_);
   // Elements with assumed branches (HasAssumptions) may ask for the solve to be redone with
   // the consistent branch; each pass settles at least one of them.
@@ -1494,8 +1523,8 @@ void System::BuildGroups() {
     for (int n : g.nodes) g.schur = g.schur && nodes_[n].J > 0;
     if (!g.schur) continue;
     for (std::size_t i = 0; i < g.nodes.size(); ++i) local_[g.nodes[i]] = static_cast<int>(i);
-    g.J.clear();
-    for (int n : g.nodes) g.J.push_back(nodes_[n].J);
+    g.inverse_J.clear();
+    for (int n : g.nodes) g.inverse_J.push_back(1.0 / nodes_[n].J);
     auto entries = [&](const ConstraintEntries& list, std::vector<int>& begin,
                        std::vector<int>& entry, std::vector<int>& local) {
       for (std::size_t p = 0; p < list.size(); ++p)
@@ -1530,14 +1559,14 @@ bool System::SolveSchur(Group& g) {
   double* column = g.b.data();      // M^-1 C_k, scattered over the group's nodes
   double* S = g.lu_work.data();     // m x m, column-major
   double* r = g.x.data() + nn;      // right-hand side, then lambda
-  const double* J = g.J.data();
-  for (int i = 0; i < nn; ++i) acc0[i] = e.force[g.nodes[i]] / J[i];
+  const double* inverse_J = g.inverse_J.data();
+  for (int i = 0; i < nn; ++i) acc0[i] = e.force[g.nodes[i]] * inverse_J[i];
   for (int k = 0; k < m; ++k) {
     const auto* ck = e.constraints[g.rows[k]].column.begin();
     for (int i = 0; i < nn; ++i) column[i] = 0.0;
     for (int p = g.column_begin[k]; p < g.column_begin[k + 1]; ++p) {
       const int i = g.column_local[p];
-      column[i] += ck[g.column_entry[p]].second / J[i];
+      column[i] += ck[g.column_entry[p]].second * inverse_J[i];
     }
     for (int j = 0; j < m; ++j) {
       const auto* rj = e.constraints[g.rows[j]].row.begin();
@@ -1567,7 +1596,7 @@ bool System::SolveSchur(Group& g) {
     const auto* column_k = ck.column.begin();
     for (int p = g.column_begin[k]; p < g.column_begin[k + 1]; ++p) {
       const int i = g.column_local[p];
-      acc0[i] += column_k[g.column_entry[p]].second * lambda / J[i];
+      acc0[i] += column_k[g.column_entry[p]].second * lambda * inverse_J[i];
     }
   }
   for (int i = 0; i < nn; ++i) e.acc[g.nodes[i]] = acc0[i];
@@ -1829,7 +1858,8 @@ bool System::NeedsRestart(const int* root_info) const {
 }
 
 bool System::HandleContinuousRoots(double t, const double* y, const int* root_info) {
-  cache_valid_ = false;  // discrete state or start values change
+  // The elements see the state of (t, y): the last evaluation when it was there (the step end
+  // just sampled), else a new one; then their discrete variables change and it is redone.
   if (!Evaluate(t, y, nullptr)) return false;
   for (auto& el : elements_)
     for (int k = 0; k < el->NumRoots(); ++k)

@@ -87,6 +87,14 @@ class System {
   bool Evaluate(double t, const double* y, double* ydot);
   /// Root functions (after Evaluate at the same point).
   void Roots(double* g) const;
+  /// Whether root k is kinematic: a root without restart that is a function of the node angles
+  /// and speeds alone (Element::RootFromStates). The simulator locates those itself on the
+  /// interpolant with KinematicRoots instead of evaluating the whole model at every trial point.
+  bool KinematicRoot(int k) const { return kinematic_root_[k] != 0; }
+  bool HasKinematicRoots() const { return !kinematic_root_elements_.empty(); }
+  /// The kinematic roots at (t, y) into g[k] (the other entries are left alone), from the node
+  /// angles and speeds only: no forces, no solve. The last full evaluation is no longer current.
+  void KinematicRoots(double t, const double* y, double* g);
   void RootDirections(int* direction) const;
   double NextTimeEvent(double t) const;
 
@@ -212,14 +220,20 @@ class System {
     Eigen::MatrixXd lu_work;                  ///< the factored copy of A, small groups
     bool schur = false;                       ///< every node has inertia: SolveSchur
     // SolveSchur's view of the constraint pattern (fixed while the signature matches): the
-    // inertia of each node, and per constraint (in `rows` order) its column and row entries on
+    // inverse inertia of each node, and per constraint (in `rows` order) its column and row entries on
     // the group's nodes (ground entries left out) as the entry's position in
     // Constraint::column / row and the node's local index, entries [begin[k], begin[k + 1]).
-    std::vector<double> J;
+    std::vector<double> inverse_J;
     std::vector<int> column_begin, column_entry, column_local;
     std::vector<int> row_begin, row_entry, row_local;
   };
   bool SolveSchur(Group& g);
+  /// The first part of every evaluation: node angles and speeds from y (the massless nodes'
+  /// speeds solved), hydraulic pressures, forces and accelerations cleared.
+  void SetKinematics(double t, const double* y);
+  std::vector<char> kinematic_root_;               ///< per root: KinematicRoot
+  std::vector<Element*> kinematic_root_elements_;  ///< the elements with a kinematic root
+  std::vector<double> kinematic_scratch_;          ///< one element's roots
   static constexpr int kSmallGroup = 16;  ///< up to this size: our own elimination
   void ConstraintSignature(std::vector<int>& signature) const;
   bool SignatureMatches() const;  ///< the active constraints have the pattern of signature_

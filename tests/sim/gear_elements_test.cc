@@ -174,6 +174,61 @@ TEST(GearedRotaryActuator, EfficiencyFollowsFigure7) {
   EXPECT_NEAR(r.At("gra.eta_GE", 6.0), 0.8, 1e-9);
 }
 
+// The regularised actuator (w_small > 0) reverses under a sinusoidal speed command. Its one root,
+// the input speed crossing zero, is kinematic: the simulator locates it on the interpolant from
+// the states alone, so CVODE evaluates no root function at all here. Each reversal is found
+// once, at w = 0, and restarts the angle of figure 7 there.
+TEST(GearedRotaryActuator, RegularisedReversalsAreLocatedFromTheStatesAlone) {
+  const double phi_eta = 0.3, w_eta = 0.5, eta_op = 0.8;
+  Network net;
+  net.AddElement("Fixed", "fixed");
+  net.AddElement("Sine", "w_ref", P({{"amplitude", 2.0}, {"f", 2.0}}));
+  net.AddElement("Speed", "pdu", P({{"f_crit", 100}}));
+  net.AddElement("GearedRotaryActuator", "gra",
+                 P({{"ratio", 50}, {"eta_op", eta_op}, {"J_in", 1e-3}, {"J_load", 1e-4}, {"phi_eta", phi_eta},
+                    {"w_eta", w_eta}, {"tau_C", 0.2}, {"w_small", 0.05}}));
+  net.AddElement("Damper", "flap", P({{"d", 2e4}}));
+  net.AddElement("SpringDamper", "drive_shaft", P({{"c", 1e4}, {"d", 20}}));
+  net.Connect("w_ref.y", "pdu.w_ref");
+  net.Connect("pdu.support", "fixed.flange");
+  net.Connect("pdu.flange", "drive_shaft.flange_a");
+  net.Connect("drive_shaft.flange_b", "gra.flange_a");
+  net.Connect("gra.flange_b", "flap.flange_a");
+  net.Connect("flap.flange_b", "fixed.flange");
+  const RunResult r = Simulate(net, 2.0, 1e-3, false, 1e-7);
+  ASSERT_TRUE(r.report.ok()) << r.report.FullReport();
+  EXPECT_EQ(r.report.statistics.root_evaluations, 0) << r.report.FullReport();
+  const auto t = r.t();
+  const auto phi = r.Col("gra.phi"), w = r.Col("gra.w"), eta = r.Col("gra.eta_GE");
+  std::vector<double> reversals;
+  for (const SimulationEvent& e : r.report.events)
+    if (e.kind == "state" && e.what == "gra contact") reversals.push_back(e.time);
+  // The command reverses every 0.25 s (7 times after the start in 2 s), the actuator a little
+  // later.
+  ASSERT_EQ(reversals.size(), 7u) << r.report.FullReport();
+  for (std::size_t k = 0; k < reversals.size(); ++k)
+    EXPECT_NEAR(reversals[k], 0.25 * static_cast<double>(k + 1), 0.02) << "reversal " << k;
+  // At each reversal the speed is zero to the root tolerance (w changes by about 25 rad/s^2),
+  // and the efficiency law restarts its angle there.
+  double phi_start = phi[0];
+  std::size_t next = 0;
+  int checked_angle = 0;
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    if (next < reversals.size() && t[i] == reversals[next]) {
+      EXPECT_NEAR(w[i], 0.0, 1e-9) << "t = " << t[i];
+      phi_start = phi[i];
+      ++next;
+      continue;
+    }
+    const double e_angle = std::min(1.0, std::abs(phi[i] - phi_start) / phi_eta);
+    const double e_speed = std::min(1.0, std::abs(w[i]) / w_eta);
+    EXPECT_NEAR(eta[i], 1 - std::min(e_angle, e_speed) * (1 - eta_op), 1e-6) << "t = " << t[i];
+    if (e_angle > 0.2 && e_angle < 0.8 && e_speed == 1.0) ++checked_angle;
+  }
+  EXPECT_EQ(next, reversals.size()) << "a row at every reversal";
+  EXPECT_GT(checked_angle, 20) << "rows on the angle ramp after the reversals (figure 7b)";
+}
+
 // A torque-driven actuator: it runs out against an opposing load, stops and sticks (held by
 // the breakaway friction peak*(tau_C + tau_S)), then the load back-drives it (aiding). The
 // mode sequence is Stuck, Forward, Stuck, Backward; eta_GE is 1 while stuck and eta_ai at the
