@@ -482,7 +482,7 @@ class Friction : public Element {
       // The event iteration accepts a stuck element whose torque exceeds its capacity by up to
       // 1e-12 of it; the root keeps a margin of 1e-10 so that it starts positive even then and
       // a torque that rises beyond the capacity is located (CVODE sees only sign changes).
-      const double cap = Tau0Max(e) + kCapacityMargin * std::abs(Tau0Max(e));
+      const double cap = Tau0Max(e) + kCapacityMargin * std::abs(Tau0Max(e)) + settled_allowance;
       g[1] = one_way ? cap - tau : cap - std::abs(tau);
     } else {
       g[1] = 1.0;
@@ -503,6 +503,7 @@ class Friction : public Element {
 
   void PrepareEvent(const Eval& e) override {
     start_forward = start_backward = false;
+    settled_allowance = 0.0;
     const double w = WF(e);
     const double w_eps = 1e-9 * (1.0 + std::abs(e.w[p]) + std::abs(e.w[m]));
     // Root 2 located the rise of the normal force: engaged from this instant on (the right
@@ -565,9 +566,16 @@ class Friction : public Element {
     start_forward = start_backward = false;
     ClearFired();
   }
-  void Settle(const Eval&) override {
+  /// Stuck at its capacity within roundoff (and sliding as inconsistent): the capacity root is
+  /// re-armed kSettledAllowance above the capacity until the next event of the element. Without
+  /// it a torque that keeps rising with the capacity (a limiter's brake, whose normal force grows
+  /// with the spring's twist) crosses the 1e-10 margin again within 1e-14 s, and the run crawls
+  /// from one such event to the next; with it the next event finds the torque clearly above the
+  /// capacity and the element breaks away, or no event follows.
+  void Settle(const Eval& e) override {
     if (mode == kForward || mode == kBackward) mode = kStuck;
     start_forward = start_backward = false;
+    settled_allowance = kSettledAllowance * std::abs(Tau0Max(e));
   }
   bool IsSwitching() const override { return true; }
   std::string ModeText() const override { return ModeName(mode); }
@@ -578,6 +586,8 @@ class Friction : public Element {
   double LossPower(const Eval& e) const override { return tau * WF(e); }
 
   static constexpr double kCapacityMargin = 1e-10;  ///< relative, of the stuck roots
+  static constexpr double kSettledAllowance = 1e-6;  ///< relative, of a settled element's root
+  double settled_allowance = 0.0;  ///< N*m above the capacity, from Settle() to the next event
   double peak = 1.0;
   bool can_be_free = false;
   bool one_way = false;
