@@ -908,6 +908,7 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
         pending.flag = flag;
         std::copy(N_VGetArrayPointer(interpolated), N_VGetArrayPointer(interpolated) + n, N_VGetArrayPointer(cv.y));
         t_ret = t_root;
+        flag = CV_SUCCESS;  // this return is the kinematic root's; CVODE's own waits
         kinematic_root = true;
       }
     }
@@ -946,7 +947,7 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
       steps_since_output = 0;
     }
     if (failed) break;
-    if (!resumed && !kinematic_root && ++steps_since_output > options.max_steps_per_output) {
+    if (!resumed && ++steps_since_output > options.max_steps_per_output) {  // once per CVODE step
       // What CVODE's mxstep reports in its normal mode, counted here in one-step mode.
       report.sundials_flag = detail::CvodeFlagName(CV_TOO_MUCH_WORK);
       fail(SimulationStatus::kSolverFailure,
