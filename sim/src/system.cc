@@ -1291,6 +1291,10 @@ void System::EvaluateSignals(const std::vector<int>& order) {
   }
 }
 
+bool System::AtLastEvaluation(double t, const double* y) const {
+  return cache_valid_ && t == cache_t_ && t_segment_ == cache_segment_ && std::equal(y, y + n_states_, cache_y_.begin());
+}
+
 void System::SetKinematics(double t, const double* y) {
   cache_valid_ = false;
   Eval& e = eval_;
@@ -1322,7 +1326,7 @@ void System::KinematicRoots(double t, const double* y, double* g) {
   // At the point of the last full evaluation (CVODE's root functions at the end of a step) its
   // angles and speeds are those of y; anywhere else they are set afresh, and that evaluation is
   // no longer current.
-  if (cache_valid_ && t == cache_t_ && t_segment_ == cache_segment_ && std::equal(y, y + n_states_, cache_y_.begin()))
+  if (AtLastEvaluation(t, y))
     eval_.y = y;
   else
     SetKinematics(t, y);
@@ -1336,8 +1340,7 @@ void System::KinematicRoots(double t, const double* y, double* g) {
 bool System::Evaluate(double t, const double* y, double* ydot) {
   // Evaluated at this very point already (CVODE's root function at the end of a step, then the
   // sampling of that step end): the elements hold its values.
-  if (ydot == nullptr && cache_enabled_ && cache_valid_ && t == cache_t_ && t_segment_ == cache_segment_ &&
-      std::equal(y, y + n_states_, cache_y_.begin())) {
+  if (ydot == nullptr && cache_enabled_ && AtLastEvaluation(t, y)) {
     eval_.y = y;
     return true;
   }

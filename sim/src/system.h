@@ -231,6 +231,8 @@ class System {
   /// The first part of every evaluation: node angles and speeds from y (the massless nodes'
   /// speeds solved), hydraulic pressures, forces and accelerations cleared.
   void SetKinematics(double t, const double* y);
+  /// (t, y) is the point of the last complete evaluation, still current.
+  bool AtLastEvaluation(double t, const double* y) const;
   std::vector<char> kinematic_root_;               ///< per root: KinematicRoot
   std::vector<Element*> kinematic_root_elements_;  ///< the elements with a kinematic root
   std::vector<double> kinematic_scratch_;          ///< one element's roots
