@@ -23,13 +23,15 @@ ModelOutput WriteDriveSystem(const Project& project, const std::string& model_na
       options.resolution == ModelResolution::kFull ? model::DriveResolution::kFull : model::DriveResolution::kReduced;
   const model::DriveModel model = model::BuildDriveModel(project, scenario, drive);
 
-  // Only the component ids are the user's names; the parts' ids ("shaft_1.e1") always change.
+  // Renamed: a component id that is no identifier (or a reserved name), and an element whose
+  // name is not its id with '.' and '-' as '_' (docs/modelica.md) because a project id holds
+  // that name. The parts' ids ("shaft_1.e1" -> shaft_1_e1) change by that rule alone.
   std::set<std::string> component_ids;
   for (const Component& c : project.components) component_ids.insert(c.id);
   auto renamed_components = [&](const std::map<std::string, std::string>& renamed) {
     std::map<std::string, std::string> out;
     for (const auto& [from, to] : renamed)
-      if (component_ids.count(from)) out.emplace(from, to);
+      if (component_ids.count(from) || to != SanitizeModelicaIdentifier(from)) out.emplace(from, to);
     return out;
   };
 
@@ -72,9 +74,9 @@ ModelOutput WriteDriveSystem(const Project& project, const std::string& model_na
     }
     doc << "<p>Positive rotation is the extend direction. ";
     if (start)
-      doc << "The model starts where <code>highlift simulate</code> starts, at rest in the "
-          << HtmlEscape(start->summary)
-          << " (fixed start values of one inertia per degree of freedom, initial equations on other flanges).";
+      doc << "The model starts where <code>highlift simulate</code> starts, at rest (fixed start values of one "
+             "inertia per degree of freedom, initial equations on other flanges); the simulator's start: "
+          << HtmlEscape(start->summary) << ".";
     else
       doc << "The model starts at rest with untwisted springs (exported with <code>--start rest</code>; "
              "<code>highlift simulate</code> starts from the static equilibrium of the loads held by the "

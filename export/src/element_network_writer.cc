@@ -26,7 +26,7 @@ const std::map<std::string, std::string>& ClassOfElementType() {
                           "AngleToTorqueAdaptor", "TorqueToAngleAdaptor"})
       m[c] = rotational + "Components." + c;
     for (const char* c : {"Torque", "Torque2", "ConstantTorque", "TorqueStep", "LinearSpeedDependentTorque",
-                          "QuadraticSpeedDependentTorque", "InverseSpeedDependentTorque", "SignTorque",
+                          "QuadraticSpeedDependentTorque", "SignTorque",
                           "EddyCurrentTorque", "Speed", "Position", "ConstantSpeed", "Accelerate", "Move"})
       m[c] = rotational + "Sources." + c;
     for (const char* c : {"AngleSensor", "SpeedSensor", "AccSensor", "TorqueSensor", "RelAngleSensor",
@@ -45,6 +45,8 @@ const std::map<std::string, std::string>& ClassOfElementType() {
       m[c] = std::string("HighLift.Mechanical.") + c;
     for (const char* c : {"BrakeActuation", "Monitoring"}) m[c] = std::string("HighLift.Control.") + c;
     m["PDU"] = "HighLift.Drives.PDU";
+    // MSL 4.1.0 has it, 4.0.0 not: the HighLift class of the same name and parameters.
+    m["InverseSpeedDependentTorque"] = "HighLift.Sources.InverseSpeedDependentTorque";
     for (const char* c : {"PressureSource", "Tank", "TurbulentResistance", "ServoValve",
                           "DifferentialCylinder", "VariableDisplacementMotor", "Volume",
                           "MotorSpeedControl"})
@@ -146,6 +148,11 @@ std::string EnumerationValue(const std::string& parameter, double value, const s
   return "Modelica.Blocks.Types." + it->second.first + "." + it->second.second[index - 1];
 }
 
+// Element types whose Modelica class reads its table from a text file when asked
+// (Modelica.Blocks.Sources.CombiTimeTable, Modelica.Blocks.Tables.CombiTable1Ds: tableOnFile,
+// tableName, fileName).
+bool ReadsTableFromFile(const std::string& type) { return type == "CombiTimeTable" || type == "CombiTable1Ds"; }
+
 // Output ports that are vectors in the Modelica class (one table column): port -> "y[1]".
 std::string ModelicaPort(const std::string& type, const std::string& port) {
   if ((type == "CombiTimeTable" || type == "CombiTable1Ds") && port == "y") return "y[1]";
@@ -167,10 +174,13 @@ ModelOutput WriteNetworkModel(const NetworkModel& network, const std::string& mo
   const auto& connections = *network.connections;
   IdentifierMap ids({model_name, "Modelica", "HighLift", "time"});
   std::map<std::string, const model::NetworkElement*> by_id;
-  for (const auto& e : elements) {
-    ids.Add(e.id);
-    by_id[e.id] = &e;
-  }
+  // Ids that are identifiers already keep them; the others (shaft_l1.m1, Real, ...) then take
+  // their sanitised name, or, where an id of the first kind holds it, the next free one. So a
+  // project id equal to a generated name ("shaft_l1_m1") is never renamed, whatever the order.
+  for (const bool valid : {true, false})
+    for (const auto& e : elements)
+      if (IsModelicaIdentifier(e.id) == valid) ids.Add(e.id);
+  for (const auto& e : elements) by_id[e.id] = &e;
   auto class_of = [&](const model::NetworkElement& e) -> const std::string& {
     const auto cls = ClassOfElementType().find(e.type);
     if (cls == ClassOfElementType().end())
@@ -261,7 +271,9 @@ ModelOutput WriteNetworkModel(const NetworkModel& network, const std::string& mo
         if (p.kind == ParameterKind::kTable) {
           auto t = e.parameters.tables.find(p.name);
           if (t == e.parameters.tables.end()) continue;  // MSL default table
-          if (network.tables_in_file) {
+          // Only the MSL table blocks read a table from a file (tableOnFile); any other
+          // table parameter (a Brake's mu_pos) stays a matrix modifier.
+          if (network.tables_in_file && ReadsTableFromFile(e.type)) {
             const auto& rows = t->second;
             table_file << "double " << name << "(" << rows.size() << "," << (rows.empty() ? 0 : rows[0].size()) << ")\n";
             for (const auto& row : rows) {

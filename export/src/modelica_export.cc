@@ -5,7 +5,6 @@
 #include <sstream>
 
 #include "highlift/core/error.h"
-#include "highlift/core/output_file.h"
 #include "highlift/export/modelica.h"
 #include "writers.h"
 
@@ -57,19 +56,27 @@ std::string HtmlEscape(std::string_view text) {
 
 namespace {
 
-// "A380-class flap transmission (both wings)" -> "A380ClassFlapTransmissionBothWings".
+// Longest model name taken from a project name (a longer one is cut at a word): the model file
+// name must stay below the file systems' 255 bytes, with room for ".mo"/".txt".
+constexpr std::size_t kMaxDerivedModelName = 80;
+
+// "A380-class flap transmission (both wings)" -> "A380ClassFlapTransmissionBothWings";
+// letters with diacritics lose them ("Ünïcödé Rig" -> "UnicodeRig").
 std::string ModelNameFromProject(const std::string& project_name) {
   std::string name;
+  std::size_t last_word = 0;  // where the last word that fits starts
   bool start_word = true;
-  for (char ch : project_name) {
+  for (char ch : TransliterateToAscii(project_name)) {
     const auto c = static_cast<unsigned char>(ch);
     if (std::isalnum(c) && c < 0x80) {
+      if (start_word && name.size() <= kMaxDerivedModelName) last_word = name.size();
       name += start_word ? static_cast<char>(std::toupper(c)) : ch;
       start_word = false;
     } else {
       start_word = true;
     }
   }
+  if (name.size() > kMaxDerivedModelName) name.resize(last_word > 0 ? last_word : kMaxDerivedModelName);
   if (name.empty()) name = "HighLiftModel";
   if (std::isdigit(static_cast<unsigned char>(name.front()))) name = "Model" + name;
   if (name == "HighLift" || name == "Modelica") name += "Model";
@@ -90,15 +97,6 @@ std::string ModelsPackageText() {
          "</p>\n"
          "</html>\"));\n"
          "end Models;\n";
-}
-
-void WriteFileAtomically(const std::filesystem::path& path, const std::string& content) {
-  std::error_code ec;
-  std::filesystem::create_directories(path.parent_path(), ec);
-  if (ec)
-    throw InputError("cannot create the output folder '" + path.parent_path().string() + "': " + ec.message() +
-                     "; check that its parent exists and is writable");
-  WriteOutputFile(path, content, "Modelica file");
 }
 
 }  // namespace
@@ -168,7 +166,11 @@ ModelicaExportReport GenerateModelica(const Project& project, const ModelicaExpo
 ModelicaExportReport ExportModelica(const Project& project, const ModelicaExportOptions& options,
                                     const std::filesystem::path& output_dir) {
   ModelicaExportReport report = GenerateModelica(project, options);
-  for (const auto& f : report.files) WriteFileAtomically(output_dir / f.path, f.content);
+  // Several exports share the folder: the order lists every model in it.
+  for (auto& f : report.files)
+    if (f.path == std::string(modelica_detail::kModelsFolder) + "/package.order")
+      f.content = modelica_detail::MergedModelsPackageOrder(output_dir, report.model_name);
+  modelica_detail::WriteFilesAllOrNothing(report.files, output_dir);
   return report;
 }
 

@@ -23,6 +23,52 @@ constexpr std::string_view kKeywords[] = {
     "redeclare", "replaceable", "return",    "stream",     "then",      "true",      "type",
     "when",      "while",      "within",     "optimization", "subtype"};
 
+// The names of the predefined types and the built-in enumeration and operator packages of the
+// Modelica language (specification 3.6, sections 4.9 and 16.2): not keywords, but an instance
+// named so makes the model illegal or hides the type.
+constexpr std::string_view kPredefinedNames[] = {"AssertionLevel", "Boolean", "Clock",       "Connections",
+                                                  "ExternalObject", "Integer", "Real",        "StateSelect",
+                                                  "String"};
+
+// Latin letters with diacritics and ligatures (Unicode Latin-1 Supplement U+00C0..U+00FF and
+// Latin Extended-A U+0100..U+017F) as their ASCII base letters; '?' marks the entries of
+// kLatinSpecial (two letters) and the two signs that are no letters (U+00D7, U+00F7).
+constexpr std::string_view kLatin1 = "AAAAAA?CEEEEIIIIDNOOOOO?OUUUUY??aaaaaa?ceeeeiiiidnooooo?ouuuuy?y";
+constexpr std::string_view kLatinA =
+    "AaAaAaCcCcCcCcDdDdEeEeEeEeEeGgGgGgGgHhHhIiIiIiIiIi??JjKkkLlLlLlLlLlNnNnNnnNnOoOoOo??RrRrRrSsSsSsSsTtTtTtUuUuUuUu"
+    "UuUuWwYyYZzZzZzs";
+static_assert(kLatin1.size() == 0x40 && kLatinA.size() == 0x80);
+struct LatinSpecial {
+  char32_t code;
+  const char* ascii;
+};
+constexpr LatinSpecial kLatinSpecial[] = {{0xC6, "AE"}, {0xDE, "TH"},  {0xDF, "ss"}, {0xE6, "ae"}, {0xFE, "th"},
+                                          {0x132, "IJ"}, {0x133, "ij"}, {0x152, "OE"}, {0x153, "oe"}};
+
+constexpr char32_t kReplacement = 0xFFFD;  // an invalid byte: never a letter of the tables
+
+// The next code point of UTF-8 text at `i` (advanced past it); an invalid byte is skipped alone
+// and returned as kReplacement.
+char32_t NextCodePoint(std::string_view text, std::size_t& i) {
+  const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(text[k]); };
+  const unsigned char lead = byte(i);
+  int length = lead < 0x80 ? 1 : (lead >> 5) == 0x6 ? 2 : (lead >> 4) == 0xE ? 3 : (lead >> 3) == 0x1E ? 4 : 0;
+  if (length == 0 || i + length > text.size()) {
+    ++i;
+    return kReplacement;
+  }
+  char32_t code = length == 1 ? lead : lead & (0x7F >> length);
+  for (int k = 1; k < length; ++k) {
+    if ((byte(i + k) & 0xC0) != 0x80) {
+      ++i;
+      return kReplacement;
+    }
+    code = (code << 6) | (byte(i + k) & 0x3F);
+  }
+  i += length;
+  return code;
+}
+
 bool IsIdentStart(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || c == '_'; }
 bool IsIdentChar(char c) { return IsIdentStart(c) || (c >= '0' && c <= '9'); }
 
@@ -44,18 +90,46 @@ bool IsModelicaKeyword(std::string_view name) {
   return std::find(std::begin(kKeywords), std::end(kKeywords), name) != std::end(kKeywords);
 }
 
+bool IsModelicaReservedName(std::string_view name) {
+  return IsModelicaKeyword(name) ||
+         std::find(std::begin(kPredefinedNames), std::end(kPredefinedNames), name) != std::end(kPredefinedNames);
+}
+
 bool IsModelicaIdentifier(std::string_view name) {
   if (name.empty() || !IsIdentStart(name.front())) return false;
   if (!std::all_of(name.begin(), name.end(), IsIdentChar)) return false;
-  return !IsModelicaKeyword(name);
+  return !IsModelicaReservedName(name);
+}
+
+std::string TransliterateToAscii(std::string_view text) {
+  std::string out;
+  out.reserve(text.size());
+  for (std::size_t i = 0; i < text.size();) {
+    const char32_t code = NextCodePoint(text, i);
+    if (code < 0x80) {
+      out += static_cast<char>(code);
+      continue;
+    }
+    const auto special = std::find_if(std::begin(kLatinSpecial), std::end(kLatinSpecial),
+                                      [&](const LatinSpecial& s) { return s.code == code; });
+    if (special != std::end(kLatinSpecial)) {
+      out += special->ascii;
+    } else if (code >= 0xC0 && code < 0x100 && kLatin1[code - 0xC0] != '?') {
+      out += kLatin1[code - 0xC0];
+    } else if (code >= 0x100 && code < 0x180) {
+      out += kLatinA[code - 0x100];
+    } else {
+      out += '_';
+    }
+  }
+  return out;
 }
 
 std::string SanitizeModelicaIdentifier(std::string_view name) {
   std::string out;
-  out.reserve(name.size() + 2);
-  for (char c : name) out += IsIdentChar(c) ? c : '_';
+  for (char c : TransliterateToAscii(name)) out += IsIdentChar(c) ? c : '_';
   if (out.empty() || !IsIdentStart(out.front())) out = "x_" + out;
-  if (IsModelicaKeyword(out)) out += '_';
+  if (IsModelicaReservedName(out)) out += '_';
   return out;
 }
 

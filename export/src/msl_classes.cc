@@ -100,8 +100,8 @@ const Entry kEntries[] = {
      "tau_nominal TorqueDirection w_nominal useSupport phi w tau", HL_ONE_SUPPORT},
     {"Modelica.Mechanics.Rotational.Sources.QuadraticSpeedDependentTorque", "model",
      "tau_nominal TorqueDirection w_nominal useSupport phi w tau", HL_ONE_SUPPORT},
-    {"Modelica.Mechanics.Rotational.Sources.InverseSpeedDependentTorque", "model",
-     "tau_nominal TorqueDirection w_nominal w0 useSupport phi w tau", HL_ONE_SUPPORT},
+    // Sources.InverseSpeedDependentTorque is not in 4.0.0 (it appears in 4.1.0): the element type
+    // exports as HighLift.Sources.InverseSpeedDependentTorque.
     {"Modelica.Mechanics.Rotational.Sources.SignTorque", "model",
      "tau_nominal reg w0 useSupport phi w tau", HL_ONE_SUPPORT},
     {"Modelica.Mechanics.Rotational.Sources.EddyCurrentTorque", "model",
@@ -219,6 +219,7 @@ const Entry kEntries[] = {
     {"Modelica.Icons.Package", "partial", "", ""},
     {"Modelica.Icons.InterfacesPackage", "partial", "", ""},
     {"Modelica.Icons.ExamplesPackage", "partial", "", ""},
+    {"Modelica.Icons.SourcesPackage", "partial", "", ""},
     {"Modelica.Icons.Example", "partial", "", ""},
     {"Modelica.Icons.Information", "partial", "", ""},
     {"Modelica.Icons.BasesPackage", "partial", "", ""},
@@ -418,7 +419,6 @@ const Conditional kConditional[] = {
     {"Modelica.Mechanics.Rotational.Sources.TorqueStep", "support", "useSupport", false},
     {"Modelica.Mechanics.Rotational.Sources.LinearSpeedDependentTorque", "support", "useSupport", false},
     {"Modelica.Mechanics.Rotational.Sources.QuadraticSpeedDependentTorque", "support", "useSupport", false},
-    {"Modelica.Mechanics.Rotational.Sources.InverseSpeedDependentTorque", "support", "useSupport", false},
     {"Modelica.Mechanics.Rotational.Sources.SignTorque", "support", "useSupport", false},
     {"Modelica.Mechanics.Rotational.Sources.EddyCurrentTorque", "support", "useSupport", false},
     {"Modelica.Mechanics.Rotational.Sources.EddyCurrentTorque", "heatPort", "useHeatPort", false},

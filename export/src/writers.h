@@ -2,6 +2,7 @@
 // writers.
 #pragma once
 
+#include <filesystem>
 #include <functional>
 #include <map>
 #include <string>
@@ -57,6 +58,14 @@ ModelOutput WriteDriveSystem(const Project& project, const std::string& model_na
 /// The package of the exported models, "HighLift.Models", and its folder "HighLift/Models".
 inline constexpr const char* kModelsPackage = "HighLift.Models";
 inline constexpr const char* kModelsFolder = "HighLift/Models";
+
+/// HighLift/Models/package.order for a folder that gets the model `model_name`: the models the
+/// folder's order lists whose file exists, the model files it does not list (sorted), then
+/// `model_name` unless listed.
+std::string MergedModelsPackageOrder(const std::filesystem::path& output_dir, const std::string& model_name);
+
+/// Writes `files` below `output_dir`, all or none (see ExportModelica).
+void WriteFilesAllOrNothing(const std::vector<GeneratedFile>& files, const std::filesystem::path& output_dir);
 
 /// The HighLift library files, embedded at build time (generated source).
 const std::vector<std::pair<std::string_view, std::string_view>>& EmbeddedLibrary();

@@ -249,5 +249,69 @@ TEST(DriveSystemExport, A380ClassExampleIsStructurallyValid) {
   }
 }
 
+// ---- Names (issue 27, item 20; issue 28, items 4 and 6) ---------------------------------------------
+
+std::string Replaced(std::string text, const std::string& from, const std::string& to) {
+  for (auto pos = text.find(from); pos != std::string::npos; pos = text.find(from, pos + to.size()))
+    text.replace(pos, from.size(), to);
+  return text;
+}
+
+// A component named like a predefined type is no instance of that name; a component whose id
+// is a generated element's name keeps it, and the generated element's new name is reported.
+TEST(DriveSystemNames, ReservedIdsAndClashesWithGeneratedNamesAreRenamedAndReported) {
+  std::string text = testing::ReadText(ExportTestDir() / "small_drive.json");
+  text = Replaced(text, "brg_1", "shaft_1_m1");  // the name of shaft_1's mass shaft_1.m1
+  text = Replaced(text, "{\"id\": \"appu\"", "{\"id\": \"StateSelect\"");
+  text = Replaced(text, "\"appu.", "\"StateSelect.");
+  text = Replaced(text, "{\"id\": \"wtb\"", "{\"id\": \"Real\"");
+  text = Replaced(text, "\"wtb.", "\"Real.");
+  const Project project = ParseProject(text, "renamed_rig.json");
+  const ModelicaExportReport report = GenerateModelica(project, ModelicaExportOptions{});
+  const std::string model = testing::Flatten(FileOf(report, report.model_file).content);
+  EXPECT_EQ(report.renamed.at("Real"), "Real_");
+  EXPECT_EQ(report.renamed.at("StateSelect"), "StateSelect_");
+  EXPECT_EQ(report.renamed.at("shaft_1.m1"), "shaft_1_m1_2");
+  EXPECT_EQ(report.renamed.count("shaft_1_m1"), 0u);   // the project's id keeps its name
+  EXPECT_EQ(report.renamed.count("shaft_1.m0"), 0u);   // renamed by the documented rule only
+  EXPECT_EQ(model.find(" Real("), std::string::npos);
+  EXPECT_EQ(model.find(" StateSelect("), std::string::npos);
+  EXPECT_NE(model.find("HighLift.Mechanical.WingTipBrake Real_("), std::string::npos);
+  EXPECT_NE(model.find("HighLift.Mechanical.LossyInertia shaft_1_m1("), std::string::npos);
+  EXPECT_NE(model.find(" shaft_1_m1_2("), std::string::npos);
+  EXPECT_NE(model.find("<li>shaft_1.m1 &rarr; shaft_1_m1_2</li>"), std::string::npos);
+  EXPECT_EQ(CheckIssues(report), "");
+}
+
+// Item 6: a project name with accented letters keeps them as their base letters.
+TEST(DriveSystemNames, ModelNameKeepsTheLettersOfTheProjectName) {
+  Project project = SmallDrive();
+  project.name = "Ünïcödé Rig";
+  EXPECT_EQ(GenerateModelica(project, ModelicaExportOptions{}).model_name, "UnicodeRig");
+  project.name = "Real";
+  EXPECT_EQ(GenerateModelica(project, ModelicaExportOptions{}).model_name, "Real_");
+}
+
+// Item 4: the model documentation states the simulator's start in a sentence of its own, for
+// every kind of start (the hydraulic example has no static equilibrium).
+TEST(DriveSystemNames, DocumentationStatesTheStartInASentence) {
+  for (const char* example : {"hydraulic_pdu_flaps.json", "a320_class_flaps.json"}) {
+    const Project project = LoadProject(std::filesystem::path(HIGHLIFT_SOURCE_DIR) / "examples" / example);
+    ModelicaExportOptions options;
+    options.start = [&project](const model::DriveModel& model) {
+      return sim::ComputeStartValues(model.network, sim::DriveModel{model}.Options(project));
+    };
+    const ModelicaExportReport report = GenerateModelica(project, options);
+    const std::string model = FileOf(report, report.model_file).content;
+    EXPECT_EQ(model.find("in the no "), std::string::npos) << example;
+    EXPECT_EQ(model.find("in the static"), std::string::npos) << example;
+    EXPECT_NE(model.find("The model starts where <code>highlift simulate</code> starts, at rest (fixed start "
+                         "values of one inertia per degree of freedom, initial equations on other flanges); the "
+                         "simulator's start: " + report.start + "."),
+              std::string::npos)
+        << example << ": " << report.start;
+  }
+}
+
 }  // namespace
 }  // namespace highlift

@@ -118,6 +118,60 @@ TEST(ElementNetworkExport, KeywordNamesAreRenamedAndDocumented) {
   EXPECT_EQ(CheckIssues(report), "");
 }
 
+// Issue 27, item 20: an element id that is a predefined type name is renamed; an id that is
+// an identifier keeps it, whatever the order, and the other takes the next name, reported.
+TEST(ElementNetworkExport, ReservedNamesAndClashesAreRenamedAndReported) {
+  Project project;
+  project.name = "names";
+  project.elements.push_back(Element("fixed", "Fixed"));
+  Component inertia = Element("inertia-1", "Inertia");
+  inertia.parameters["J"] = Given(1);
+  project.elements.push_back(inertia);
+  Component spring = Element("inertia_1", "Spring");  // the sanitised name of the one before
+  spring.parameters["c"] = Given(100);
+  project.elements.push_back(spring);
+  Component real = Element("Real", "Inertia");
+  real.parameters["J"] = Given(2);
+  project.elements.push_back(real);
+  project.element_connections.push_back({{"fixed", "flange"}, {"inertia_1", "flange_a"}, {}});
+  project.element_connections.push_back({{"inertia_1", "flange_b"}, {"inertia-1", "flange_a"}, {}});
+  project.element_connections.push_back({{"inertia-1", "flange_b"}, {"Real", "flange_a"}, {}});
+  const auto report = GenerateModelica(project, ModelicaExportOptions{});
+  EXPECT_EQ(report.renamed.at("Real"), "Real_");
+  EXPECT_EQ(report.renamed.at("inertia-1"), "inertia_1_2");
+  EXPECT_EQ(report.renamed.count("inertia_1"), 0u);
+  const std::string text = testing::Flatten(FileOf(report, "HighLift/Models/Names.mo").content);
+  EXPECT_NE(text.find("Modelica.Mechanics.Rotational.Components.Spring inertia_1(c=100)"), std::string::npos) << text;
+  EXPECT_NE(text.find("Modelica.Mechanics.Rotational.Components.Inertia Real_(J=2)"), std::string::npos) << text;
+  EXPECT_NE(text.find("connect(inertia_1_2.flange_b, Real_.flange_a)"), std::string::npos) << text;
+  EXPECT_EQ(CheckIssues(report), "");
+}
+
+// Issue 28, item 2: MSL 4.0.0 has no Sources.InverseSpeedDependentTorque (4.1.0 has): the
+// element type exports as the HighLift class of that name, and the checker knows the MSL
+// class is not in 4.0.0.
+TEST(ElementNetworkExport, InverseSpeedDependentTorqueIsTheHighLiftClass) {
+  const Project project =
+      LoadProject(std::filesystem::path(HIGHLIFT_SOURCE_DIR) / "tests" / "sim" / "msl" / "InverseSpeedDependentTorque.json");
+  const auto report = GenerateModelica(project, ModelicaExportOptions{});
+  const std::string text = FileOf(report, report.model_file).content;
+  EXPECT_NE(text.find("HighLift.Sources.InverseSpeedDependentTorque "), std::string::npos) << text;
+  EXPECT_EQ(text.find("Modelica.Mechanics.Rotational.Sources.InverseSpeedDependentTorque"), std::string::npos);
+  EXPECT_EQ(CheckIssues(report), "");
+  std::string completeness;
+  for (const auto& issue : CheckModelicaCompleteness(report.files)) completeness += issue.ToString() + "\n";
+  EXPECT_EQ(completeness, "");
+  std::string issues;
+  for (const auto& issue : CheckModelica({{"M.mo",
+                                           "model M\n"
+                                           "  Modelica.Mechanics.Rotational.Sources.InverseSpeedDependentTorque t(\n"
+                                           "    tau_nominal=1, w_nominal=1);\n"
+                                           "end M;\n"}}))
+    issues += issue.ToString() + "\n";
+  EXPECT_NE(issues.find("Modelica.Mechanics.Rotational.Sources.InverseSpeedDependentTorque"), std::string::npos)
+      << issues;
+}
+
 TEST(ElementNetworkExport, UnknownElementTypeIsAnInputError) {
   Project project;
   project.name = "bad";

@@ -98,6 +98,36 @@ TEST(ExportCli, UnknownScenarioIsAnInputError) {
   std::filesystem::remove_all(dir);
 }
 
+// Issue 27, item 13: a 300-character project name exports (the model name is cut at a word);
+// a --model-name too long for a file name exits 2 before anything is written.
+TEST(ExportCli, LongNamesExportOrFailBeforeWriting) {
+  const auto dir = TempDir("long");
+  std::string text = ReadText(testing::ExportTestDir() / "small_drive.json");
+  const std::string old_name = "\"name\": \"one-station rig\"";
+  ASSERT_NE(text.find(old_name), std::string::npos);
+  std::string long_name;
+  while (long_name.size() < 300) long_name += "wing ";
+  long_name.resize(300);
+  text.replace(text.find(old_name), old_name.size(), "\"name\": \"" + long_name + "\"");
+  std::filesystem::create_directories(dir);
+  const auto project = dir / "long.json";
+  testing::WriteText(project, text);
+  const auto out = dir / "out";
+  const auto r = RunCli({"export", project.string(), "--modelica", out.string(), "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto doc = nlohmann::json::parse(r.out);
+  const std::string model = doc["model"];
+  EXPECT_LE(model.size(), 80u);
+  EXPECT_TRUE(std::filesystem::exists(out / doc["model_file"].get<std::string>()));
+
+  const auto none = dir / "none";
+  const auto bad = RunCli({"export", project.string(), "--modelica", none.string(), "--model-name", "M" + std::string(299, 'x')});
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("give a shorter model name with --model-name"), std::string::npos) << bad.err;
+  EXPECT_FALSE(std::filesystem::exists(none));
+  std::filesystem::remove_all(dir);
+}
+
 TEST(ExportCli, OutputFolderIsRequired) {
   const auto r = RunCli({"export", "tests/export/first.json"});
   EXPECT_EQ(r.exit_code, 2);

@@ -28,6 +28,10 @@ inline std::string ReadText(const std::filesystem::path& path) {
   return s.str();
 }
 
+inline void WriteText(const std::filesystem::path& path, const std::string& text) {
+  std::ofstream(path, std::ios::binary) << text;
+}
+
 /// Compares `text` with tests/export/golden/<name>; rewrites it with HIGHLIFT_UPDATE_GOLDEN=1.
 inline void ExpectGolden(const std::string& name, const std::string& text) {
   const auto path = ExportTestDir() / "golden" / name;

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <regex>
 #include <string>
@@ -152,7 +153,10 @@ void ExpectComplete(const ModelicaExportReport& report, const std::string& what)
   EXPECT_EQ(Issues(CheckModelicaCompleteness(report.files)), "") << what;
 }
 
-TEST(ModelicaCompleteness, EveryExportOfEveryExampleAndScenarioIsComplete) {
+/// Calls `check(project, options, what)` for every example and test project, every scenario
+/// (none for a project without), both resolutions of a drive system; `options` has scenario
+/// and resolution set. Returns the number of exports.
+int ForEveryExport(const std::function<void(const Project&, ModelicaExportOptions, const std::string&)>& check) {
   int exports = 0;
   for (const auto& file : ExportedProjects()) {
     const Project project = LoadProject(file);
@@ -163,22 +167,122 @@ TEST(ModelicaCompleteness, EveryExportOfEveryExampleAndScenarioIsComplete) {
     for (const auto& scenario : scenarios) {
       for (auto resolution : {ModelResolution::kFull, ModelResolution::kReduced}) {
         if (!drive && resolution == ModelResolution::kReduced) continue;
-        ModelicaExportOptions options = WithSimulatorStart(project);
+        ModelicaExportOptions options;
         options.scenario = scenario;
         options.resolution = resolution;
-        const std::string what = file.filename().string() + " '" + scenario + "' " + ToString(resolution);
-        const ModelicaExportReport report = GenerateModelica(project, options);
-        ExpectComplete(report, what);
-        if (drive) {
-          const std::string model = FileOf(report, report.model_file).content;
-          EXPECT_NE(model.find("fixed=true"), std::string::npos) << what;
-          EXPECT_NE(report.start, "rest") << what;
-        }
+        check(project, options, file.filename().string() + " '" + scenario + "' " + ToString(resolution));
         ++exports;
       }
     }
   }
+  return exports;
+}
+
+TEST(ModelicaCompleteness, EveryExportOfEveryExampleAndScenarioIsComplete) {
+  const int exports = ForEveryExport([](const Project& project, ModelicaExportOptions options, const std::string& what) {
+    options.start = WithSimulatorStart(project).start;
+    const ModelicaExportReport report = GenerateModelica(project, options);
+    ExpectComplete(report, what);
+    if (!project.components.empty()) {
+      const std::string model = FileOf(report, report.model_file).content;
+      EXPECT_NE(model.find("fixed=true"), std::string::npos) << what;
+      EXPECT_NE(report.start, "rest") << what;
+    }
+  });
   EXPECT_GT(exports, 50);
+}
+
+// Issue 28, item 1 and "Done when": the other options on every export. --tables-in-file (the
+// MSL tables read from HighLift/Models/<Model>.txt; a table parameter of any other class, such
+// as the hydraulic PDU's Brake mu_pos, stays a modifier), with --start rest and a model name of
+// our own, every example and scenario at both resolutions.
+TEST(ModelicaCompleteness, EveryExportWithTablesInFileAndStartRestIsComplete) {
+  int tables = 0;
+  const int exports = ForEveryExport([&](const Project& project, ModelicaExportOptions options, const std::string& what) {
+    const bool drive = !project.components.empty();
+    options.tables_in_file = true;  // and no start: --start rest
+    options.model_name = "Exported";
+    const ModelicaExportReport report = GenerateModelica(project, options);
+    ExpectComplete(report, what);
+    const std::string model = Flatten(FileOf(report, report.model_file).content);
+    if (drive) {  // element networks carry their own starts
+      EXPECT_EQ(model.find("fixed=true"), std::string::npos) << what;
+    }
+    // Every table is read from the file, by the MSL table blocks only.
+    for (std::size_t at = model.find("tableOnFile=true"); at != std::string::npos;
+         at = model.find("tableOnFile=true", at + 1)) {
+      const std::size_t line = model.rfind('\n', at) + 1;
+      const std::string declaration = model.substr(line, at - line);
+      EXPECT_TRUE(declaration.find("Modelica.Blocks.Sources.CombiTimeTable ") != std::string::npos ||
+                  declaration.find("Modelica.Blocks.Tables.CombiTable1Ds ") != std::string::npos)
+          << what << ": " << declaration;
+      ++tables;
+    }
+    if (model.find("tableOnFile=true") != std::string::npos) {
+      EXPECT_NE(FileOf(report, "HighLift/Models/Exported.txt").content.find("double "), std::string::npos) << what;
+    }
+    EXPECT_EQ(model.find("table=["), std::string::npos) << what;
+  });
+  EXPECT_GT(exports, 50);
+  EXPECT_GT(tables, 100);
+}
+
+// Issue 28, item 1: the hydraulic PDU's pressure-off brakes keep their friction table.
+TEST(ModelicaCompleteness, TablesInFileKeepTheBrakeFrictionTable) {
+  const Project project = LoadProject(std::filesystem::path(HIGHLIFT_SOURCE_DIR) / "examples" / "hydraulic_pdu_flaps.json");
+  ModelicaExportOptions options;
+  options.tables_in_file = true;
+  const ModelicaExportReport report = GenerateModelica(project, options);
+  const std::string model = Flatten(FileOf(report, report.model_file).content);
+  const std::regex brake(R"(Modelica\.Mechanics\.Rotational\.Components\.Brake (\w+)\(([^\n]*)\))");
+  int brakes = 0;
+  for (std::sregex_iterator it(model.begin(), model.end(), brake), end; it != end; ++it) {
+    const std::string modifiers = (*it)[2];
+    EXPECT_NE(modifiers.find("mu_pos=["), std::string::npos) << (*it)[1];
+    EXPECT_EQ(modifiers.find("tableOnFile"), std::string::npos) << (*it)[1];
+    ++brakes;
+  }
+  EXPECT_GT(brakes, 0);
+  ExpectComplete(report, "hydraulic_pdu_flaps.json --tables-in-file");
+}
+
+// Issue 28, item 7: the library's examples give every mechanical degree of freedom a start, as
+// the exported models do: an Inertia instance its phi and w start values with fixed=true,
+// every other instance with an inertia inside (torque limiter, actuator, wing-tip brake) an
+// initial equation on the angle and on the speed of its flange_a.
+TEST(ModelicaLibraryExamples, EveryInertiaHasAStart) {
+  std::map<std::string, std::string> text_of;
+  for (const auto& f : HighLiftLibraryFiles()) text_of[f.path] = f.content;
+  auto has_inertia = [&](std::string cls) {
+    if (cls.rfind("HighLift.", 0) != 0) return false;
+    std::replace(cls.begin(), cls.end(), '.', '/');
+    const std::string& text = text_of[cls + ".mo"];
+    return text.find("Modelica.Mechanics.Rotational.Components.Inertia ") != std::string::npos ||
+           text.find("LossyInertia ") != std::string::npos;
+  };
+  int examples = 0, starts = 0;
+  const std::regex declaration(R"(\n  ((?:Modelica|HighLift)\.[\w.]+) (\w+)(\(([^;]*?)\))?\s*(\n\s*"[^"]*")?\s*annotation)");
+  for (const auto& [path, text] : text_of) {
+    if (path.rfind("HighLift/Examples/", 0) != 0 || path.find("package.") != std::string::npos) continue;
+    const std::string flat = Flatten(text);
+    ++examples;
+    for (std::sregex_iterator it(flat.begin(), flat.end(), declaration), end; it != end; ++it) {
+      const std::string cls = (*it)[1], name = (*it)[2], modifiers = (*it)[4];
+      if (cls == "Modelica.Mechanics.Rotational.Components.Inertia") {
+        EXPECT_TRUE(std::regex_search(modifiers, std::regex(R"((^|[ ,])phi\(start=[^)]*fixed=true\))")))
+            << path << ": " << name << "(" << modifiers << ")";
+        EXPECT_TRUE(std::regex_search(modifiers, std::regex(R"((^|[ ,])w\(start=[^)]*fixed=true\))")))
+            << path << ": " << name << "(" << modifiers << ")";
+        ++starts;
+      } else if (has_inertia(cls)) {
+        EXPECT_NE(flat.find("\n  " + name + ".flange_a.phi = "), std::string::npos) << path << ": " << name;
+        EXPECT_NE(flat.find("\n  der(" + name + ".flange_a.phi) = "), std::string::npos) << path << ": " << name;
+        ++starts;
+      }
+    }
+  }
+  EXPECT_EQ(examples, 3);
+  EXPECT_GE(starts, 5);
 }
 
 TEST(ModelicaCompleteness, StartRestWritesNoStartValues) {

@@ -36,9 +36,37 @@ TEST(ModelicaIdentifiers, SanitizerReplacesLeadsAndEscapesKeywords) {
   EXPECT_EQ(SanitizeModelicaIdentifier("end"), "end_");
   EXPECT_EQ(SanitizeModelicaIdentifier("model"), "model_");
   EXPECT_EQ(SanitizeModelicaIdentifier("wtb left (tip)"), "wtb_left__tip_");
-  EXPECT_EQ(SanitizeModelicaIdentifier("\xc3\xa9tage"), "__tage");  // UTF-8 bytes are replaced
+  EXPECT_EQ(SanitizeModelicaIdentifier("\xc3\xa9tage"), "etage");  // Latin letters lose their accents
+  EXPECT_EQ(SanitizeModelicaIdentifier("\xce\xb7_gear"), "__gear");  // other letters: one '_' each
   for (const char* s : {"a b", "9", "for", "x.y", "\xce\xb7", "'q'"})
     EXPECT_TRUE(IsModelicaIdentifier(SanitizeModelicaIdentifier(s))) << s;
+}
+
+// Issue 28, item 6: the Latin letters of a name keep their base letter instead of vanishing.
+TEST(ModelicaIdentifiers, TransliteratesLatinLettersToAscii) {
+  EXPECT_EQ(TransliterateToAscii("Ünïcödé Rig"), "Unicode Rig");
+  EXPECT_EQ(TransliterateToAscii("Straße"), "Strasse");                              // ß
+  EXPECT_EQ(TransliterateToAscii("Æsir Œuvre"), "AEsir OEuvre");               // Æ, Œ
+  EXPECT_EQ(TransliterateToAscii("Łódź"), "Lodz");
+  EXPECT_EQ(TransliterateToAscii("3×4"), "3_4");        // × is no letter
+  EXPECT_EQ(TransliterateToAscii("\xce\xb7=0.9"), "_=0.9");     // Greek: no ASCII letter
+  EXPECT_EQ(TransliterateToAscii(std::string("a\xff" "b")), "a_b");  // no UTF-8
+  EXPECT_EQ(TransliterateToAscii("\xc3"), "_");                   // truncated sequence
+}
+
+// Issue 27, item 20: the names of the predefined types are no instance names.
+TEST(ModelicaIdentifiers, PredefinedTypeNamesAreReserved) {
+  for (const char* name : {"Real", "Integer", "Boolean", "String", "Clock", "StateSelect", "ExternalObject",
+                           "AssertionLevel", "Connections", "model", "end", "der", "initial"}) {
+    EXPECT_TRUE(IsModelicaReservedName(name)) << name;
+    EXPECT_FALSE(IsModelicaIdentifier(name)) << name;
+    EXPECT_EQ(SanitizeModelicaIdentifier(name), std::string(name) + "_") << name;
+    EXPECT_TRUE(IsModelicaIdentifier(SanitizeModelicaIdentifier(name))) << name;
+  }
+  for (const char* name : {"real", "Real_", "RealGear", "time", "Modelica"}) EXPECT_FALSE(IsModelicaReservedName(name)) << name;
+  ModelicaExportOptions options;
+  options.model_name = "Boolean";
+  EXPECT_THROW(options.Validate(), InputError);
 }
 
 TEST(ModelicaIdentifiers, MapResolvesCollisionsInInsertionOrder) {

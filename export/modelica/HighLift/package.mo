@@ -23,6 +23,8 @@ Library 4.0.0, so every component connects to
     actuation.</li>
 <li><a href=\"modelica://HighLift.Drives\">Drives</a>: the speed-controlled power drive
     unit.</li>
+<li><a href=\"modelica://HighLift.Sources\">Sources</a>: torque sources of later MSL versions,
+    written for MSL 4.0.0.</li>
 <li><a href=\"modelica://HighLift.Hydraulics\">Hydraulics</a>: pressure source and return,
     turbulent resistance, servo valve, differential cylinder, variable-displacement motor.</li>
 <li><a href=\"modelica://HighLift.Examples\">Examples</a>: small test models.</li>

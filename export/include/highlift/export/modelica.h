@@ -89,8 +89,12 @@ std::vector<GeneratedFile> HighLiftLibraryFiles();
 /// unknown element type, an unknown scenario, a parameter without a value, ...).
 ModelicaExportReport GenerateModelica(const Project& project, const ModelicaExportOptions& options);
 
-/// GenerateModelica, then writes every file below `output_dir` (created if needed). Files are
-/// written to a temporary name and renamed, so a failure never leaves half a file.
+/// GenerateModelica, then writes every file below `output_dir` (created if needed): all of them
+/// or none. File names the file system cannot hold are refused before anything is written
+/// (InputError naming --model-name); the files are written completely into a staging folder of
+/// `output_dir` and then renamed into place, and a failure on the way puts the old files back.
+/// HighLift/Models/package.order lists the models already in the folder and this one (so
+/// several exports share one folder); the report's copy of it is the merged one.
 ModelicaExportReport ExportModelica(const Project& project, const ModelicaExportOptions& options,
                                     const std::filesystem::path& output_dir);
 
@@ -100,12 +104,23 @@ ModelicaExportReport ExportModelica(const Project& project, const ModelicaExport
 /// of the grammar: algorithm, and, annotation, ..., within).
 bool IsModelicaKeyword(std::string_view name);
 
-/// True when `name` is a valid (non-quoted) Modelica identifier that is no keyword.
+/// True when `name` is a keyword or the name of a predefined type or built-in package of the
+/// language (Real, Integer, Boolean, String, Clock, StateSelect, ExternalObject, AssertionLevel,
+/// Connections): no instance or model may be named so.
+bool IsModelicaReservedName(std::string_view name);
+
+/// True when `name` is a valid (non-quoted) Modelica identifier that is no reserved name.
 bool IsModelicaIdentifier(std::string_view name);
 
-/// A valid Modelica identifier for `name`: characters outside [A-Za-z0-9_] become '_', a
-/// leading digit or an empty name gets the prefix "x_", a keyword gets the suffix "_".
-/// "shaft-l1" -> "shaft_l1", "1st" -> "x_1st", "end" -> "end_".
+/// UTF-8 text with the Latin letters that carry diacritics, and the ligatures, as their ASCII
+/// letters ("Ünïcödé" -> "Unicode", "ß" -> "ss", "Æ" -> "AE"); every other non-ASCII character
+/// (and every byte that is no UTF-8) becomes '_'.
+std::string TransliterateToAscii(std::string_view text);
+
+/// A valid Modelica identifier for `name`: transliterated (TransliterateToAscii), characters
+/// outside [A-Za-z0-9_] become '_', a leading digit or an empty name gets the prefix "x_", a
+/// reserved name (keyword, predefined type) gets the suffix "_".
+/// "shaft-l1" -> "shaft_l1", "1st" -> "x_1st", "end" -> "end_", "Real" -> "Real_", "étage" -> "etage".
 std::string SanitizeModelicaIdentifier(std::string_view name);
 
 /// Assigns unique sanitised identifiers to project names, in insertion order: the first name

@@ -16,7 +16,8 @@ model HydraulicMotorDrive "Valve-controlled variable-displacement motor driving 
     annotation (Placement(transformation(extent={{-10,0},{10,20}})));
   Modelica.Blocks.Sources.Constant swash(k=1)
     annotation (Placement(transformation(extent={{-50,40},{-30,60}})));
-  Modelica.Mechanics.Rotational.Components.Inertia rotor(J=0.01)
+  Modelica.Mechanics.Rotational.Components.Inertia rotor(J=0.01, phi(start=0, fixed=true),
+    w(start=0, fixed=true))
     annotation (Placement(transformation(extent={{30,0},{50,20}})));
   Modelica.Mechanics.Rotational.Sources.QuadraticSpeedDependentTorque load(tau_nominal=-10,
     w_nominal=400, TorqueDirection=false)

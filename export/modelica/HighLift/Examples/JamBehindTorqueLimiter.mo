@@ -17,6 +17,14 @@ model JamBehindTorqueLimiter "A station jams behind its torque limiter: the limi
   HighLift.Mechanical.Jam jam(c=1e5, d=10, t_jam=1)
     annotation (Placement(transformation(extent={{60,-10},{80,10}})));
 
+initial equation
+  // One start per degree of freedom (the drive's angle and speed start in Speed itself): the
+  // limiter's inertia and the actuator (input inertia and load, geared) at rest, untwisted.
+  limiter.flange_a.phi = 0;
+  der(limiter.flange_a.phi) = 0;
+  gra.flange_a.phi = 0;
+  der(gra.flange_a.phi) = 0;
+
 equation
   connect(speedCommand.y, drive.w_ref)
     annotation (Line(points={{-79,0},{-72,0}}, color={0,0,127}));

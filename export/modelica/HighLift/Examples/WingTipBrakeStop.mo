@@ -14,6 +14,11 @@ model WingTipBrakeStop "A back-driven transmission is stopped by the wing-tip br
   Modelica.Mechanics.Rotational.Sources.ConstantTorque airload(tau_constant=40)
     annotation (Placement(transformation(extent={{-100,-10},{-80,10}})));
 
+initial equation
+  // The brake rotor turns with the transmission, the shaft untwisted.
+  wtb.flange_a.phi = 0;
+  der(wtb.flange_a.phi) = 30;
+
 equation
   connect(airload.flange, transmission.flange_a)
     annotation (Line(points={{-80,0},{-60,0}}));
