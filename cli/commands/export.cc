@@ -11,6 +11,7 @@
 
 #include "command.h"
 #include "highlift/core/error.h"
+#include "highlift/core/output_file.h"
 #include "highlift/core/project_io.h"
 #include "highlift/core/validate.h"
 #include "highlift/export/modelica.h"
@@ -63,7 +64,14 @@ class ExportCommand : public Command {
       options_.start = [&project](const model::DriveModel& model) {
         return sim::ComputeStartValues(model.network, sim::DriveModel{model}.Options(project));
       };
-    const ModelicaExportReport report = ExportModelica(project, options_, output_dir_);
+    ModelicaExportReport report;
+    try {
+      report = ExportModelica(project, options_, output_dir_);
+    } catch (const InputError& e) {
+      if (!InterruptRequested()) throw;
+      std::cerr << "highlift export: " << e.what() << "\n";  // the folder is as it was
+      return kInterruptedExit;
+    }
     if (common_.json) {
       nlohmann::json files = nlohmann::json::array();
       for (const auto& f : report.files) files.push_back(f.path);

@@ -5,12 +5,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cerrno>
-#include <climits>
-#include <cstdio>
-#include <cstring>
 #include <fstream>
-#include <set>
-#include <sstream>
 
 #include "highlift/core/error.h"
 #include "highlift/core/output_file.h"
@@ -195,14 +190,24 @@ void WriteFilesAllOrNothing(const std::vector<GeneratedFile>& files, const fs::p
   //    all are in place. A failure puts the old files back and removes the new ones.
   static std::atomic<unsigned> counter{0};
   const fs::path staging = root / (".highlift-export-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
+  // SIGINT/SIGTERM: the handler only sets a flag while the scope is active; the loops poll it
+  // and undo what was done.
+  InterruptibleScope interruptible;
+  auto stop_if_interrupted = [] {
+    if (InterruptRequested())
+      throw InputError("interrupted by a signal while writing: nothing was written, the output folder is as it was");
+  };
   FolderTransaction transaction;
   try {
     transaction.CreateFolders(staging / "new");
     transaction.CreateFolders(staging / "old");
-    for (std::size_t i = 0; i < files.size(); ++i)
+    for (std::size_t i = 0; i < files.size(); ++i) {
+      stop_if_interrupted();
       WriteOutputFile(staging / "new" / std::to_string(i), files[i].content,
                       "Modelica file '" + files[i].path + "'");
+    }
     for (std::size_t i = 0; i < files.size(); ++i) {
+      stop_if_interrupted();
       const fs::path target = root / files[i].path;
       transaction.CreateFolders(target.parent_path());
       transaction.Place(staging / "new" / std::to_string(i), target, staging / "old" / std::to_string(i));

@@ -13,6 +13,7 @@
 
 #include "export_test_util.h"
 #include "highlift/core/error.h"
+#include "highlift/core/output_file.h"
 #include "highlift/sim/drive_network.h"
 #include "highlift/sim/simulator.h"
 
@@ -180,6 +181,31 @@ TEST(ExportFolder, AFailedWriteLeavesTheFolderAsItWas) {
     EXPECT_EQ(after[i].path, before[i].path);
     EXPECT_EQ(after[i].content, before[i].content) << after[i].path;
   }
+  fs::remove_all(dir);
+}
+
+// A signal during the writing (here requested before it starts, as the CLI's handler does while
+// the export polls): the files written so far are undone, the folder is as it was.
+TEST(ExportFolder, AnInterruptionLeavesTheFolderAsItWas) {
+  const fs::path dir = TempDir("interrupt");
+  const Project project = LoadProject(ExportTestDir() / "small_drive.json");
+  ModelicaExportOptions options;
+  options.model_name = "Before";
+  ExportModelica(project, options, dir);
+  const auto before = FolderFiles(dir);
+  options.model_name = "After";
+  RequestInterrupt(SIGINT);
+  std::string message;
+  try {
+    ExportModelica(project, options, dir);
+  } catch (const InputError& e) {
+    message = e.what();
+  }
+  ClearInterrupt();
+  EXPECT_NE(message.find("interrupted by a signal while writing: nothing was written"), std::string::npos) << message;
+  const auto after = FolderFiles(dir);
+  ASSERT_EQ(after.size(), before.size());
+  for (std::size_t i = 0; i < after.size(); ++i) EXPECT_EQ(after[i].content, before[i].content) << after[i].path;
   fs::remove_all(dir);
 }
 
