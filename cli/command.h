@@ -21,6 +21,7 @@
 #include <nlohmann/json.hpp>
 
 #include "highlift/core/error.h"
+#include "highlift/core/message_number.h"
 
 namespace highlift::cli {
 
@@ -32,11 +33,7 @@ using highlift::CleanText;  // core/error.h: control characters escaped, long li
 /// readable message ("--wide: 'nan' is not a finite number; give a number > 0"). Unlike
 /// CLI::PositiveNumber it never prints DBL_MAX.
 inline CLI::Validator NumberIn(double lo, double hi, bool lo_open = false) {
-  auto show = [](double v) {
-    std::ostringstream s;
-    s << v;
-    return s.str();
-  };
+  auto show = [](double v) { return FormatMessageNumber(v); };
   std::string range;
   if (std::isfinite(lo) && std::isfinite(hi)) range = "a number from " + show(lo) + " to " + show(hi);
   else if (std::isfinite(lo)) range = std::string("a number ") + (lo_open ? "> " : ">= ") + show(lo);

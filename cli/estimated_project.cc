@@ -4,12 +4,13 @@
 
 #include "highlift/componentdb/database.h"
 #include "highlift/core/project_io.h"
+#include "highlift/core/validate.h"
 #include "highlift/estimation/estimator.h"
 
 namespace highlift::cli {
 
 EstimatedProject LoadEstimatedProject(const CommonOptions& options, bool estimate) {
-  EstimatedProject out{LoadProject(options.project), "", 0};
+  EstimatedProject out{LoadValidProject(options.project), "", 0};
   if (!estimate) return out;
   componentdb::ComponentDatabase database = OpenEstimationDatabase(options.db);
   const estimation::EstimationReport report = estimation::EstimateProject(out.project, &database, {});

@@ -16,6 +16,7 @@
 #include <signal.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstring>
 #include <filesystem>
 #include <iostream>
@@ -26,6 +27,7 @@
 #include <nlohmann/json.hpp>
 
 #include "command.h"
+#include "highlift/core/catalogue.h"
 #include "highlift/core/error.h"
 #include "highlift/core/output_file.h"
 
@@ -75,8 +77,24 @@ class GuardedBuffer : public std::streambuf {
       if (cut_ > 0) Emit(" [... " + std::to_string(cut_) + " more bytes]");
       Emit("\n");
       line_ = cut_ = 0;
+      continuation_ = 0;
       return;
     }
+    // The continuation bytes of a UTF-8 character whose first byte was written are written too:
+    // a line is never cut inside a character (CleanText made the text UTF-8).
+    const auto byte = static_cast<unsigned char>(c);
+    if (continuation_ > 0 && (byte & 0xC0) == 0x80) {
+      --continuation_;
+      if (cut_ == 0) {
+        next_->sputc(c);
+        if (keep_lines_) current_ += c;
+        ++line_;
+      } else {
+        ++cut_;
+      }
+      return;
+    }
+    continuation_ = byte >= 0xF0 ? 3 : byte >= 0xE0 ? 2 : byte >= 0xC0 ? 1 : 0;
     if (line_ >= max_line_) {
       ++cut_;
       return;
@@ -108,6 +126,7 @@ class GuardedBuffer : public std::streambuf {
   bool keep_lines_;
   std::size_t max_line_;
   std::size_t count_ = 0, line_ = 0, cut_ = 0;
+  int continuation_ = 0;  // continuation bytes still to come of the UTF-8 character being written
   std::string current_;
   std::vector<std::string> lines_;
 };
@@ -141,6 +160,10 @@ extern "C" void OnSignal(int signal) {
 }
 
 void InstallSignalHandlers() {
+  // A file-size limit (ulimit -f) is a failed write like a full disk: write() then fails with
+  // EFBIG, OutputFile names the file and removes its temporary, and the command exits 2. The
+  // default action of SIGXFSZ would kill the process with a core dump and leave the temporary.
+  ::signal(SIGXFSZ, SIG_IGN);
   struct sigaction action;
   std::memset(&action, 0, sizeof action);
   action.sa_handler = OnSignal;
@@ -250,6 +273,23 @@ int main(int argc, char** argv) {
     command->Setup(*sub);
     RejectNonFiniteNumbers(*sub);
     commands.emplace(sub, std::move(command));
+  }
+
+  // An unknown command: CLI11 would say only "A subcommand is required" (it takes the word for the
+  // project of no command). Name the word and the closest command.
+  if (argc >= 2 && argv[1][0] != '-') {
+    std::vector<std::string> names;
+    for (const auto& entry : Commands()) names.push_back(entry.name);
+    const std::string word = argv[1];
+    if (std::find(names.begin(), names.end(), word) == names.end()) {
+      const std::string message = "unknown command '" + word + "'" + highlift::SuggestionHint(word, names, "the commands are") +
+                                  "; run `highlift --help` for what each does";
+      std::cerr << "highlift: error: " << CleanText(message) << "\n";
+      bool json = false;
+      for (int i = 1; i < argc; ++i) json = json || std::string(argv[i]) == "--json";
+      if (json) std::cout << OutcomeDocument("", kInvalidInput, message, {}, err.lines());
+      return restore(kInvalidInput);
+    }
   }
 
   try {

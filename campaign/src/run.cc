@@ -10,6 +10,7 @@
 
 #include "highlift/campaign/campaign.h"
 #include "highlift/core/error.h"
+#include "highlift/core/message_number.h"
 #include "highlift/model/component_model.h"
 #include "highlift/reduced_models/analyses.h"
 #include "highlift/sim/simulator.h"
@@ -124,7 +125,7 @@ RunResult ExecuteRun(const Project& project, const Plan& plan, int run) {
     if (!simulation.report.ok()) {
       const sim::SimulationReport& report = simulation.report;
       r.ok = false;
-      r.message = ToString(report.status) + " at t = " + std::to_string(report.time) + " s: " + report.message;
+      r.message = ToString(report.status) + " at t = " + FormatMessageNumber(report.time) + " s: " + report.message;
       return r;
     }
     r.components = std::move(simulation.components);

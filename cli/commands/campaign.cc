@@ -15,6 +15,7 @@
 #include "highlift/campaign/campaign.h"
 #include "highlift/core/error.h"
 #include "highlift/core/project_io.h"
+#include "highlift/core/validate.h"
 
 namespace highlift::cli {
 namespace {
@@ -88,7 +89,7 @@ class CampaignCommand : public Command {
     run.jobs = jobs_;
     if (!sampling_.empty()) options_.sampling = campaign::ParseSamplingMethod(sampling_);
     if (!model_.empty()) options_.model = sim::ParseDriveResolution(model_);
-    const Project project = LoadProject(project_);
+    const Project project = LoadValidProject(project_);
     const campaign::Plan plan = campaign::MakePlan(project, options_);
     run.directory = out_.empty() ? std::filesystem::path(project_).stem().concat(".campaign") : std::filesystem::path(out_);
     run.progress = &std::cerr;

@@ -38,7 +38,7 @@ class CheckCommand : public Command {
                  "Use the project's own domains only: no database, fit or physics estimates");
     app.add_flag("--all", all_, "also print every parameter: initial and final domain, narrowing, provenance");
     app.add_option("--ratio", ratio_, "stop re-revising when no domain shrinks by more than this fraction (0: exact fixed point)")
-        ->check(CLI::Range(0.0, 0.999));
+        ->check(NumberIn(0.0, 0.999));
     app.add_option("--max-revisions", max_revisions_,
                    "stop propagating after this many constraint revisions (the result then proves nothing)")
         ->check(Positive());

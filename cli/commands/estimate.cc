@@ -8,6 +8,7 @@
 #include "highlift/componentdb/database.h"
 #include "highlift/core/error.h"
 #include "highlift/core/project_io.h"
+#include "highlift/core/validate.h"
 #include "highlift/estimation/estimator.h"
 
 namespace highlift::cli {
@@ -27,7 +28,7 @@ class EstimateCommand : public Command {
 
   int Run() override {
     options_.Validate();
-    Project project = LoadProject(common_.project);
+    Project project = LoadValidProject(common_.project);
     std::optional<componentdb::ComponentDatabase> database;
     if (!no_db_) database.emplace(OpenEstimationDatabase(common_.db));
     const auto report = estimation::EstimateProject(project, database ? &*database : nullptr, options_);

@@ -7,6 +7,7 @@
 #include "command.h"
 #include "highlift/core/error.h"
 #include "highlift/core/project_io.h"
+#include "highlift/core/validate.h"
 #include "highlift/reduced_models/analyses.h"
 
 namespace highlift::cli {
@@ -27,7 +28,7 @@ class ModesCommand : public Command {
     app.add_option("--modes", modes_.modes, "eigenfrequencies reported per model")->check(Positive());
   }
   int Run() override {
-    const Project project = LoadProject(options_.project);
+    const Project project = LoadValidProject(options_.project);
     const int elements = modes_.elements_per_segment > 0 ? modes_.elements_per_segment : project.settings.shaft_elements;
     if (elements > kMaxModeElements)
       throw InputError(std::to_string(elements) + " sub-elements per shaft segment" +

@@ -15,6 +15,7 @@
 #include "highlift/campaign/campaign.h"
 #include "highlift/core/error.h"
 #include "highlift/core/project_io.h"
+#include "highlift/core/validate.h"
 #include "highlift/core/text_table.h"
 #include "highlift/model/component_model.h"
 #include "highlift/reduced_models/analyses.h"
@@ -68,7 +69,7 @@ class PeakCommand : public Command {
     app.add_option("--tightness", tightness_,
                    "points of the domains sampled to measure how tight each enclosure is (width over the hull of "
                    "the sampled values, in the JSON); default 32 with --json, else 0")
-        ->check(CLI::Range(0, 100000));
+        ->check(NumberIn(0, 100000));
     app.add_flag("--transient", transient_,
                  "also simulate each case at full resolution and print the transient peak shaft torque "
                  "beside the single-DOF estimate");
@@ -78,7 +79,7 @@ class PeakCommand : public Command {
         ->check(NumberIn(1, 1000));
   }
   int Run() override {
-    const Project project = LoadProject(options_.project);
+    const Project project = LoadValidProject(options_.project);
     if (elements_ != 0 && !transient_)
       throw InputError("--elements sets the resolution of the transient simulations: give --transient as well");
     if (elements_ < 0)

@@ -16,6 +16,7 @@
 #include "estimated_project.h"
 #include "highlift/core/error.h"
 #include "highlift/core/project_io.h"
+#include "highlift/core/validate.h"
 #include "highlift/core/text_table.h"
 #include "highlift/report/report.h"
 
@@ -35,13 +36,13 @@ class ReportCommand : public Command {
     app.add_flag("--no-scenarios", no_scenarios_, "skip the simulation of the project's scenarios (no time histories)");
     app.add_option("--elements", report_.shaft_elements,
                    "spring-dampers per torque shaft in the simulations (default: the project's shaft_elements, at least 4)")
-        ->check(CLI::PositiveNumber);
+        ->check(NumberIn(1, 1000));
     app.add_option("--threads", report_.threads, "simulations run side by side (default: all hardware threads)")
-        ->check(CLI::PositiveNumber);
+        ->check(NumberIn(1, 4096));
   }
 
   int Run() override {
-    const Project project = LoadProject(options_.project);
+    const Project project = LoadValidProject(options_.project);
     const EstimatedProject estimated = LoadEstimatedProject(options_, true);
     report_.transient = !no_transient_;
     report_.scenarios = !no_scenarios_;

@@ -22,6 +22,7 @@
 #include "highlift/core/error.h"
 #include "highlift/core/output_file.h"
 #include "highlift/core/project_io.h"
+#include "highlift/core/validate.h"
 #include "highlift/core/text_table.h"
 #include "highlift/sim/drive_network.h"
 #include "highlift/sim/simulator.h"
@@ -110,7 +111,11 @@ class SimulateCommand : public Command {
   }
 
   int Run() override {
-    const Project project = LoadProject(options_.project);
+    // stdout holds one JSON document with --json (docs/cli.md): the CSV cannot go there as well.
+    if (options_.json && out_ == "-")
+      throw InputError("--out - writes the CSV to stdout, where --json writes its document; give the CSV a file "
+                       "(--out results.csv) or leave out --json");
+    const Project project = LoadValidProject(options_.project);
     const bool drive = sim::IsDriveSystemProject(project);
     if (!drive && (!model_.empty() || elements_ >= 0))
       throw InputError("--model and --elements apply to drive-system projects (components and connections); "

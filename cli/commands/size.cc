@@ -6,6 +6,7 @@
 
 #include "command.h"
 #include "highlift/core/project_io.h"
+#include "highlift/core/validate.h"
 #include "highlift/reduced_models/sizing.h"
 
 namespace highlift::cli {
@@ -19,10 +20,10 @@ class SizeCommand : public Command {
     app.add_option("--tightness", tightness_,
                    "points of the domains sampled to measure how tight each enclosure is (width over the hull of "
                    "the sampled values, in the JSON); default 32 with --json, else 0")
-        ->check(CLI::Range(0, 100000));
+        ->check(NumberIn(0, 100000));
   }
   int Run() override {
-    const Project project = LoadProject(options_.project);
+    const Project project = LoadValidProject(options_.project);
     reduced_models::SizingOptions options;
     options.intervals = !no_intervals_;
     options.tightness_samples = tightness_ >= 0 ? tightness_ : (options_.json ? kDefaultTightnessSamples : 0);

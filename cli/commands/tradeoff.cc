@@ -62,6 +62,10 @@ class TradeoffCommand : public Command {
     if (!(lo < hi) || !(count >= 1 && count <= 1000) || count != std::floor(count)) {
       throw InputError("--vary '" + vary_ + "': need LO < HI and a whole N from 1 to 1000");
     }
+    // HI - LO must be a finite number: the slices are LO + k (HI - LO) / N (1e308 - -1e308 is inf).
+    if (!std::isfinite(hi - lo))
+      throw InputError("--vary '" + vary_ + "': the width HI - LO = " + FormatMessageNumber(hi - lo) +
+                       " is beyond the largest number; give LO and HI whose difference is finite (e.g. within -1e300 to 1e300)");
     const int n = static_cast<int>(count);
     const EstimatedProject loaded = LoadEstimatedProject(options_, !no_estimate_);
     const Project& project = loaded.project;
@@ -74,6 +78,11 @@ class TradeoffCommand : public Command {
     // Display unit -> SI (with the unit's offset, e.g. degC).
     UnitConversion to_si;
     if (!unit.empty() && unit != "1") to_si = ParseUnit(unit);
+    for (const double x : {lo, hi})
+      if (!std::isfinite(to_si.scale * x + to_si.offset))
+        throw InputError("--vary '" + vary_ + "': " + FormatMessageNumber(x) + " " + unit + " is beyond the largest number in SI units (" +
+                         FormatMessageNumber(to_si.scale * x + to_si.offset) + "); give LO and HI within +-" +
+                         FormatMessageNumber(1e300 / std::abs(to_si.scale)) + " " + unit);
     icsp::Propagator prop(net, {});
     std::vector<std::string> header{name + (unit.empty() ? "" : " [" + unit + "]")};
     for (const auto& v : shown) {

@@ -56,6 +56,7 @@ constexpr const char* kQuantityColumns = "name, value, lo, hi, unit, value_si, l
 
 std::vector<Part> ReadParts(sqlite::Connection& c, const std::string& where, const std::vector<std::string>& binds) {
   std::vector<Part> parts;
+  sqlite::ReadSnapshot snapshot(c);  // the parts and their parameters from one state of the file
   {
     sqlite::Statement s(c, "SELECT id, type, designation, program, supplier, note FROM parts " + where +
                                " ORDER BY type, designation");
@@ -85,6 +86,7 @@ std::vector<Part> ReadParts(sqlite::Connection& c, const std::string& where, con
 std::vector<Material> ReadMaterials(sqlite::Connection& c, const std::string& where, const std::vector<std::string>& binds) {
   std::vector<Material> materials;
   std::vector<std::int64_t> ids;
+  sqlite::ReadSnapshot snapshot(c);  // the materials and their properties from one state of the file
   sqlite::Statement s(c, "SELECT id, name, note FROM materials " + where + " ORDER BY name");
   for (std::size_t i = 0; i < binds.size(); ++i) s.Bind(static_cast<int>(i + 1), binds[i]);
   while (s.Step()) {
@@ -146,8 +148,7 @@ ComponentDatabase ComponentDatabase::Open(const std::filesystem::path& file, Mod
       Migrate(c, kSchemaVersion);
     }
   } catch (const sqlite::Error& e) {
-    throw InputError("cannot open component database '" + file.string() + "': " + e.what() +
-                     "; check the path and that it is a highlift database");
+    throw InputError(std::string("cannot open the component database ") + e.what());  // 'file': reason; remedy
   }
   return ComponentDatabase(std::move(impl), file);
 }
@@ -164,6 +165,7 @@ std::string ComponentDatabase::journal_mode() const {
 
 Counts ComponentDatabase::CountRows() const {
   auto& c = impl_->connection;
+  sqlite::ReadSnapshot snapshot(c);
   Counts n;
   n.parts = c.QueryInteger("SELECT count(*) FROM parts");
   n.part_parameters = c.QueryInteger("SELECT count(*) FROM part_parameters");
@@ -206,6 +208,7 @@ std::vector<Part> ComponentDatabase::Find(const PartQuery& query) const {
     index += 3;
   }
   sql += " ORDER BY designation";
+  sqlite::ReadSnapshot snapshot(c);  // the designations and then each part from one state of the file
   sqlite::Statement s(c, sql);
   index = 1;
   if (!query.type.empty()) s.Bind(index++, query.type);
@@ -310,7 +313,7 @@ ImportReport ComponentDatabase::Import(Records records, const ImportOptions& opt
         .Run();
     transaction.Commit();
   } catch (const sqlite::Error& e) {
-    throw InputError(std::string("import into '") + file_.string() + "' failed and was rolled back, nothing was written: " + e.what());
+    throw InputError(std::string("the import failed and was rolled back, nothing was written into ") + e.what());
   }
   return report;
 }

@@ -15,6 +15,7 @@
 #include "highlift/core/output_file.h"
 #include "highlift/core/text_table.h"
 #include "highlift/core/units.h"
+#include "highlift/core/message_number.h"
 #include "highlift/core/utf8.h"
 
 namespace highlift::componentdb {
@@ -121,8 +122,8 @@ void ValidateQuantity(Quantity& q, const Dimension& dimension, const std::string
       (!std::isinf(q.domain_si.lo) && outside(q.domain_si.lo)) ||
       (!std::isinf(q.domain_si.hi) && outside(q.domain_si.hi)))
     throw InputError(prefix + ": " + (q.value ? FormatShortest(*q.value) : "[" + FormatShortest(*q.lo) + ", " + FormatShortest(*q.hi) + "]") +
-                     " " + q.unit + " is outside its valid range [" + FormatNumber(valid_range.lo) + ", " +
-                     FormatNumber(valid_range.hi) + "] (SI)");
+                     " " + q.unit + " is outside its valid range [" + FormatMessageNumber(valid_range.lo) + ", " +
+                     FormatMessageNumber(valid_range.hi) + "] (SI)");
   if (q.source.empty())
     throw InputError(prefix + ": no source; say where the number comes from or how it was derived");
 }

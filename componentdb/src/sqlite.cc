@@ -5,11 +5,49 @@
 namespace highlift::componentdb::sqlite {
 namespace {
 
+/// What an SQLite result code means for the user of a database file, as a sentence with the
+/// remedy. SQLite's own texts ("database is locked", "file is not a database") are left out: the
+/// result code closes the message for a bug report.
+std::string Sentence(sqlite3* db, int rc) {
+  switch (rc & 0xff) {
+    case SQLITE_BUSY:
+    case SQLITE_LOCKED:
+      return "another process holds the file locked (for more than 5 s); try again when it has finished";
+    case SQLITE_READONLY:
+      return "the file or its folder is read-only; check the permissions, or give a writable file";
+    case SQLITE_CANTOPEN:
+      return "the file cannot be opened; check that the path and its folder exist and are readable (and writable to "
+             "create or change it)";
+    case SQLITE_NOTADB:
+      return "the file is not an SQLite database (nor a highlift database); give the right file";
+    case SQLITE_CORRUPT:
+      return "the file is damaged; restore it from a copy (or remove a component database to re-create the shipped "
+             "one)";
+    case SQLITE_FULL:
+      return "the disk is full; free some disk space";
+    case SQLITE_IOERR:
+      return "reading or writing the file failed (an input/output error of the disk or file system)";
+    case SQLITE_PERM:
+    case SQLITE_AUTH:
+      return "permission denied; check the permissions of the file and its folder";
+    case SQLITE_NOMEM:
+      return "out of memory";
+    case SQLITE_CONSTRAINT: {
+      // "UNIQUE constraint failed: parts.designation" -> which column repeats
+      const std::string text = db ? sqlite3_errmsg(db) : "";
+      const auto colon = text.find(": ");
+      if ((rc == SQLITE_CONSTRAINT_UNIQUE || rc == SQLITE_CONSTRAINT_PRIMARYKEY) && colon != std::string::npos)
+        return "a row repeats a value that must be unique (" + text.substr(colon + 2) + ")";
+      return "a row breaks a rule of the file's tables";
+    }
+    default:
+      return std::string("the SQLite library failed: ") + (db ? sqlite3_errmsg(db) : sqlite3_errstr(rc));
+  }
+}
+
 std::string Message(sqlite3* db, int rc, std::string_view what, const std::string& file) {
-  std::string m = "SQLite error in " + std::string(what) + " on '" + file + "': ";
-  m += db ? sqlite3_errmsg(db) : sqlite3_errstr(rc);
-  m += " (" + std::string(sqlite3_errstr(rc)) + ")";
-  return m;
+  return "'" + file + "': " + Sentence(db, rc) + " (SQLite result code " + std::to_string(rc) + " in " +
+         std::string(what.substr(0, 40)) + ")";
 }
 
 }  // namespace
@@ -154,6 +192,18 @@ Transaction::~Transaction() {
 void Transaction::Commit() {
   connection_.Execute("COMMIT");
   done_ = true;
+}
+
+ReadSnapshot::ReadSnapshot(Connection& connection) : connection_(connection) {
+  if (sqlite3_get_autocommit(connection_.handle()) == 0) return;  // a transaction is open already
+  connection_.Execute("BEGIN");
+  began_ = true;
+}
+
+ReadSnapshot::~ReadSnapshot() {
+  // Only reads happened: COMMIT ends the read transaction (a failure leaves nothing to undo).
+  if (began_ && sqlite3_exec(connection_.handle(), "COMMIT", nullptr, nullptr, nullptr) != SQLITE_OK)
+    sqlite3_exec(connection_.handle(), "ROLLBACK", nullptr, nullptr, nullptr);
 }
 
 }  // namespace highlift::componentdb::sqlite

@@ -137,7 +137,7 @@ class Parser {
     if (Literal("null")) return nullptr;
     if (AtEnd()) Fail("unexpected end of file; expected a value");
     if (ch == '\'') Fail("strings are written in double quotes (\"...\"), not single quotes");
-    Fail("unexpected character " + Shown(ch) + "; expected a value (object, array, string, number, true, false or null)");
+    Fail("found " + Shown(ch) + " where a value must start; expected a value (object, array, string, number, true, false or null)");
   }
 
   bool Literal(std::string_view word) {

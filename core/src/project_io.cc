@@ -15,6 +15,7 @@
 
 #include "highlift/core/graph.h"
 #include "highlift/core/text_table.h"
+#include "highlift/core/message_number.h"
 #include "json_reader.h"
 
 namespace highlift {
@@ -54,6 +55,9 @@ struct QuantityError {
   std::string message;
   bool at_key = false;
 };
+
+// The smallest magnitude of a parameter value in SI units other than 0 (see ReadParameter).
+constexpr double kSmallestMagnitude = 1e-300;
 
 // Reads a leading number (with optional sign; "inf" only when allowed) from `s`, advancing it.
 std::optional<double> TakeNumber(std::string_view& s, bool allow_infinite) {
@@ -141,9 +145,9 @@ std::string FormatValue(double si, const std::string& unit, const Dimension& dim
   try {
     v = FromSI(si, u, dimension);
   } catch (const InputError&) {
-    return FormatNumber(si, 6);
+    return FormatMessageNumber(si);
   }
-  return FormatNumber(v, 6);
+  return FormatMessageNumber(v);
 }
 
 std::string UnitSuffix(const std::string& unit) { return (unit.empty() || unit == "1") ? "" : " " + unit; }
@@ -532,14 +536,25 @@ class Reader {
     return c;
   }
 
+  // Ids and the names of load cases and scenarios are names of the constraint language: `check`,
+  // `tradeoff`, the report and requirements name quantities after them (shaft_1.polar_moment,
+  // torque.<load case>.<component>, peak.<case>.inertia), so a '-', a space, a bracket or a
+  // non-ASCII letter would be read as an operator or refused there (docs/project.schema.json:
+  // "identifier").
+  static bool IsIdentifier(const std::string& name) {
+    const auto letter = [](char ch) { return (ch >= 'a' && ch <= 'z') || (ch >= 'A' && ch <= 'Z') || ch == '_'; };
+    return !name.empty() && letter(name[0]) &&
+           std::all_of(name.begin(), name.end(), [&](char ch) { return letter(ch) || (ch >= '0' && ch <= '9'); });
+  }
+  void CheckName(const Node& n, const std::string& name, const std::string& what) const {
+    if (IsIdentifier(name)) return;
+    Fail(n, what + " '" + name + "' is not valid: use ASCII letters, digits and '_', starting with a letter or '_' "
+                  "(requirements, `check` and `tradeoff` name quantities after it, as in torque.<load case>.<component>, "
+                  "where '-', spaces, brackets and '.' are operators or separators)");
+  }
+
   void CheckId(const Node& n, const std::string& id, const std::string& kind) {
-    const bool valid = !id.empty() && (std::isalpha(static_cast<unsigned char>(id[0])) || id[0] == '_') &&
-                       std::all_of(id.begin(), id.end(), [](char ch) {
-                         return std::isalnum(static_cast<unsigned char>(ch)) || ch == '_' || ch == '-';
-                       });
-    if (!valid)
-      Fail(n, kind + " id '" + id + "' is not valid; use letters, digits, '_' and '-', starting with a letter or '_' "
-                     "(a '.' separates id and port in connections)");
+    CheckName(n, id, kind + " id");
     const SourceLocation here = Where(n);
     auto [it, inserted] = ids_.emplace(id, std::make_pair(here, kind));
     if (!inserted)
@@ -598,6 +613,16 @@ class Reader {
       FailQuantity(item, e, what + ": ");
     }
     p.where = Where(item);
+    // Values this close to zero are subnormal floating-point numbers (below 2.2e-308) or next to
+    // them: they carry no physical meaning in a drive system (5e-324 kg*m^2, 1e-320 N*m) and lose
+    // their precision in the analyses (the interval bounds of `check` and `size` round them to 0,
+    // a mode analysis divides by their square root). 0 itself stays valid where the range has it.
+    for (const double si : {p.nominal.value_or(0.0), p.domain.lo, p.domain.hi})
+      if (si != 0.0 && std::abs(si) < kSmallestMagnitude)
+        Fail(item, what + " = " + FormatValue(si, ps.unit, ps.dimension) + UnitSuffix(ps.unit) +
+                       " is closer to zero than any physical value (" + FormatMessageNumber(kSmallestMagnitude) +
+                       " in SI units); give 0 or a value of at least " +
+                       FormatValue(kSmallestMagnitude, ps.unit, ps.dimension) + UnitSuffix(ps.unit));
     if (p.nominal && !ps.valid_range.contains(*p.nominal))
       Fail(item, what + " = " + FormatValue(*p.nominal, ps.unit, ps.dimension) + UnitSuffix(ps.unit) +
                      " is outside its valid range " + FormatDomain(ps.valid_range, ps.unit, ps.dimension) +
@@ -765,6 +790,7 @@ class Reader {
       Require(item, "name", anonymous);
       LoadCase lc;
       lc.name = String(item["name"], anonymous + ": 'name'");
+      CheckName(item["name"], lc.name, "load case name");
       const std::string what = "load case '" + lc.name + "'";
       CheckKeys(item, {"name", "description", "direction", "pdu_speed", "actuator_loads", "values"}, what);
       if (item.has("description")) lc.description = String(item["description"], what + ": 'description'");
@@ -814,6 +840,7 @@ class Reader {
       Require(item, "name", anonymous);
       Scenario s;
       s.name = String(item["name"], anonymous + ": 'name'");
+      CheckName(item["name"], s.name, "scenario name");
       const std::string what = "scenario '" + s.name + "'";
       CheckKeys(item, {"name", "kind", "description", "load_case", "stop_time", "output_interval", kJamKind, "rupture", "wtb",
                        "values"},
@@ -959,6 +986,47 @@ json TableToJson(const Table& t) {
 
 // ---------------------------------------------------------------------------------------------
 
+namespace {
+
+/// The text of a project file, read in blocks. Reading stops at the first byte that cannot
+/// start a JSON document (`validate /dev/zero` stops at its first NUL: the parser then names it
+/// at line 1, column 1), and a file that is not a regular file (a device, a FIFO) is read up to
+/// kMaxStreamBytes: its size is not known beforehand and it may never end.
+std::string ReadProjectText(std::istream& in, const std::filesystem::path& file, const SourceLocation& where) {
+  constexpr std::size_t kBlock = 1 << 16;
+  constexpr std::size_t kMaxStreamBytes = std::size_t{256} << 20;  // 256 MiB
+  std::error_code ec;
+  const bool regular = std::filesystem::is_regular_file(file, ec);
+  std::string text;
+  bool started = false;  // the first byte other than white space was seen and can start JSON
+  char block[kBlock];
+  while (in.read(block, kBlock) || in.gcount() > 0) {
+    const auto got = static_cast<std::size_t>(in.gcount());
+    if (!started) {
+      for (std::size_t i = 0; i < got; ++i) {
+        const char c = block[i];
+        if (c == ' ' || c == '\t' || c == '\n' || c == '\r') continue;
+        // A value's first byte, or the first byte of a UTF-8 byte-order mark (the parser names it).
+        if (std::string_view("{[\"-0123456789tfn\xEF").find(c) == std::string_view::npos) {
+          text.append(block, i + 1);
+          return text;  // the parser reports the byte at its line and column
+        }
+        started = true;
+        break;
+      }
+    }
+    text.append(block, got);
+    if (!regular && text.size() > kMaxStreamBytes)
+      throw InputError("the project file is not a regular file and gives more than " +
+                           std::to_string(kMaxStreamBytes >> 20) +
+                           " MiB without ending; give a project file (a regular file)",
+                       where);
+  }
+  return text;
+}
+
+}  // namespace
+
 Project ParseProject(const std::string& text, const std::string& file_name) {
   const detail::LocatedJson doc = detail::ParseLocatedJson(text, file_name);
   Reader reader(doc, file_name);
@@ -982,9 +1050,7 @@ Project LoadProject(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
   if (!in) throw InputError("cannot open the project file; check the path", where);
   RegisterInputFile(file);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return ParseProject(text.str(), file.string());
+  return ParseProject(ReadProjectText(in, file, where), file.string());
 }
 
 Parameter ParseQuantity(const nlohmann::json& value, const Dimension& expected, const SourceLocation& where) {

@@ -1,5 +1,7 @@
 #include "highlift/core/text_table.h"
 
+#include "highlift/core/message_number.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -65,6 +67,25 @@ std::string FormatNumber(double value, int significant) {
     if (std::string(buf).find('e') != std::string::npos) std::snprintf(buf, sizeof buf, "%.0f", value);
   }
   return buf;
+}
+
+std::string FormatMessageNumber(double value, int significant) {
+  if (std::isnan(value)) return "nan";
+  if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
+  if (value == 0.0) return "0";
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*g", std::clamp(significant, 1, 17), value);
+  std::string text = buf;
+  // "1e+308" -> "1e308", "1e-06" -> "1e-6"
+  const auto e = text.find('e');
+  if (e != std::string::npos) {
+    std::string exponent = text.substr(e + 1);
+    const bool negative = exponent[0] == '-';
+    exponent.erase(0, exponent.find_first_not_of("+-"));
+    exponent.erase(0, std::min(exponent.find_first_not_of('0'), exponent.size() - 1));
+    text = text.substr(0, e) + "e" + (negative ? "-" : "") + exponent;
+  }
+  return text;
 }
 
 }  // namespace highlift

@@ -270,9 +270,58 @@ std::string Trim(std::string_view s) {
   return std::string(s.substr(b, e - b + 1));
 }
 
+// UDUNITS-2 reads an exponent into an int without an overflow check: "m^4294967297" is m^1.
+// Every exponent written in the unit text (after '^' or '**', or right after a unit symbol as
+// in "m2" or "s-1") of 1000 or more is therefore refused here, before UDUNITS-2 sees it. Digits that belong to
+// a number ("1e3", "0.5") are not exponents.
+void CheckWrittenExponents(const std::string& unit) {
+  const auto is_digit = [](char c) { return c >= '0' && c <= '9'; };
+  const auto is_letter = [](char c) {
+    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_' || (static_cast<unsigned char>(c) >= 0x80);
+  };
+  std::size_t i = 0;
+  bool in_number = false;  // inside a numeric literal (digits, '.', an 'e' exponent)
+  while (i < unit.size()) {
+    const char c = unit[i];
+    if (!is_digit(c)) {
+      if (in_number && (c == '.' || ((c == 'e' || c == 'E') && i + 1 < unit.size() &&
+                                     (is_digit(unit[i + 1]) || unit[i + 1] == '-' || unit[i + 1] == '+')))) {
+        i += (c == '.') ? 1 : 2;
+        continue;
+      }
+      in_number = false;
+      ++i;
+      continue;
+    }
+    // A run of digits: an exponent when it follows '^', "**" or a unit symbol (with a sign).
+    std::size_t before = i;
+    if (before > 0 && (unit[before - 1] == '-' || unit[before - 1] == '+')) --before;
+    const bool after_caret = before > 0 && unit[before - 1] == '^';
+    const bool after_stars = before > 1 && unit[before - 1] == '*' && unit[before - 2] == '*';
+    const bool after_symbol = !in_number && before > 0 && is_letter(unit[before - 1]);
+    std::size_t end = i;
+    while (end < unit.size() && is_digit(unit[end])) ++end;
+    if (after_caret || after_stars || after_symbol) {
+      const std::string digits = unit.substr(i, end - i);
+      const std::size_t first = digits.find_first_not_of('0');
+      const std::string shown = first == std::string::npos ? "0" : digits.substr(first);
+      // Up to 999 the power is read correctly and the dimension check below names it.
+      if (shown.size() > 3)
+        throw InputError("unit '" + unit + "': the exponent " + (unit[i - 1] == '-' ? "-" : "") + shown +
+                         " is beyond what highlift handles (-" + std::to_string(kMaxUnitPower) + " to " +
+                         std::to_string(kMaxUnitPower) + "); check the exponents");
+      in_number = false;
+    } else {
+      in_number = true;
+    }
+    i = end;
+  }
+}
+
 UnitConversion ParseUnitLocked(const std::string& unit) {
   ut_system* system = UnitSystem();
   if (unit.empty() || unit == "1") return {};
+  CheckWrittenExponents(unit);
   UnitPtr parsed(ut_parse(system, unit.c_str(), UT_UTF8));
   if (parsed == nullptr) throw InputError("unknown unit '" + unit + "'");
   DimensionCollector collector;

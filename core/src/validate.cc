@@ -8,6 +8,7 @@
 #include <set>
 
 #include "highlift/core/graph.h"
+#include "highlift/core/project_io.h"
 #include "highlift/core/text_table.h"
 
 namespace highlift {
@@ -420,5 +421,21 @@ class Validator {
 }  // namespace
 
 ValidationReport ValidateProject(const Project& project) { return Validator(project).Run(); }
+
+Project LoadValidProject(const std::filesystem::path& file) {
+  Project project = LoadProject(file);
+  const ValidationReport report = ValidateProject(project);
+  std::vector<const ValidationIssue*> errors;
+  for (const auto& issue : report.issues)
+    if (issue.severity == ValidationIssue::Severity::kError) errors.push_back(&issue);
+  if (errors.empty()) return project;
+  SourceLocation where = errors.front()->where;
+  if (where.file.empty()) where.file = file.string();
+  std::string message = errors.front()->message;
+  if (errors.size() > 1)
+    message += " (and " + std::to_string(errors.size() - 1) + " more error" + (errors.size() > 2 ? "s" : "") +
+               ": `highlift validate " + file.string() + "` lists them)";
+  throw InputError(message, where);
+}
 
 }  // namespace highlift

@@ -11,6 +11,7 @@
 #include "highlift/core/error.h"
 #include "highlift/core/text_table.h"
 #include "highlift/core/units.h"
+#include "highlift/core/message_number.h"
 
 namespace highlift::icsp {
 
@@ -48,14 +49,14 @@ std::optional<Status> StatusFromString(const std::string& s) {
 
 void PropagationOptions::Validate() const {
   if (!(ratio >= 0.0 && ratio < 1.0)) {
-    throw InputError("icsp: propagation ratio " + std::to_string(ratio) +
+    throw InputError("icsp: propagation ratio " + FormatMessageNumber(ratio) +
                      " is outside [0, 1); use 0 for the exact fixed point or e.g. 0.01");
   }
   if (max_revisions <= 0) {
     throw InputError("icsp: max_revisions " + std::to_string(max_revisions) + " must be > 0");
   }
   if (!(max_seconds > 0.0)) {
-    throw InputError("icsp: max_seconds " + std::to_string(max_seconds) + " must be > 0");
+    throw InputError("icsp: max_seconds " + FormatMessageNumber(max_seconds) + " must be > 0");
   }
 }
 

@@ -17,6 +17,7 @@
 #include "highlift/core/catalogue.h"
 #include "highlift/core/error.h"
 #include "highlift/core/text_table.h"
+#include "highlift/core/message_number.h"
 #include "components/component_util.h"
 #include "highlift/model/component_model.h"
 
@@ -598,7 +599,7 @@ void DriveNetworkOptions::Validate() const {
     throw InputError("option shaft_elements = " + std::to_string(shaft_elements) +
                      " must be 0 (the project's setting, at least 4) or 1..1000 spring-dampers per shaft");
   if (!(friction_speed >= 0 && friction_speed < 1e3))
-    throw InputError("option friction_speed = " + std::to_string(friction_speed) +
+    throw InputError("option friction_speed = " + FormatMessageNumber(friction_speed) +
                      " rad/s must be >= 0 (0: exact stick/slip) and small against the shaft speed, "
                      "e.g. 0.01 rad/s");
 }

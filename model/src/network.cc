@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "highlift/core/error.h"
+#include "highlift/core/message_number.h"
 
 namespace highlift::model {
 
@@ -52,8 +53,8 @@ void Network::AddElement(std::string_view type, std::string_view id, ElementPara
                        DidYouMean(name, names));
     if (!std::isfinite(value) || !p->valid_range.contains(value))
       throw InputError("element '" + sid + "' (" + stype + "): parameter '" + name + "' = " +
-                       std::to_string(value) + " is outside its valid range [" +
-                       std::to_string(p->valid_range.lo) + ", " + std::to_string(p->valid_range.hi) + "]");
+                       FormatMessageNumber(value) + " is outside its valid range [" +
+                       FormatMessageNumber(p->valid_range.lo) + ", " + FormatMessageNumber(p->valid_range.hi) + "]");
     if (p->kind == ParameterKind::kBoolean && value != 0 && value != 1)
       throw InputError("element '" + sid + "' (" + stype + "): parameter '" + name +
                        "' is a flag; give true or false");

@@ -150,6 +150,18 @@ FocusModel Reduce(const detail::Graph& g, const Focus& f, int elements) {
   return fm;
 }
 
+/// Whether the part in focus has an inertia the stop does not hold rigidly. Beyond the rupture of
+/// the last shaft there may be only what is bolted to the wing-tip brake (a position sensor): that
+/// part does not move, has no dynamic peak and is no case.
+bool HasFreeInertia(const detail::Graph& g, const Focus& f, int elements) {
+  const auto draft = detail::BuildTransmission<double>(g, {}, f.root);
+  const LumpedModel model = BuildLumpedModel(Nominal(draft), Reduction::kFullResolution, elements);
+  const int stop = model.NodeOfPoint(draft.point_of_node[f.stop]);
+  for (std::size_t i = 0; i < model.nodes.size(); ++i)
+    if (static_cast<int>(i) != stop && model.nodes[i].J > 0.0) return true;
+  return false;
+}
+
 /// Enclosure of (w1, J*) over the parameter domains: w1 is monotone (rises with every c, falls
 /// with every J) and J* rises with every J, so the soft-heavy and stiff-light corners bound them.
 void Enclose(const detail::Graph& g, const Focus& f, int elements, const detail::ParameterMode& mode, Interval* omega,
@@ -419,7 +431,8 @@ PeakReport AnalysePeaks(const Project& project, const PeakOptions& options) {
     int brake = -1;
     for (int k : part)
       if (g.Has(k, &model::ComponentRoles::tip_brake)) brake = k;
-    if (brake < 0 || brake == root) continue;  // no brake beyond, or nothing but the brake
+    // No brake beyond, nothing but the brake, or nothing the brake does not hold rigidly.
+    if (brake < 0 || brake == root || !HasFreeInertia(g, {root, brake}, elements)) continue;
     PeakCase pc;
     pc.kind = "rupture";
     pc.component = g.Id(s);

@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "highlift/core/error.h"
+#include "highlift/core/message_number.h"
 
 namespace highlift::reduced_models {
 namespace {
@@ -29,7 +30,7 @@ void CheckTransmission(const Transmission& t) {
     HIGHLIFT_CHECK(link.a >= 0 && link.a < n && link.b >= 0 && link.b < n,
                    "transmission link '" + link.name + "' refers to a point that does not exist");
     if (!(link.c > 0.0))
-      throw InputError("link '" + link.name + "': stiffness c = " + std::to_string(link.c) +
+      throw InputError("link '" + link.name + "': stiffness c = " + FormatMessageNumber(link.c) +
                        " N*m/rad must be > 0; give the component a positive stiffness or its "
                        "geometry and material");
     if (link.J < 0.0)

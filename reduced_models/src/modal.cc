@@ -8,6 +8,7 @@
 #include <Eigen/Eigenvalues>
 
 #include "highlift/core/error.h"
+#include "highlift/core/message_number.h"
 
 namespace highlift::reduced_models {
 namespace {
@@ -122,7 +123,7 @@ ModalResult ComputeModes(const LumpedModel& model, const ModalOptions& options) 
   for (int i : node_of)
     if (!(model.nodes[i].J > 0.0))
       throw InputError("lumped model node '" + model.nodes[i].name +
-                       "' has no inertia (J = " + std::to_string(model.nodes[i].J) +
+                       "' has no inertia (J = " + FormatMessageNumber(model.nodes[i].J) +
                        " kg*m^2); give the component there an inertia or use a reduced model that "
                        "merges it");
 

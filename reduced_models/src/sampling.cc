@@ -5,6 +5,7 @@
 
 #include "highlift/core/catalogue.h"
 #include "highlift/core/error.h"
+#include "highlift/core/message_number.h"
 
 namespace highlift::reduced_models {
 
@@ -38,8 +39,8 @@ Project FixParameters(const Project& project, const std::vector<UncertainParamet
   for (std::size_t i = 0; i < x.size(); ++i) {
     const UncertainParameter& u = uncertain[i];
     if (!(x[i] >= u.domain.lo && x[i] <= u.domain.hi))
-      throw InputError("FixParameters: " + u.component + "." + u.parameter + " = " + std::to_string(x[i]) +
-                       " lies outside its domain [" + std::to_string(u.domain.lo) + ", " + std::to_string(u.domain.hi) +
+      throw InputError("FixParameters: " + u.component + "." + u.parameter + " = " + FormatMessageNumber(x[i]) +
+                       " lies outside its domain [" + FormatMessageNumber(u.domain.lo) + ", " + FormatMessageNumber(u.domain.hi) +
                        "]; give a value inside it");
     Component* c = point.FindComponent(u.component);
     if (!c) throw InputError("FixParameters: no component '" + u.component + "' in project '" + project.name + "'");

@@ -15,7 +15,9 @@ SingleDof ReduceToSingleDof(const LumpedModel& model, const std::vector<int>& st
   options.mode_shapes = 1;
   const ModalResult modes = ComputeModes(model, options);
   if (modes.omega.empty())
-    throw InputError("the part in focus has no free inertia: every node is a stop");
+    throw InputError("the part of the transmission in focus has no inertia that can move: every component of it is "
+                     "held rigidly by the stop (the jammed actuator or the wing-tip brake); a single-DOF peak needs an "
+                     "inertia beyond a compliance (a shaft) from the stop");
   if (modes.rigid_body_modes > 0)
     throw InputError("part of the transmission in focus is not held by the stop (a rigid-body mode "
                      "remains); connect it to the stop or leave it out of the part in focus");

@@ -9,6 +9,7 @@
 
 #include "composites.h"
 #include "highlift/core/error.h"
+#include "highlift/core/message_number.h"
 #include "model.h"
 
 namespace highlift::sim::detail {
@@ -22,12 +23,7 @@ std::string Name(const std::string& id, const std::string& type) {
   return "element '" + id + "' (" + type + ")";
 }
 
-std::string Number(double x) {
-  std::string s = std::to_string(x);
-  s.erase(s.find_last_not_of('0') + 1);
-  if (!s.empty() && s.back() == '.') s.pop_back();
-  return s;
-}
+std::string Number(double x) { return FormatMessageNumber(x); }
 
 void CheckBrakeTorques(const std::string& id, const std::string& type, double tauB_max,
                        double tauB_lim) {

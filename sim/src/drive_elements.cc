@@ -15,6 +15,7 @@
 
 #include "composites.h"
 #include "highlift/core/error.h"
+#include "highlift/core/message_number.h"
 #include "model.h"
 #include "msl_elements.h"
 
@@ -33,7 +34,7 @@ std::string Where(const NetworkElement& e) { return "element '" + e.id + "' (" +
 int WholeNumber(const NetworkElement& e, const std::string& name) {
   const double v = Param(e, name);
   if (v != std::floor(v))
-    throw InputError(Where(e) + ": parameter '" + name + "' = " + std::to_string(v) +
+    throw InputError(Where(e) + ": parameter '" + name + "' = " + FormatMessageNumber(v) +
                      " must be a whole number");
   return static_cast<int>(v);
 }
@@ -68,7 +69,7 @@ class Pdu : public Friction {
         w_hold(Param(e, "w_hold")),
         t_motor_lost(Given(e, "t_motor_lost") ? Param(e, "t_motor_lost") : INFINITY) {
     if (n_m < 1)
-      throw InputError(Where(e) + ": parameter 'n_m' = " + std::to_string(n_m) +
+      throw InputError(Where(e) + ": parameter 'n_m' = " + FormatMessageNumber(n_m) +
                        " must be at least 1 (the number of motors)");
     J = n_m * J_m * ratio * ratio + J_g;
     if (!(J > 0))
@@ -450,12 +451,12 @@ class CombiTimeTable : public SignalBlock {
         time_events(WholeNumber(e, "timeEvents")) {
     const int smoothness = WholeNumber(e, "smoothness");
     if (smoothness != 1 && smoothness != 3)
-      throw InputError(Where(e) + ": parameter 'smoothness' = " + std::to_string(smoothness) +
+      throw InputError(Where(e) + ": parameter 'smoothness' = " + FormatMessageNumber(smoothness) +
                        " is not supported; use 1 (LinearSegments) or 3 (ConstantSegments)");
     if (constant_segments) time_events = kAlways;  // MSL: always for constant segments
     for (std::size_t r = 2; r < table.size(); ++r)
       if (table[r][0] == table[r - 2][0])
-        throw InputError(Where(e) + ": table 'table' has the time " + std::to_string(table[r][0]) +
+        throw InputError(Where(e) + ": table 'table' has the time " + FormatMessageNumber(table[r][0]) +
                          " more than twice (row " + std::to_string(r + 1) +
                          "); a jump needs exactly two rows with the same time");
     period = table.back()[0] - table.front()[0];

@@ -22,6 +22,7 @@
 #include "composites.h"
 #include "highlift/core/error.h"
 #include "highlift/core/text_table.h"
+#include "highlift/core/message_number.h"
 #include "model.h"
 #include "msl_elements.h"
 
@@ -131,7 +132,7 @@ class ServoValve : public Element {
         D_v(Param(e, "D_v")),
         dp_small(Param(e, "dp_small")) {
     if (leakage > 1.0)
-      throw InputError(Where(e) + ": parameter 'leakage' = " + std::to_string(leakage) +
+      throw InputError(Where(e) + ": parameter 'leakage' = " + FormatMessageNumber(leakage) +
                        " must be <= 1 (a fraction of A_max); typical values are 1e-4 to 1e-2");
     const double order_value = Param(e, "order");
     if (order_value != 0.0 && order_value != 1.0 && order_value != 2.0)
@@ -233,8 +234,8 @@ class DifferentialCylinder : public Element {
         c_stop(Param(e, "c_stop")),
         s_start(Param(e, "s_start")) {
     if (s_start < 0.0 || s_start > s_max)
-      throw InputError(Where(e) + ": parameter 's_start' = " + std::to_string(s_start) +
-                       " m lies outside the stroke [0, s_max = " + std::to_string(s_max) +
+      throw InputError(Where(e) + ": parameter 's_start' = " + FormatMessageNumber(s_start) +
+                       " m lies outside the stroke [0, s_max = " + FormatMessageNumber(s_max) +
                        " m]; give an initial rod position within the stroke");
   }
   std::vector<std::string> Flanges() const override { return {"flange"}; }
@@ -384,8 +385,8 @@ class Volume : public Element {
     if (std::isnan(p_start)) return;
     if (!h.start_by.empty() && h.p_start != p_start)
       throw InputError("hydraulic node of '" + h.name + "': initial pressures " +
-                       std::to_string(h.p_start) + " Pa ('" + h.start_by + "') and " +
-                       std::to_string(p_start) + " Pa ('" + id + "') differ; give p_start once");
+                       FormatMessageNumber(h.p_start) + " Pa ('" + h.start_by + "') and " +
+                       FormatMessageNumber(p_start) + " Pa ('" + id + "') differ; give p_start once");
     h.p_start = p_start;
     h.start_by = id;
   }

@@ -12,6 +12,7 @@
 
 #include "highlift/core/error.h"
 #include "highlift/core/output_file.h"
+#include "highlift/core/message_number.h"
 #include "sundials_compat.h"
 #include "fast_kernels.h"
 #include "system.h"
@@ -23,11 +24,11 @@ using detail::System;
 void SimulationOptions::Validate() const {
   auto fail = [](const std::string& what) { throw InputError("simulation option " + what); };
   if (!(stop_time > start_time))
-    fail("stop_time = " + std::to_string(stop_time) + " s must be greater than start_time = " +
-         std::to_string(start_time) + " s");
+    fail("stop_time = " + FormatMessageNumber(stop_time) + " s must be greater than start_time = " +
+         FormatMessageNumber(start_time) + " s");
   if (!(output_interval > 0)) fail("output_interval must be > 0 s");
   if (!(relative_tolerance > 0 && relative_tolerance < 1))
-    fail("relative_tolerance = " + std::to_string(relative_tolerance) + " must lie in (0, 1)");
+    fail("relative_tolerance = " + FormatMessageNumber(relative_tolerance) + " must lie in (0, 1)");
   if (!(absolute_tolerance > 0)) fail("absolute_tolerance must be > 0");
   if (!(torque_tolerance >= 0)) fail("torque_tolerance must be >= 0 N*m (0: off)");
   if (max_step < 0) fail("max_step must be >= 0 (0: no limit)");
@@ -134,7 +135,7 @@ model::StartValues ComputeStartValues(const Network& network, const SimulationOp
   std::vector<SimulationEvent> events;
   std::string error;
   if (!StartState(sys, options, y, events, error))
-    throw InputError("the model cannot start at t = " + std::to_string(options.start_time) + " s: " + error);
+    throw InputError("the model cannot start at t = " + FormatMessageNumber(options.start_time) + " s: " + error);
   model::StartValues out;
   out.summary = "rest: the springs untwisted, the speeds the initial ones";
   for (const auto& e : events)
@@ -563,7 +564,7 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
     if (flag >= 0) return true;
     report.sundials_flag = detail::CvodeFlagName(flag);
     std::string msg = std::string(call) + " failed with " + report.sundials_flag + " at t = " +
-                      std::to_string(t) + " s";
+                      FormatMessageNumber(t) + " s";
     if (!data.message.empty()) msg += ": " + data.message;
     else if (!data.cvode_message.empty()) msg += ": " + data.cvode_message;
     if (!data.element.empty()) report.element = data.element;
@@ -860,7 +861,7 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
   while (t < t_end - eps_t) {
     if (InterruptRequested()) {
       fail(SimulationStatus::kInterrupted,
-           "interrupted by signal " + std::to_string(InterruptSignal()) + " at t = " + std::to_string(t) + " s", t);
+           "interrupted by signal " + std::to_string(InterruptSignal()) + " at t = " + FormatMessageNumber(t) + " s", t);
       break;
     }
     const double t_event = sys.NextTimeEvent(t);
@@ -951,7 +952,7 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
       // What CVODE's mxstep reports in its normal mode, counted here in one-step mode.
       report.sundials_flag = detail::CvodeFlagName(CV_TOO_MUCH_WORK);
       fail(SimulationStatus::kSolverFailure,
-           "CVode failed with " + report.sundials_flag + " at t = " + std::to_string(t_ret) + " s: more than " +
+           "CVode failed with " + report.sundials_flag + " at t = " + FormatMessageNumber(t_ret) + " s: more than " +
                std::to_string(options.max_steps_per_output) +
                " steps between two output points (the solution is stiff or chatters); raise max_steps_per_output",
            t_ret);

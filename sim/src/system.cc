@@ -14,6 +14,7 @@
 
 #include "composites.h"
 #include "highlift/core/error.h"
+#include "highlift/core/message_number.h"
 
 namespace highlift::sim::detail {
 
@@ -799,7 +800,7 @@ std::vector<double> System::InitialState(double t0) {
         const Element& el = *elements_[owner[i]];
         throw InputError("element '" + el.id + "' (" + el.type + "): the initial " + what +
                          " contradict the other initial values or the kinematic constraints "
-                         "(residual " + std::to_string(r) +
+                         "(residual " + FormatMessageNumber(r) +
                          "); give fewer initial values or make them consistent");
       }
     }
@@ -1678,7 +1679,7 @@ bool System::Solve() {
           error_element_ = owners.empty() ? "" : owners.front();
           error_ = "the accelerations of the flanges " + Join(names) +
                    " are not determined (singular system of the constraints of " + Join(owners) +
-                   " at t = " + std::to_string(e.t) +
+                   " at t = " + FormatMessageNumber(e.t) +
                    "); add inertia to these flanges or remove redundant couplings";
           for (int n : g.nodes) local_[n] = -1;
           return false;
@@ -1836,7 +1837,7 @@ bool System::HandleEvent(double t, double* y, bool initial, std::vector<std::str
   }
   eval_.initial = false;
   if (!converged) {
-    error_ = "the friction modes found no consistent combination at t = " + std::to_string(t) +
+    error_ = "the friction modes found no consistent combination at t = " + FormatMessageNumber(t) +
              " after 200 switches";
     return false;
   }
@@ -1945,7 +1946,7 @@ bool System::HydraulicDerivatives(double* ydot) {
     if (h.s_p < 0) continue;
     if (!(eval_.cap[n] > 0.0)) {
       error_ = "hydraulic node '" + h.name + "' has no positive capacitance at t = " +
-               std::to_string(eval_.t) + "; check the volumes attached to it";
+               FormatMessageNumber(eval_.t) + "; check the volumes attached to it";
       return false;
     }
     ydot[h.s_p] = eval_.q[n] / eval_.cap[n];

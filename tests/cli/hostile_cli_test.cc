@@ -125,7 +125,7 @@ TEST(OptionValues, NonFiniteAndOutOfRangeValuesAreRejectedReadably) {
        "LO and HI must be finite numbers"},
       {{"info", kProject, "--wide", "nan"}, "'nan' is not a finite number; give a number >= 0"},
       {{"info", kProject, "--wide", "-1"}, "'-1' is out of range; give a number >= 0"},
-      {{"estimate", kProject, "--min-fit-parts", "-1"}, "'-1' is out of range; give a number from 3 to 1e+06"},
+      {{"estimate", kProject, "--min-fit-parts", "-1"}, "'-1' is out of range; give a number from 3 to 1e6"},
       {{"simulate", kProject, "--elements", "-7"}, "'-7' is out of range; give a number from 1 to 1000"},
       {{"modes", kProject, "--elements", "1000"}, "give a number from 0 to 100"},
       {{"check", kProject, "--max-revisions", "-1"}, "give a number > 0"},

@@ -1,6 +1,7 @@
 // Runs the built `highlift` executable and captures its exit code, stdout and stderr.
 #pragma once
 
+#include <gtest/gtest.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -53,6 +54,24 @@ inline CliResult RunCli(const std::vector<std::string>& args, const std::string&
   r.err = e.str();
   std::filesystem::remove_all(tmp);
   return r;
+}
+
+/// The whole content of `file` ("" when it cannot be read).
+inline std::string ReadFile(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+/// A fresh directory `<tmp>/<prefix>_<test name>_<pid>` for the running gtest test.
+inline std::filesystem::path TestScratchDirectory(const std::string& prefix) {
+  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+  const auto dir = std::filesystem::temp_directory_path() /
+                   (prefix + "_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
 }
 
 }  // namespace highlift::testing

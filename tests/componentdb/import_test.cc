@@ -43,7 +43,7 @@ TEST(ComponentDatabaseImport, BadRowsNameTheRowTheProblemAndWhatIsValid) {
   ExpectContains(CsvImportError(good + "geared_rotary_actuator,G1,,,,eta_opposing,,0.9,0.8,1,E,s\n"),
                  "row 3: part 'G1' (geared_rotary_actuator) parameter 'eta_opposing': min 0.9 exceeds max 0.8");
   ExpectContains(CsvImportError(good + "geared_rotary_actuator,G1,,,,eta_opposing,1.2,,,1,E,s\n"),
-                 "row 3: part 'G1' (geared_rotary_actuator) parameter 'eta_opposing': 1.2 1 is outside its valid range [0, 1]");
+                 "row 3: part 'G1' (geared_rotary_actuator) parameter 'eta_opposing': 1.2 1 is outside its valid range [0.01, 1] (SI)");
   ExpectContains(CsvImportError(good + "geared_rotary_actuator,G1,,,,eta_opposing,0.8,,,1,X,s\n"),
                  "parts.csv row 3: column 'tag' must be P, P-low or E, got 'X'");
   ExpectContains(CsvImportError(good + "geared_rotary_actuator,G1,,,,eta_opposing,abc,,,1,E,s\n"),

@@ -4,6 +4,10 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <atomic>
+#include <chrono>
+#include <thread>
+
 #include "highlift/componentdb/database.h"
 #include "highlift/componentdb/io.h"
 #include "test_util.h"
@@ -108,6 +112,47 @@ TEST(ComponentDatabaseInterruptedImport, ReaderSeesTheOldContentWhileAnImportRun
   writer.Import(ManyParts(500, "LIVE-"), options);
   EXPECT_TRUE(checked);
   EXPECT_EQ(writer.CountRows().parts, before.parts + 500);
+}
+
+// Issue 27 item 12: `estimate` while `db import --replace` ran saw "0 database parts": a read of
+// the parts of a type took the parts in one statement and their parameters in the next, and a
+// replace committed between the two gave parts without parameters (new ids). Every read is one
+// snapshot now: a reader sees the old or the new parts, each with all its parameters.
+TEST(ComponentDatabaseInterruptedImport, ReadersNeverSeeHalfAReplace) {
+  ScratchDirectory dir;
+  const auto file = dir / "db.sqlite";
+  const Records family = ManyParts(200, "REPL-");
+  {
+    auto db = ComponentDatabase::Open(file, ComponentDatabase::Mode::kCreate);
+    db.Import(family);
+  }
+  std::atomic<bool> stop{false};
+  std::atomic<int> replaces{0};
+  std::thread writer([&] {
+    auto db = ComponentDatabase::Open(file, ComponentDatabase::Mode::kReadWrite);
+    ImportOptions replace;
+    replace.replace = true;
+    while (!stop) {
+      db.Import(family, replace);
+      ++replaces;
+    }
+  });
+  auto reader = ComponentDatabase::Open(file, ComponentDatabase::Mode::kReadOnly);
+  int reads = 0, incomplete = 0;
+  const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(3);
+  while (std::chrono::steady_clock::now() < until && (reads < 50 || replaces < 20)) {
+    const std::vector<Part> parts = reader.Parts("geared_rotary_actuator");
+    std::size_t with_parameters = 0;
+    for (const Part& part : parts) with_parameters += part.parameters.size() == 3;
+    if (parts.size() != family.parts.size() || with_parameters != parts.size()) ++incomplete;
+    ++reads;
+  }
+  stop = true;
+  writer.join();
+  EXPECT_GT(replaces.load(), 0);
+  EXPECT_GT(reads, 0);
+  EXPECT_EQ(incomplete, 0) << incomplete << " of " << reads << " reads saw a part count other than "
+                           << family.parts.size() << " or parts without their parameters";
 }
 
 }  // namespace

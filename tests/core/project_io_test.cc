@@ -231,7 +231,7 @@ TEST(ProjectIo, ValueOutsideTheValidRangeNamesTheRange) {
   EXPECT_EQ(ErrorOf(Rig("\"eta_opposing\": {\"value\": 0.85, \"min\": 0.80, \"max\": 0.90, \"provenance\": \"estimated\"}",
                         "\"eta_opposing\": 1.2")),
             "t.json:18:37 at /components/5/parameters/eta_opposing: component 'gra_1' (geared_rotary_actuator): "
-            "parameter 'eta_opposing' = 1.2 is outside its valid range [0, 1]; check the value and its unit");
+            "parameter 'eta_opposing' = 1.2 is outside its valid range [0.01, 1]; check the value and its unit");
   EXPECT_EQ(ErrorOf(Rig("\"4 m\"", "\"-4 m\"")),
             "t.json:11:31 at /components/2/parameters/length: component 'shaft_1' (torque_shaft): parameter 'length' "
             "= -4 m is outside its valid range [0.01, 100] m; check the value and its unit");

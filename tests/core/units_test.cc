@@ -76,6 +76,26 @@ TEST(Units, WrongDimensionSaysWhatWasExpected) {
   }
 }
 
+TEST(Units, ExponentOverflowIsAnError) {
+  // Issue 27 item 9: UDUNITS-2 read the exponent into an int, so m^4294967297 was m^1 (4 m).
+  for (const std::string unit : {"m^4294967297", "m4294967297", "m**4294967297", "s^-4294967297", "kg*m^0004294967298"}) {
+    try {
+      ParseUnit(unit);
+      ADD_FAILURE() << unit << " was accepted";
+    } catch (const InputError& e) {
+      EXPECT_NE(e.message().find("is beyond what highlift handles (-24 to 24)"), std::string::npos) << e.message();
+      EXPECT_NE(e.message().find("the exponent " + std::string(unit[0] == 's' ? "-" : "") + "42949672"),
+                std::string::npos) << e.message();
+    }
+  }
+  EXPECT_THROW(ToSI(4, "m^4294967297", Length()), InputError);
+  // Exponents in range, and digits of numbers, are as before.
+  EXPECT_EQ(ParseUnit("m^2").dimension, Area());
+  EXPECT_EQ(ParseUnit("kg m2").dimension, Inertia());
+  EXPECT_EQ(ParseUnit("s-1").dimension, AngularVelocity());
+  EXPECT_NEAR(ToSI(1, "1e3 m", Length()), 1e3, 1e-9);
+}
+
 TEST(Units, FromSIInvertsToSI) {
   EXPECT_NEAR(FromSI(ToSI(242, "rpm", AngularVelocity()), "rpm", AngularVelocity()), 242, 242 * kRel);
   EXPECT_NEAR(FromSI(300.15, "degC", ParseUnit("K").dimension), 27, 1e-9);

@@ -164,7 +164,7 @@ TEST(Validate, ProgrammaticProjectsAreCheckedToo) {
   const ValidationReport r = ValidateProject(p);
   const std::string full = r.FullReport();
   EXPECT_NE(full.find(": component 'gra' (geared_rotary_actuator): parameter 'eta_opposing' = 1.5 is outside "
-                      "its valid range [0, 1]\n"),
+                      "its valid range [0.01, 1]\n"),
             std::string::npos)
       << full;
   EXPECT_NE(full.find(": component 'shaft_1': unknown component type 'torque_shaf'; did you mean "

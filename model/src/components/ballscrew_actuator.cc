@@ -24,7 +24,7 @@ ComponentTypeSpec BallscrewActuatorDeclaration() {
                    .Source("estimate"));
   ps.push_back(Efficiency("eta_opposing", "eta_op", 0.90, 0.85, 0.95, "efficiency driving against an opposing load",
                           "estimate: ball screws are more efficient than planetary GRAs"));
-  ps.push_back(Efficiency("eta_aiding", "eta_ai", 0.80, 0.70, 0.90, "efficiency with an aiding (back-driving) load", "estimate"));
+  ps.push_back(AidingEfficiency("eta_aiding", "eta_ai", 0.80, 0.70, 0.90, "efficiency with an aiding (back-driving) load", "estimate"));
   ps.push_back(Param("input_inertia", "J_in", dimensions::Inertia(), "kg*m^2", "inertia referred to the input")
                    .Nominal(5e-4)
                    .Default(2e-4, 1e-3)

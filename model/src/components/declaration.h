@@ -169,13 +169,27 @@ inline void AddStribeck(std::vector<ParameterSpec>& ps, double tau_C, double tau
                    .Side(side));
 }
 
+// An efficiency in the driving direction: the input torque is the output torque divided by it
+// (tau_in = tau_out / (i eta)), so 0, a part that passes no power however hard it is driven,
+// has no steady state. Valid from 0.01: no gear, joint or motor of a drive transmits less than
+// 1 % of its power (real ones 0.6 to 0.99).
 inline ParameterSpec Efficiency(std::string name, std::string symbol, double nominal, double lo, double hi,
                          std::string description, std::string source) {
   return Param(std::move(name), std::move(symbol), Dimensionless(), "1", std::move(description))
       .Nominal(nominal)
       .Default(lo, hi)
-      .Valid(0, 1)
+      .Valid(0.01, 1)
       .Source(std::move(source));
+}
+
+// The efficiency with an aiding (back-driving) load: the torque passed on is multiplied by it,
+// and 0 is a self-locking actuator that an aiding load cannot back-drive.
+inline ParameterSpec AidingEfficiency(std::string name, std::string symbol, double nominal, double lo, double hi,
+                               std::string description, std::string source) {
+  ParameterSpec p = Efficiency(std::move(name), std::move(symbol), nominal, lo, hi, std::move(description),
+                               std::move(source));
+  p.valid_range = Domain{0, 1};
+  return p;
 }
 
 }  // namespace highlift::model::components

@@ -23,7 +23,7 @@ ComponentTypeSpec GearedRotaryActuatorDeclaration() {
                    .Source("domain.md s3 (E): GRA 200:1; s6 100-300:1"));
   ps.push_back(Efficiency("eta_opposing", "eta_op", 0.85, 0.80, 0.90, "efficiency driving against an opposing load",
                           "domain.md s3/s6 (E): 0.85 [0.80, 0.90]"));
-  ps.push_back(Efficiency("eta_aiding", "eta_ai", 0.70, 0.60, 0.80, "efficiency with an aiding (back-driving) load",
+  ps.push_back(AidingEfficiency("eta_aiding", "eta_ai", 0.70, 0.60, 0.80, "efficiency with an aiding (back-driving) load",
                           "domain.md s3/s6 (E): 0.70 [0.60, 0.80]"));
   ps.push_back(Param("input_inertia", "J_in", dimensions::Inertia(), "kg*m^2", "inertia of the actuator referred to its input")
                    .Nominal(1e-3)

@@ -20,6 +20,7 @@
 
 #include "highlift/core/catalogue.h"
 #include "highlift/core/error.h"
+#include "highlift/core/message_number.h"
 
 namespace highlift::model::detail {
 namespace {
@@ -68,8 +69,8 @@ PduPorts AddHydraulicPdu(Network& net, const Component& pdu, std::optional<doubl
   const double p_s = Value(pdu, "supply_pressure", "give the aircraft system pressure, e.g. 345 bar (A380) or 207 bar (A320)");
   const double p_r = Value(pdu, "return_pressure");
   if (!(p_s > p_r))
-    throw InputError(Where(pdu) + ": parameter 'supply_pressure' = " + std::to_string(p_s * 1e-5) +
-                     " bar must exceed 'return_pressure' = " + std::to_string(p_r * 1e-5) + " bar");
+    throw InputError(Where(pdu) + ": parameter 'supply_pressure' = " + FormatMessageNumber(p_s * 1e-5) +
+                     " bar must exceed 'return_pressure' = " + FormatMessageNumber(p_r * 1e-5) + " bar");
   const double eta_m = Value(pdu, "motor_mechanical_efficiency") * Value(pdu, "efficiency");
   if (!(eta_m > 0))
     throw InputError(Where(pdu) + ": parameters 'motor_mechanical_efficiency' and 'efficiency' must be > 0");

@@ -4,6 +4,7 @@
 
 #include "component_util.h"
 #include "declaration.h"
+#include "highlift/core/message_number.h"
 
 namespace highlift::model::components {
 
@@ -70,9 +71,9 @@ inline Scalars TorqueLimiterScalars(const Component& c, ExpansionContext& x, con
   const double tau1_ret = Require(c, "lockout_torque_retract");
   const double tau2 = Require(c, "end_stop_torque");
   if (!(tau2 > tau1_ext && tau2 > tau1_ret))
-    throw InputError("component '" + c.id + "' (" + c.type + "): 'end_stop_torque' = " + std::to_string(tau2) +
-                         " N*m must exceed both lock-out torques (" + std::to_string(tau1_ext) + ", " +
-                         std::to_string(tau1_ret) + " N*m): raise it or lower the lock-out torques",
+    throw InputError("component '" + c.id + "' (" + c.type + "): 'end_stop_torque' = " + FormatMessageNumber(tau2) +
+                         " N*m must exceed both lock-out torques (" + FormatMessageNumber(tau1_ext) + ", " +
+                         FormatMessageNumber(tau1_ret) + " N*m): raise it or lower the lock-out torques",
                      c.where);
   // The retract end stop keeps the extend ratio tau2/tau1.
   return {{"tau1_ext", tau1_ext},

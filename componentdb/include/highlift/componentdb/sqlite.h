@@ -98,4 +98,20 @@ class Transaction {
   bool done_ = false;
 };
 
+/// One snapshot for a read made of several statements (a part's row, then its parameters): BEGIN
+/// (deferred) ... COMMIT around them, so an import committed meanwhile (`db import --replace`
+/// deletes and re-inserts parts) is seen wholly or not at all, never half. Inside a transaction
+/// already it does nothing.
+class ReadSnapshot {
+ public:
+  explicit ReadSnapshot(Connection& connection);
+  ~ReadSnapshot();
+  ReadSnapshot(const ReadSnapshot&) = delete;
+  ReadSnapshot& operator=(const ReadSnapshot&) = delete;
+
+ private:
+  Connection& connection_;
+  bool began_ = false;
+};
+
 }  // namespace highlift::componentdb::sqlite

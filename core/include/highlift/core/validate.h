@@ -3,6 +3,7 @@
 // of their valid range.
 #pragma once
 
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -27,5 +28,11 @@ struct ValidationReport {
 };
 
 ValidationReport ValidateProject(const Project& project);
+
+/// LoadProject(file) followed by ValidateProject: the project every analysis command reads, so
+/// that each refuses what `highlift validate` refuses (a shaft wall thicker than its radius, a
+/// port connected twice, ...). Throws InputError with the first error (its location, the number
+/// of further errors) when the project has any; warnings are left to `highlift validate`.
+Project LoadValidProject(const std::filesystem::path& file);
 
 }  // namespace highlift
