@@ -624,9 +624,10 @@ class Friction : public Element {
   int p = -1, m = -1;
   int mode = kUnknown;
   bool start_forward = false, start_backward = false;
-  /// Broke away from Stuck and has not moved clear of rest yet (|w| <= w_eps at its events):
-  /// root 0 watches its acceleration instead of its slip. Unlike start_forward/start_backward
-  /// (MSL's flags, true at the event instant only) it lasts until the element's next event.
+  /// Broke away from Stuck and has not moved clear of rest yet: root 0 watches its acceleration
+  /// instead of its slip. Unlike start_forward/start_backward (MSL's flags, true at the event
+  /// instant only) it lasts until an event finds the slip beyond roundoff in the sliding
+  /// direction, or the element sticks or is released.
   bool starting = false;
   int constraint = -1;
   mutable double tau = 0.0;
