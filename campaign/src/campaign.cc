@@ -261,8 +261,12 @@ std::filesystem::path MergeShards(const std::vector<std::filesystem::path>& inpu
       c.Execute(
           "INSERT INTO runs SELECT * FROM shard.runs;"
           "INSERT INTO run_values SELECT * FROM shard.run_values;"
-          "INSERT INTO component_peaks SELECT * FROM shard.component_peaks;"
-          "DETACH DATABASE shard;");
+          "INSERT INTO component_peaks SELECT * FROM shard.component_peaks;");
+      if (c.QueryInteger("SELECT count(*) FROM shard.sqlite_master WHERE type = 'table' AND name = 'passivity'") > 0) {
+        detail::CreatePassivityTable(c);
+        c.Execute("INSERT INTO passivity SELECT * FROM shard.passivity;");
+      }
+      c.Execute("DETACH DATABASE shard;");
     }
   } catch (...) {
     std::filesystem::remove(partial);

@@ -122,6 +122,7 @@ RunResult ExecuteRun(const Project& project, const Plan& plan, int run) {
     r.build_seconds = simulation.build_seconds;
     r.simulate_seconds = simulation.report.wall_seconds;
     r.steps = simulation.report.statistics.steps;
+    r.passivity = simulation.report.passivity;
     if (!simulation.report.ok()) {
       const sim::SimulationReport& report = simulation.report;
       r.ok = false;

@@ -44,6 +44,12 @@ void CreateSchema(sqlite::Connection& connection) {
     CREATE TABLE component_peaks(run INTEGER NOT NULL, position INTEGER NOT NULL, component TEXT NOT NULL,
                                  torque REAL NOT NULL, time REAL NOT NULL, PRIMARY KEY(run, position)) WITHOUT ROWID;
   )sql");
+  CreatePassivityTable(connection);
+}
+
+void CreatePassivityTable(sqlite::Connection& connection) {
+  connection.Execute(
+      "CREATE TABLE IF NOT EXISTS passivity(run INTEGER PRIMARY KEY, violations INTEGER NOT NULL, report TEXT NOT NULL)");
 }
 
 FileIdentity ReadIdentity(sqlite::Connection& connection) {
@@ -76,6 +82,7 @@ ResultStore::ResultStore(const std::filesystem::path& file, const Project& proje
     if (identity_.shard.index != shard.index || identity_.shard.count != shard.count)
       throw InputError("'" + file.string() + "' holds shard " + identity_.shard.ToString() + ", not " + shard.ToString());
     connection_->Execute("PRAGMA journal_mode = WAL; PRAGMA synchronous = NORMAL");
+    CreatePassivityTable(*connection_);  // a file begun before the passivity monitor
     return;
   }
   // Everything the summary needs besides the runs, in one transaction: a file either has all of
@@ -163,6 +170,11 @@ void ResultStore::Write(const RunResult& r) {
       s.BindNull(7).BindNull(8).BindNull(9);
     }
     s.Bind(10, r.single_dof).Bind(11, static_cast<std::int64_t>(r.steps)).Bind(12, r.simulate_seconds).Run();
+  }
+  {
+    sqlite::Statement s(*connection_, "INSERT INTO passivity VALUES(?, ?, ?)");
+    s.Bind(1, static_cast<std::int64_t>(r.run)).Bind(2, static_cast<std::int64_t>(r.passivity.violations.size()))
+        .Bind(3, r.passivity.BriefReport()).Run();
   }
   {
     sqlite::Statement s(*connection_, "INSERT INTO run_values VALUES(?, ?, ?)");

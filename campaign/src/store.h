@@ -10,6 +10,8 @@
 //   run_values(run, parameter_index, value)          the sampled values of each run
 //   component_peaks(run, position, component, torque, time)   per run and component (project
 //                              order), its largest |torque|
+//   passivity(run, violations, report)   per run, the number of elements whose dissipated power
+//                              fell below zero (sim::PassivityReport) and its brief report
 #pragma once
 
 #include <filesystem>
@@ -64,6 +66,8 @@ class ResultStore {
 
 /// Creates the tables of a result file (empty).
 void CreateSchema(sqlite::Connection& connection);
+/// Creates the table `passivity` unless the file has it.
+void CreatePassivityTable(sqlite::Connection& connection);
 /// Reads the identity of a result file; throws InputError when it is no campaign result file.
 FileIdentity ReadIdentity(sqlite::Connection& connection);
 

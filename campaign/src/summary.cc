@@ -103,6 +103,10 @@ CampaignSummary LoadSummary(const std::filesystem::path& file_or_directory) {
     }
   }
   s.case_peaks = std::move(per_case);
+  s.not_passive =
+      c.QueryInteger("SELECT count(*) FROM sqlite_master WHERE type = 'table' AND name = 'passivity'") == 0
+          ? -1
+          : static_cast<int>(c.QueryInteger("SELECT count(*) FROM passivity WHERE violations > 0"));
 
   std::map<std::string, std::pair<std::string, double>> capacities;
   {
@@ -167,6 +171,9 @@ std::string CampaignSummary::BriefReport() const {
   std::ostringstream out;
   out << "campaign " << campaign_id << " of '" << project_name << "': " << runs_done << "/" << runs_total << " runs"
       << (complete() ? "" : " (incomplete: run the same command again to resume)") << ", " << failures << " failed";
+  if (not_passive != 0)
+    out << ", " << (not_passive < 0 ? std::string("negative dissipation not recorded")
+                                    : std::to_string(not_passive) + " with negative dissipation");
   if (worst)
     out << "; smallest margin " << FormatNumber(*worst->margin, 3) << " at " << worst->component << " (" << worst->case_name
         << ", " << worst->sample_label << ")";
@@ -221,6 +228,7 @@ nlohmann::json CampaignSummary::ToJson() const {
   nlohmann::json j = {{"campaign_id", campaign_id}, {"project", project_name}, {"project_hash", project_hash},
                       {"model", model},            {"shard", shard},          {"file", file.string()},
                       {"runs_total", runs_total},  {"runs_done", runs_done}, {"failures", failures},
+                      {"not_passive", not_passive >= 0 ? nlohmann::json(not_passive) : nlohmann::json(nullptr)},
                       {"cases", cases},            {"samples_per_case", samples_per_case},
                       {"parameters", parameters},  {"complete", complete()}, {"ok", ok()}};
   j["envelope"] = nlohmann::json::array();

@@ -36,6 +36,7 @@ struct TransientPeak {
   bool ok = true;
   std::string message;    ///< the simulation's failure
   double wall_seconds = 0;
+  sim::PassivityReport passivity;  ///< elements whose dissipated power fell below zero
   double Ratio() const { return single_dof > 0 ? transient / single_dof : NAN; }
 };
 
@@ -54,6 +55,7 @@ TransientPeak RunCase(const Project& project, const reduced_models::PeakCase& pc
   t.ok = simulation.report.ok();
   t.message = simulation.report.message;
   t.wall_seconds = simulation.report.wall_seconds;
+  t.passivity = simulation.report.passivity;
   t.transient = simulation.load_path_peak.tau;
   t.at = simulation.load_path_peak.element;
   t.time = simulation.load_path_peak.time;
@@ -112,6 +114,10 @@ class PeakCommand : public Command {
                               {"wall_seconds", t.wall_seconds}};
           c["ratio"] = std::isfinite(t.Ratio()) ? nlohmann::json(t.Ratio()) : nlohmann::json(nullptr);
           if (!t.ok) c["message"] = t.message;
+          nlohmann::json violations = nlohmann::json::array();
+          for (const auto& v : t.passivity.violations)
+            violations.push_back({{"element", v.element}, {"time", v.time}, {"power", v.power}, {"duration", v.duration}});
+          c["passivity"] = {{"passive", t.passivity.passive()}, {"violations", violations}};
           cases.push_back(c);
         }
         j["transient"] = cases;
@@ -121,14 +127,16 @@ class PeakCommand : public Command {
       // Headline first: the worst case, the negative margins, and how the simulations went.
       std::cout << report.BriefReport();
       if (transient_) {
-        int failed = 0;
+        int failed = 0, not_passive = 0;
         const TransientPeak* worst = nullptr;
         for (const auto& t : transient) {
           failed += !t.ok;
+          not_passive += !t.passivity.passive();
           if (t.ok && (!worst || t.transient > worst->transient)) worst = &t;
         }
         if (worst) std::cout << "; transient worst " << worst->name << ": " << FormatNumber(worst->transient, 4) << " N*m at " << worst->at;
         if (failed) std::cout << "; " << failed << " simulation(s) failed";
+        if (not_passive) std::cout << "; " << not_passive << " simulation(s) with negative dissipation";
       }
       std::cout << "\n\n" << report.FullReport() << "\n";
       if (transient_) {
@@ -141,7 +149,9 @@ class PeakCommand : public Command {
           table.AddRow({t.name, t.scenario + (t.load_case.empty() ? "" : " (" + t.load_case + ")"),
                         FormatNumber(t.single_dof, 4), FormatNumber(t.transient, 4),
                         std::isfinite(t.Ratio()) ? FormatNumber(t.Ratio(), 3) : "-", t.at.empty() ? "-" : t.at,
-                        FormatNumber(t.time, 4), t.ok ? "ok" : "failed: " + t.message});
+                        FormatNumber(t.time, 4),
+                        (t.ok ? "ok" : "failed: " + t.message) +
+                            (t.passivity.passive() ? "" : "; " + t.passivity.BriefReport())});
         std::cout << table.ToString();
       }
     }

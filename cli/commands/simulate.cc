@@ -241,6 +241,17 @@ class SimulateCommand : public Command {
                        {"potential_end", e.potential_end},     {"residual", e.Residual()},
                        {"scale", e.Scale()}};
       }
+      {
+        // The passivity monitor: elements whose dissipated power fell below zero.
+        nlohmann::json violations = nlohmann::json::array();
+        for (const auto& v : report.passivity.violations)
+          violations.push_back({{"element", v.element}, {"time", v.time}, {"duration", v.duration},
+                                {"power", v.power}, {"power_time", v.power_time}, {"episodes", v.episodes}});
+        j["passivity"] = {{"passive", report.passivity.passive()},
+                          {"tolerance", report.passivity.tolerance},
+                          {"power_scale", report.passivity.power_scale},
+                          {"violations", violations}};
+      }
       if (!report.ok()) {
         j["sundials_flag"] = report.sundials_flag;
         j["element"] = report.element;
@@ -300,6 +311,7 @@ class SimulateCommand : public Command {
                   << FormatNumber(e.impulsive_loss, 6) << " J; residual " << FormatNumber(e.Residual(), 3)
                   << " J\n";
       }
+      std::cout << "passivity: " << report.passivity.BriefReport() << "\n";
       TextTable table({drive ? "component" : "element", "peak |tau| [N*m]", "at t [s]"}, {1, 2});
       for (const auto& p : drive ? component_peaks : report.peak_torques)
         table.AddRow({p.element, FormatNumber(std::abs(p.tau), 5), FormatNumber(p.time, 5)});

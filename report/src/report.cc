@@ -177,7 +177,8 @@ nlohmann::json HistoryJson(const Project& project, const SimulationJob& job, int
                       {"description", s.description}, {"load_case", s.load_case},
                       {"stop_time", s.stop_time}, {"ok", job.report.ok()},
                       {"message", job.report.message}, {"wall_seconds", Round(job.report.wall_seconds)},
-                      {"states", job.report.statistics.states}, {"events", job.report.events.size()}};
+                      {"states", job.report.statistics.states}, {"events", job.report.events.size()},
+                      {"passivity", job.report.passivity.BriefReport()}};
   // Of the shafts keep the one with the largest peak: the torque the failure puts into the line.
   std::string peak_shaft;
   double peak = -1;
@@ -431,7 +432,8 @@ DesignReport BuildDesignReport(const Project& project, const Project& estimated,
       if (job.peak_case != &pc) continue;
       // The largest shaft (or brake) torque on the load path, referred to the shaft speed, as
       // `highlift peak --transient` reports it.
-      nlohmann::json tr = {{"scenario", job.scenario.name}, {"ok", job.report.ok()}, {"message", job.report.message}};
+      nlohmann::json tr = {{"scenario", job.scenario.name}, {"ok", job.report.ok()}, {"message", job.report.message},
+                           {"passivity", job.report.passivity.BriefReport()}};
       double best = 0;
       for (const sim::PeakTorque& p : job.component_peaks) {
         const Component* comp = project.FindComponent(p.element);

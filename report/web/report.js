@@ -363,7 +363,8 @@
         return [c.name, c.kind, componentLink(c.acts_at), fmt(c.single_dof.nominal), "[" + fmt(c.single_dof.min) + ", " + fmt(c.single_dof.max) + "]", widest,
           t ? el("span", { class: over ? "bad" : "", text: fmt(t.value) }) : "not simulated", t ? componentLink(t.at) : "\u2013", t ? fmt(t.time) : "\u2013",
           fmt(ratio, 3), c.capacity ? fmt(c.capacity.value) : "\u2013", c.capacity ? componentLink(c.capacity.component) : "\u2013",
-          t ? (t.ok ? "ok" : el("span", { class: "bad", text: "failed: " + t.message })) : "\u2013"];
+          t ? (t.ok ? (t.passivity && t.passivity !== "passive" ? el("span", { class: "bad", text: "ok; " + t.passivity }) : "ok")
+                    : el("span", { class: "bad", text: "failed: " + t.message })) : "\u2013"];
       }), [3, 6, 8, 9, 10]));
   }
 
@@ -420,6 +421,7 @@
       div.append(el("p", { class: "hint", text: (s.description || "") + " Simulated " + fmt(s.stop_time) + " s, " + s.states + " states, " +
         s.events + " events, " + fmt(s.wall_seconds, 2) + " s of computing; " + s.time.length + " of " + s.rows_simulated + " output rows kept (each bucket's extremes)." }));
       if (!s.ok) div.append(el("p", { class: "bad", text: "The simulation failed: " + s.message }));
+      if (s.passivity && s.passivity !== "passive") div.append(el("p", { class: "bad", text: "Passivity monitor: " + s.passivity }));
       box.append(div);
       const group = { plots: [] };
       const sync = (u) => {

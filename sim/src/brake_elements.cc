@@ -255,7 +255,7 @@ void StribeckFriction::AfterSolve(Eval& e) {
 void StribeckFriction::Roots(const Eval& e, double* g) const {
   Friction::Roots(e, g);
   if (split && Sliding())
-    g[3] = tau_load != 0.0 ? tau_load : quadrant * std::numeric_limits<double>::min();
+    g[3] = tau_load != 0.0 ? tau_load : quadrant * kRootSentinel;
   else
     g[3] = 1.0;
 }
@@ -358,7 +358,7 @@ double BrakeActuation::NextTimeEvent(double t) const {
 
 void BrakeActuation::Roots(const Eval& e, double* g) const {
   const double x = e.signal[trigger] - 0.5;
-  g[0] = x != 0.0 ? x : std::numeric_limits<double>::min();
+  g[0] = x != 0.0 ? x : kRootSentinel;
 }
 
 double BrakeActuation::Violation(const Eval& e) const {

@@ -28,6 +28,14 @@ inline double SmoothSign(double x) { return x > 20.0 ? 1.0 : (x < -20.0 ? -1.0 :
 /// exp(-x) for x >= 0 (the Stribeck decay), 0 beyond x = 40 where it is below 5e-18.
 inline double Decay(double x) { return x > 40.0 ? 0.0 : std::exp(-x); }
 
+/// The value a root function reports in place of an exact 0 (so that CVODE never sees one that
+/// is identically zero), signed by the side the element is on. Not DBL_MIN: CVODE flags a root
+/// only where g_lo * g_hi < 0, and DBL_MIN times the 1e-16 a rising normal force reaches at the
+/// located time underflows to -0, so CVODE returned a root with no root flagged and the rise was
+/// lost (a brake ramped from 0 stayed free, or the run looped at t = 0). 1e-100 keeps the
+/// product normal for any partner above 1e-200 and is still far below every physical scale.
+inline constexpr double kRootSentinel = 1e-100;
+
 /// Remembers the arguments of the last call of a pure function of N doubles: a law evaluated
 /// again at the same arguments (the phases of one evaluation, the Jacobian's difference
 /// quotients that leave an element's flanges alone) reuses its value instead of calling the

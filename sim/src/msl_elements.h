@@ -477,7 +477,13 @@ class Friction : public Element {
 
   int NumRoots() const override { return 3; }
   void Roots(const Eval& e, double* g) const override {
-    g[0] = Sliding() ? WF(e) : 1.0;
+    // Sliding: the slip, located where it reaches 0 against the mode. Starting from rest (case 6
+    // of docs/simulation.md, MSL startForward/startBackward) the slip is 0 within roundoff and
+    // may sit on either side of 0, so its crossing says nothing; the relative acceleration in
+    // the sliding direction is watched instead, as MSL keeps startForward only while
+    // sa > tau0: where it turns against the mode before the element has moved clear, the
+    // element sticks (a capacity rising from 0 overtakes a holding torque of roundoff size).
+    g[0] = Sliding() ? (starting ? mode * AF(e) : WF(e)) : 1.0;
     if (mode == kStuck) {
       // The event iteration accepts a stuck element whose torque exceeds its capacity by up to
       // 1e-12 of it; the root keeps a margin of 1e-10 so that it starts positive even then and
@@ -493,10 +499,10 @@ class Friction : public Element {
     // never sees a root function that is identically zero.
     const double fn = can_be_free ? Fn(e) : 1.0;
     const bool free = mode == kFree || mode == kUnknown;
-    g[2] = fn == 0.0 ? (free ? -1.0 : 1.0) * std::numeric_limits<double>::min() : fn;
+    g[2] = fn == 0.0 ? (free ? -1.0 : 1.0) * kRootSentinel : fn;
   }
   void RootDirections(int* d) const override {
-    d[0] = mode == kForward ? -1 : (mode == kBackward ? 1 : 0);
+    d[0] = starting ? 0 : (mode == kForward ? -1 : (mode == kBackward ? 1 : 0));
     d[1] = -1;
     d[2] = 0;
   }
@@ -506,6 +512,11 @@ class Friction : public Element {
     settled_allowance = 0.0;
     const double w = WF(e);
     const double w_eps = 1e-9 * (1.0 + std::abs(e.w[p]) + std::abs(e.w[m]));
+    // A start that has moved clear of rest is an ordinary slide: root 0 was its acceleration,
+    // not its slip reaching 0.
+    const bool clear = starting && Sliding() && w * mode > w_eps;
+    if (clear || !Sliding()) starting = false;
+    const bool slip_root = Fired(0) && !clear;
     // Root 2 located the rise of the normal force: engaged from this instant on (the right
     // limit), even where the force evaluates to exactly 0 at the located time.
     const bool rising = Fired(2) && (mode == kFree || mode == kUnknown) && Fn(e) >= 0;
@@ -515,7 +526,8 @@ class Friction : public Element {
     }
     if (one_way) {
       if (mode == kUnknown || mode == kFree) mode = w > w_eps ? kForward : kStuck;
-      else if (mode == kForward && (w <= w_eps || Fired(0))) mode = kStuck;
+      else if (mode == kForward && (w <= w_eps || slip_root)) mode = kStuck;
+      if (mode != kForward) starting = false;
       return;
     }
     if (mode == kFree || mode == kUnknown) {
@@ -524,8 +536,9 @@ class Friction : public Element {
       else mode = kStuck;
       return;
     }
-    if (mode == kForward && (w <= w_eps || Fired(0))) mode = kStuck;
-    if (mode == kBackward && (w >= -w_eps || Fired(0))) mode = kStuck;
+    if (mode == kForward && (w <= w_eps || slip_root)) mode = kStuck;
+    if (mode == kBackward && (w >= -w_eps || slip_root)) mode = kStuck;
+    if (!Sliding()) starting = false;
   }
   double Violation(const Eval& e) const override {
     if (mode == kStuck) {
@@ -537,24 +550,40 @@ class Friction : public Element {
       return excess > threshold ? std::max(excess / scale, 1e-9) : 0.0;
     }
     if (Sliding() && !one_way) {
-      // Just released at zero speed but driven the other way: it must stick again.
       const double w = WF(e);
       const double w_eps = 1e-9 * (1.0 + std::abs(e.w[p]) + std::abs(e.w[m]));
+      // Sliding against its slip (beyond roundoff): the friction torque would push along the
+      // motion and feed energy. MSL's mode is Forward only while w_relfric > 0 (and Backward
+      // only while < 0): Fix() takes the direction of the slip.
+      if (w * mode < -w_eps) return 1.0;
+      // Just released at zero speed but driven the other way: it must stick again.
       const double a = AF(e);
       const double a_eps = 1e-9 * (1.0 + std::abs(e.acc[p]) + std::abs(e.acc[m]));
       if (std::abs(w) <= w_eps && a * mode < -a_eps) return 1.0;
     }
     return 0.0;
   }
-  void Fix(const Eval&) override {
+  void Fix(const Eval& e) override {
+    if (Sliding() && !one_way) {
+      const double w = WF(e);
+      const double w_eps = 1e-9 * (1.0 + std::abs(e.w[p]) + std::abs(e.w[m]));
+      if (w * mode < -w_eps) {  // against its slip: slide the way it moves
+        mode = w > 0 ? kForward : kBackward;
+        start_forward = start_backward = false;
+        starting = false;
+        return;
+      }
+    }
     if (mode == kStuck) {
       const int direction = (one_way || tau > 0) ? kForward : kBackward;
       mode = direction;
       start_forward = direction == kForward;
       start_backward = direction == kBackward;
+      starting = true;
     } else {
       mode = kStuck;
       start_forward = start_backward = false;
+      starting = false;
       // Released on the located capacity root but driven the other way once sliding: the
       // torque sits at the capacity within the root tolerance. The element stays stuck for this
       // event (the relaxed threshold of the fired root no longer applies), else the iteration
@@ -575,6 +604,7 @@ class Friction : public Element {
   void Settle(const Eval& e) override {
     if (mode == kForward || mode == kBackward) mode = kStuck;
     start_forward = start_backward = false;
+    starting = false;
     settled_allowance = kSettledAllowance * std::abs(Tau0Max(e));
   }
   bool IsSwitching() const override { return true; }
@@ -594,6 +624,11 @@ class Friction : public Element {
   int p = -1, m = -1;
   int mode = kUnknown;
   bool start_forward = false, start_backward = false;
+  /// Broke away from Stuck and has not moved clear of rest yet: root 0 watches its acceleration
+  /// instead of its slip. Unlike start_forward/start_backward (MSL's flags, true at the event
+  /// instant only) it lasts until an event finds the slip beyond roundoff in the sliding
+  /// direction, or the element sticks or is released.
+  bool starting = false;
   int constraint = -1;
   mutable double tau = 0.0;
 };

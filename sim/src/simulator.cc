@@ -32,6 +32,7 @@ void SimulationOptions::Validate() const {
   if (!(absolute_tolerance > 0)) fail("absolute_tolerance must be > 0");
   if (!(torque_tolerance >= 0)) fail("torque_tolerance must be >= 0 N*m (0: off)");
   if (max_step < 0) fail("max_step must be >= 0 (0: no limit)");
+  if (!(passivity_tolerance > 0)) fail("passivity_tolerance must be > 0 (relative to the run's power scale)");
   if (linear_solver != "auto" && linear_solver != "dense" && linear_solver != "band" && linear_solver != "sparse")
     fail("linear_solver = '" + linear_solver + "' must be one of auto, dense, band, sparse");
 }
@@ -62,6 +63,18 @@ double EnergyBalance::Scale() const {
                    std::abs(kinetic_start) + std::abs(potential_start)});
 }
 
+std::string PassivityReport::BriefReport() const {
+  if (violations.empty()) return "passive";
+  std::ostringstream s;
+  s << violations.size() << (violations.size() == 1 ? " element" : " elements") << " with negative dissipation:";
+  for (std::size_t i = 0; i < violations.size(); ++i) {
+    const PassivityViolation& v = violations[i];
+    s << (i == 0 ? " " : ", ") << v.element << " at " << v.time << " s (" << v.power << " W at " << v.power_time
+      << " s, for " << v.duration << " s)";
+  }
+  return s.str();
+}
+
 std::string SimulationReport::BriefReport() const {
   std::ostringstream s;
   s << ToString(status) << ": t = " << time << " s, " << statistics.steps << " steps, "
@@ -88,6 +101,8 @@ std::string SimulationReport::FullReport() const {
       << energy.potential_end - energy.potential_start << " J + dissipated " << energy.dissipated
       << " J + impulsive " << energy.impulsive_loss << " J; residual " << energy.Residual()
       << " J\n";
+  s << "passivity (tolerance " << passivity.tolerance << " of " << passivity.power_scale
+    << " W): " << passivity.BriefReport() << "\n";
   if (!ok()) {
     s << "failure: " << message << "\n";
     if (!sundials_flag.empty()) s << "  flag " << sundials_flag << "\n";
@@ -462,7 +477,49 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
     report.message = std::move(message);
     report.time = t;
   };
+  // The passivity monitor (PassivityReport): per element the open episode of negative
+  // dissipated power and the worst closed episode that lasted longer than one step.
+  struct Episode {
+    bool open = false;
+    int samples = 0;
+    double start = 0.0, last = 0.0, min_power = 0.0, min_time = 0.0;
+  };
+  std::vector<Episode> open_episode(elements.size()), worst_episode(elements.size());
+  std::vector<int> episode_count(elements.size(), 0);
+  std::vector<double> loss;
+  report.passivity.tolerance = options.passivity_tolerance;
+  auto close_episode = [&](std::size_t i) {
+    Episode& e = open_episode[i];
+    if (e.samples >= 2) {
+      ++episode_count[i];
+      if (worst_episode[i].samples == 0 || e.min_power < worst_episode[i].min_power) worst_episode[i] = e;
+    }
+    e = Episode{};
+  };
+  auto monitor = [&](double t) {
+    report.passivity.power_scale = std::max(report.passivity.power_scale, sys.LossPowers(loss));
+    const double threshold = -options.passivity_tolerance * report.passivity.power_scale;
+    for (std::size_t i = 0; i < loss.size(); ++i) {
+      Episode& e = open_episode[i];
+      if (loss[i] < threshold) {
+        if (!e.open) e = {true, 0, t, t, loss[i], t};
+        ++e.samples;
+        e.last = t;
+        if (loss[i] < e.min_power) e.min_power = loss[i], e.min_time = t;
+      } else if (e.open) {
+        close_episode(i);
+      }
+    }
+  };
   auto finish = [&] {
+    const double threshold = -options.passivity_tolerance * report.passivity.power_scale;
+    for (std::size_t i = 0; i < elements.size(); ++i) {
+      if (open_episode[i].open) close_episode(i);
+      const Episode& e = worst_episode[i];
+      if (e.samples >= 2 && e.min_power < threshold)
+        report.passivity.violations.push_back(
+            {elements[i]->id, e.start, e.last - e.start, e.min_power, e.min_time, episode_count[i]});
+    }
     std::vector<PeakTorque> peaks;
     for (std::size_t i = 0; i < elements.size(); ++i)
       if (has_torque[i]) peaks.push_back(report.peak_torques[i]);
@@ -487,7 +544,8 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
   bool first_sample = true;
   double last_t = options.start_time, last_loss = 0.0, last_source = 0.0, impulsive_base = 0.0;
   System::EnergyState energy_now;
-  auto sample = [&](double t) {
+  auto sample = [&](double t, bool step_end = true) {
+    if (step_end) monitor(t);
     sys.PeakTorques(tau);
     for (std::size_t i = 0; i < tau.size(); ++i) {
       if (std::isnan(tau[i])) continue;
@@ -942,7 +1000,7 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
         g_prev.swap(g_out);
         g_prev_time = t_out;
       }
-      sample(t_out);
+      sample(t_out, false);  // interpolated: not a step of the passivity monitor
       write_row(t_out);
       ++k;
       steps_since_output = 0;
@@ -974,7 +1032,21 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
       } else if (!hidden_root) {
         if (!check(CVodeGetRootInfo(cv.mem, cvode_info.data()), "CVodeGetRootInfo", t)) break;
         std::fill(root_info.begin(), root_info.end(), 0);
-        for (int i = 0; i < n_cvode_roots; ++i) root_info[cvode_roots[i]] = cvode_info[i];
+        bool any = false;
+        for (int i = 0; i < n_cvode_roots; ++i) {
+          root_info[cvode_roots[i]] = cvode_info[i];
+          any = any || cvode_info[i] != 0;
+        }
+        // CVODE flags a root only where g_lo * g_hi < 0; that product underflows to -0 when
+        // both are tiny (a normal force reported as -DBL_MIN at rest that rises to 1e-16 at the
+        // located time), and CVODE returns a root with no root flagged. The sign changes since
+        // the last sample are the roots then; without this the rise was lost and the brake
+        // stayed free for the rest of the run.
+        if (!any) {
+          std::vector<double> g_now(std::max(n_roots, 1), 1.0);
+          sys.Roots(g_now.data());
+          SignChanged(g_prev, g_now, directions, root_info, kinematic, 0);
+        }
       }
       std::string what = "root";
       for (const auto& el : elements)

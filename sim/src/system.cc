@@ -1765,6 +1765,16 @@ System::EnergyState System::Energy() const {
   return s;
 }
 
+double System::LossPowers(std::vector<double>& loss) const {
+  loss.resize(elements_.size());
+  double scale = 0.0;
+  for (std::size_t i = 0; i < elements_.size(); ++i) {
+    loss[i] = elements_[i]->LossPower(eval_);
+    scale += std::abs(loss[i]) + std::abs(elements_[i]->SourcePower(eval_));
+  }
+  return scale;
+}
+
 void System::Roots(double* g) const {
   for (const auto& el : elements_)
     if (el->NumRoots() > 0) el->Roots(eval_, g + el->root_offset);

@@ -123,6 +123,10 @@ class System {
     double source_power = 0.0;  ///< sum of Element::SourcePower, W
   };
   EnergyState Energy() const;
+  /// The passivity monitor's reading of the last Evaluate: each element's dissipated power
+  /// (Element::LossPower, W) into `loss` (one per element), and the power scale
+  /// sum(|loss| + |source power|) over the elements as the result.
+  double LossPowers(std::vector<double>& loss) const;
   /// Kinetic energy removed by the speed projections of all events so far (J, >= 0).
   double impulsive_loss() const { return impulsive_loss_; }
 

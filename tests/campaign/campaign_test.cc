@@ -157,6 +157,10 @@ TEST(Campaign, AFailingRunIsRecordedWithItsMessageAndTheCampaignGoesOn) {
   EXPECT_FALSE(s.ok());
   EXPECT_NE(s.FullReport().find("Failed runs:"), std::string::npos);
   EXPECT_EQ(s.ToJson()["failures"], 2);
+  // The passivity monitor's count: recorded (not null) and none of the successful runs feeds
+  // energy into the transmission.
+  EXPECT_EQ(s.not_passive, 0);
+  EXPECT_EQ(s.ToJson()["not_passive"], 0);
 }
 
 TEST(Campaign, RunsInParallelThreadsGiveTheSameNumbersAsOneAfterAnother) {

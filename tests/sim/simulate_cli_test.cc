@@ -37,6 +37,10 @@ TEST(SimulateCli, WritesSelectedColumnsAndJsonSummary) {
   for (const auto& p : j["peak_torques"])
     if (p["element"] == "brake") brake_peak = std::abs(p["abs_tau"].get<double>() - 800) < 1e-6;
   EXPECT_TRUE(brake_peak) << j["peak_torques"].dump();
+  // The passivity monitor: MSL's Friction example (brake, clutch, bearing friction) dissipates.
+  EXPECT_EQ(j["passivity"]["passive"], true) << j["passivity"].dump();
+  EXPECT_TRUE(j["passivity"]["violations"].empty()) << j["passivity"].dump();
+  EXPECT_GT(j["passivity"]["power_scale"].get<double>(), 0.0);
   std::ifstream in(csv);
   std::string header;
   std::getline(in, header);

@@ -163,6 +163,9 @@ struct RunResult {
   std::optional<double> single_dof; ///< N*m, the single-DOF estimate of the case at this sample
   std::vector<sim::PeakTorque> components;  ///< per component, its own torque (element = id)
   long steps = 0;
+  /// The simulator's passivity monitor: elements whose dissipated power fell below zero
+  /// (stored per run in the table `passivity`, counted in the summary).
+  sim::PassivityReport passivity;
   double build_seconds = 0.0;       ///< model building
   double simulate_seconds = 0.0;    ///< the simulator's run
   double single_dof_seconds = 0.0;  ///< the single-DOF estimate
@@ -269,6 +272,9 @@ struct CampaignSummary {
   int runs_total = 0;          ///< in this file's shard
   int runs_done = 0;
   int failures = 0;
+  /// Runs in which an element's dissipated power fell below zero (the simulator's passivity
+  /// monitor); -1 when the file predates the monitor.
+  int not_passive = 0;
   int cases = 0;
   int samples_per_case = 0;
   std::vector<std::string> parameters;

@@ -67,6 +67,10 @@ struct SimulationOptions {
   /// Adds the energy columns energy.kinetic, energy.potential (J), energy.loss_power,
   /// energy.source_power (W) and energy.impulsive_loss (J) and fills SimulationReport::energy.
   bool energy = false;
+  /// Passivity monitor (PassivityReport): a dissipative element whose dissipated power stays
+  /// below -passivity_tolerance * (the run's power scale) over more than one integrator step is
+  /// a violation. Relative, > 0.
+  double passivity_tolerance = 1e-6;
 
   /// Throws InputError naming the option when a value is invalid.
   void Validate() const;
@@ -163,6 +167,33 @@ struct EnergyBalance {
   double Scale() const;
 };
 
+/// One element whose dissipated power (Element::LossPower: friction, brakes, dampers, gear
+/// losses) fell below zero beyond the tolerance for longer than one integrator step: it fed
+/// energy into the network (for instance a friction element sliding against its slip).
+struct PassivityViolation {
+  std::string element;
+  double time = 0.0;      ///< s, start of the (worst) episode of negative dissipation
+  double duration = 0.0;  ///< s, from its first to its last negative sample
+  double power = 0.0;     ///< W, the most negative dissipated power of that episode (< 0)
+  double power_time = 0.0;  ///< s, when that power was reached
+  int episodes = 0;       ///< episodes of this element beyond the tolerance in the run
+};
+
+/// The passivity monitor of a run: every dissipative element's power is followed at every
+/// integrator step end and event limit. The power scale is the largest sum over the elements
+/// of |dissipated power| + |source power| seen in the run; an episode is a run of consecutive
+/// samples with power below -tolerance * (the scale so far), and it is a violation when it
+/// lasts longer than one step (two or more samples) and its most negative power is below
+/// -tolerance * (the run's final scale).
+struct PassivityReport {
+  double tolerance = 0.0;    ///< relative (SimulationOptions::passivity_tolerance)
+  double power_scale = 0.0;  ///< W
+  std::vector<PassivityViolation> violations;  ///< one per element, its worst episode
+  bool passive() const { return violations.empty(); }
+  /// "passive" or "N elements with negative dissipation: wtb_left at 0.61 s, -2.4e3 W, ...".
+  std::string BriefReport() const;
+};
+
 /// Largest absolute torque seen in one element, and when.
 struct PeakTorque {
   std::string element;
@@ -186,6 +217,7 @@ struct SimulationReport {
   SolverStatistics statistics;
   std::vector<PeakTorque> peak_torques;  ///< one per element that carries a torque
   EnergyBalance energy;                  ///< when SimulationOptions::energy
+  PassivityReport passivity;             ///< always
   double wall_seconds = 0.0;
 
   bool ok() const { return status == SimulationStatus::kSuccess; }
