@@ -10,6 +10,7 @@
 //   run_values(run, parameter_index, value)          the sampled values of each run
 //   component_peaks(run, position, component, torque, time)   per run and component (project
 //                              order), its largest |torque|
+//   checksums(run, digest)     per run, RunDigest of its rows when it was committed
 #pragma once
 
 #include <filesystem>
@@ -17,6 +18,7 @@
 #include <memory>
 #include <set>
 #include <string>
+#include <vector>
 
 #include "highlift/campaign/campaign.h"
 #include "highlift/componentdb/sqlite.h"
@@ -61,6 +63,15 @@ class ResultStore {
   std::unique_ptr<sqlite::Connection> connection_;
   FileIdentity identity_;
 };
+
+/// The checksum of a run as stored: 16 hex digits of a hash (FNV-1a) of its row in `runs`, its
+/// `run_values` and its `component_peaks`, every number exact; "" when the run is not in the file.
+/// ResultStore::Write records it in `checksums` in the run's transaction. It finds edits and
+/// damage after the run, not a forger who recomputes it.
+std::string RunDigest(sqlite::Connection& connection, int run);
+/// The runs whose rows no longer match their recorded checksum (or have none, or whose checksum
+/// has no run any more), in run order.
+std::vector<int> RunsNotMatchingChecksums(sqlite::Connection& connection);
 
 /// Creates the tables of a result file (empty).
 void CreateSchema(sqlite::Connection& connection);
