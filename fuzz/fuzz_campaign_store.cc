@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include <cstddef>
+#include <cstdlib>
 #include <cstdint>
 #include <filesystem>
 #include <sstream>
@@ -27,6 +28,10 @@ fs::path Folder() {
     const fs::path f = fs::temp_directory_path() / ("highlift_fuzz_campaign_" + std::to_string(::getpid()));
     fs::remove_all(f);
     fs::create_directories(f);
+    std::atexit([] {
+      std::error_code ignored;
+      fs::remove_all(fs::temp_directory_path() / ("highlift_fuzz_campaign_" + std::to_string(::getpid())), ignored);
+    });
     return f;
   }();
   return folder;
