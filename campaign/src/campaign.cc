@@ -17,7 +17,9 @@
 
 #include "highlift/campaign/campaign.h"
 #include "highlift/core/error.h"
+#include "highlift/core/output_file.h"
 #include "highlift/core/text_table.h"
+#include "lock.h"
 #include "store.h"
 
 namespace highlift::campaign {
@@ -73,6 +75,11 @@ class Progress {
     *out_ << line.str() << std::flush;
   }
 
+  /// A signal stopped the campaign: ends the bar's line on a terminal.
+  void Stopped() {
+    if (out_ && terminal_ && done_ < total_) *out_ << "\n" << std::flush;
+  }
+
  private:
   std::ostream* out_;
   bool terminal_;
@@ -88,6 +95,9 @@ std::string CampaignReport::BriefReport() const {
       << runs_done_now << " now";
   if (runs_done_before > 0) out << ", " << runs_done_before << " resumed from the file";
   out << "), " << failures << " failed, " << std::fixed << std::setprecision(1) << wall_seconds << " s wall";
+  if (interrupted_signal != 0)
+    out << "; interrupted by signal " << interrupted_signal << ": " << runs_left
+        << " run(s) left to do, run the same command again to resume them";
   return out.str();
 }
 
@@ -101,9 +111,14 @@ CampaignReport RunCampaign(const Project& project, const Plan& plan, const Execu
   if (options.shard.count < 1 || options.shard.index < 0 || options.shard.index >= options.shard.count)
     throw InputError("shard " + options.shard.ToString() + " is invalid: give I/N with 0 <= I < N");
   const auto start = std::chrono::steady_clock::now();
+  // From here on SIGINT/SIGTERM only set InterruptRequested(): the runs stop cleanly and the
+  // finished ones are committed (a second signal ends the process at once; the committed runs
+  // stay all the same).
+  const InterruptibleScope interruptible;
   CampaignReport report;
   report.file = ResultFile(options.directory, options.shard);
   std::filesystem::create_directories(options.directory);
+  const detail::ResultFileLock lock(report.file, "running a campaign into it");
   detail::ResultStore store(report.file, project, plan, options.shard);
 
   const std::set<int> done = store.DoneRuns();
@@ -121,26 +136,35 @@ CampaignReport RunCampaign(const Project& project, const Plan& plan, const Execu
   std::mutex mutex;
   std::condition_variable ready;
   std::deque<RunResult> finished;
+  int working = 0;  // workers not yet done (under mutex)
   std::vector<std::thread> workers;
-  for (int w = 0; w < jobs && !pending.empty(); ++w)
+  for (int w = 0; w < jobs && !pending.empty(); ++w) {
+    ++working;
     workers.emplace_back([&] {
-      for (std::size_t i; (i = next.fetch_add(1)) < pending.size();) {
+      // After a signal no run starts; a run the signal stopped comes back marked interrupted.
+      for (std::size_t i; !InterruptRequested() && (i = next.fetch_add(1)) < pending.size();) {
         RunResult r = ExecuteRun(project, plan, pending[i]);
         std::lock_guard<std::mutex> lock(mutex);
         finished.push_back(std::move(r));
         ready.notify_one();
       }
+      std::lock_guard<std::mutex> lock(mutex);
+      --working;
+      ready.notify_one();
     });
+  }
   // This thread is the only writer: each run is committed as it arrives.
   std::string error;
-  for (std::size_t written = 0; written < pending.size(); ++written) {
+  for (;;) {
     RunResult r;
     {
       std::unique_lock<std::mutex> lock(mutex);
-      ready.wait(lock, [&] { return !finished.empty(); });
+      ready.wait(lock, [&] { return !finished.empty() || working == 0; });
+      if (finished.empty()) break;
       r = std::move(finished.front());
       finished.pop_front();
     }
+    if (r.interrupted) continue;  // not a result: the run stays to do
     try {
       store.Write(r);
     } catch (const std::exception& e) {
@@ -156,6 +180,11 @@ CampaignReport RunCampaign(const Project& project, const Plan& plan, const Execu
   for (auto& w : workers) w.join();
   if (!error.empty()) throw std::runtime_error("writing the campaign results failed: " + error);
   report.failures = store.Failures();
+  report.runs_left = report.runs_in_shard - report.runs_done_before - report.runs_done_now;
+  if (InterruptRequested()) {
+    report.interrupted_signal = InterruptSignal();
+    progress.Stopped();
+  }
   report.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return report;
 }
@@ -193,6 +222,16 @@ std::filesystem::path MergeShards(const std::vector<std::filesystem::path>& inpu
     detail::sqlite::Connection c(f, detail::sqlite::Connection::Mode::kReadOnly);
     Input in{f, detail::ReadIdentity(c), 0};
     in.done = static_cast<int>(c.QueryInteger("SELECT count(*) FROM runs"));
+    const std::vector<int> edited = detail::RunsNotMatchingChecksums(c);
+    if (!edited.empty()) {
+      std::string list;
+      for (std::size_t k = 0; k < edited.size() && k < 10; ++k) list += (k ? ", " : "") + std::to_string(edited[k]);
+      if (edited.size() > 10) list += ", ...";
+      throw InputError("'" + f.string() + "': " + std::to_string(edited.size()) +
+                       " run(s) do not match the checksums recorded when they were committed (run " + list +
+                       "): the file was edited or damaged after the runs; run that shard again into a new --out "
+                       "directory and merge that file");
+    }
     shards.push_back(in);
   }
   const Input& first = shards.front();
@@ -231,8 +270,12 @@ std::filesystem::path MergeShards(const std::vector<std::filesystem::path>& inpu
     throw InputError("'" + target.string() + "' exists already; remove it or merge into another --out directory");
 
   std::filesystem::create_directories(out);
+  const detail::ResultFileLock lock(target, "merging shards into it");
+  if (std::filesystem::exists(target))  // merged by another process meanwhile
+    throw InputError("'" + target.string() + "' exists already; remove it or merge into another --out directory");
   const std::filesystem::path partial = target.string() + ".merging";
   std::filesystem::remove(partial);
+  const TemporaryFileGuard removed_on_a_signal(partial.string());
   try {
     // A new file under a temporary name, renamed when complete: no transaction needed (ATTACH
     // is not allowed inside one), and a failure leaves nothing under the result name.
@@ -261,7 +304,8 @@ std::filesystem::path MergeShards(const std::vector<std::filesystem::path>& inpu
       c.Execute(
           "INSERT INTO runs SELECT * FROM shard.runs;"
           "INSERT INTO run_values SELECT * FROM shard.run_values;"
-          "INSERT INTO component_peaks SELECT * FROM shard.component_peaks;");
+          "INSERT INTO component_peaks SELECT * FROM shard.component_peaks;"
+          "INSERT INTO checksums SELECT * FROM shard.checksums;");
       if (c.QueryInteger("SELECT count(*) FROM shard.sqlite_master WHERE type = 'table' AND name = 'passivity'") > 0) {
         detail::CreatePassivityTable(c);
         c.Execute("INSERT INTO passivity SELECT * FROM shard.passivity;");

@@ -71,12 +71,18 @@ std::optional<Shard> Shard::FromSlurmEnvironment() {
 
 void CampaignOptions::Validate() const {
   if (samples < 0) throw InputError("--samples " + std::to_string(samples) + ": give 0 or more quasi-random points");
+  if (samples > kMaxSamples)
+    throw InputError("--samples " + std::to_string(samples) + " is beyond the limit of " + std::to_string(kMaxSamples) +
+                     " quasi-random points per case: lower --samples");
   if (static_cast<int>(corners.size()) > kMaxCorners)
     throw InputError("--corners names " + std::to_string(corners.size()) + " parameters: at most " +
                      std::to_string(kMaxCorners) + " (2^" + std::to_string(kMaxCorners) +
                      " corners per case); sample the others with --samples");
-  if (shaft_elements < 0)
-    throw InputError("--elements " + std::to_string(shaft_elements) + ": give 1 or more spring-dampers per shaft");
+  // The range of simulate's --elements: a value it refuses would fail every run.
+  if (shaft_elements < 0 || shaft_elements > sim::DriveNetworkOptions::kMaxShaftElements)
+    throw InputError("--elements " + std::to_string(shaft_elements) + " is out of range; give 1 to " +
+                     std::to_string(sim::DriveNetworkOptions::kMaxShaftElements) +
+                     " spring-dampers per shaft (as for simulate), or leave it out for the project's setting");
   if (max_steps_per_output < 1 || max_events < 1)
     throw InputError("the run limits must be >= 1 (max_steps_per_output " + std::to_string(max_steps_per_output) +
                      ", max_events " + std::to_string(max_events) + ")");
@@ -355,6 +361,11 @@ Plan MakePlan(const Project& project, const CampaignOptions& options) {
                        " dimensions of the Sobol directions; choose --sampling lhs or fewer --vary parameters");
   }
   plan.samples_per_case = 1 + (plan.corner_count > 0 ? 1 << plan.corner_count : 0) + options.samples;
+  const long long runs = static_cast<long long>(plan.cases.size()) * plan.samples_per_case;
+  if (runs > CampaignOptions::kMaxRuns)
+    throw InputError(std::to_string(plan.cases.size()) + " case(s) x " + std::to_string(plan.samples_per_case) +
+                     " sample(s) = " + std::to_string(runs) + " runs, beyond the limit of " + std::to_string(CampaignOptions::kMaxRuns) +
+                     " runs of a campaign: lower --samples (or name fewer --corners), or select fewer cases with --cases");
 
   plan.project_hash = ProjectHash(project);
   std::string identity = plan.project_hash + "\nmodel " + sim::ToString(options.model) + "\nelements " +

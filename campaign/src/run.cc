@@ -126,6 +126,7 @@ RunResult ExecuteRun(const Project& project, const Plan& plan, int run) {
     if (!simulation.report.ok()) {
       const sim::SimulationReport& report = simulation.report;
       r.ok = false;
+      r.interrupted = report.status == sim::SimulationStatus::kInterrupted;
       r.message = ToString(report.status) + " at t = " + FormatMessageNumber(report.time) + " s: " + report.message;
       return r;
     }

@@ -1,13 +1,42 @@
 // The campaign result file (schema in store.h).
 #include "store.h"
 
+#include <cstdio>
+#include <limits>
+
 #include "highlift/core/error.h"
+#include "highlift/core/output_file.h"
+#include "internal.h"
 #include "highlift/reduced_models/analyses.h"
 
 namespace highlift::campaign::detail {
 namespace {
 
-constexpr int kFormat = 1;
+// 2: the checksums table.
+constexpr int kFormat = 2;
+
+/// Exact text of a stored double (hexadecimal floating point), "N" for NULL.
+void AddReal(std::string& text, const sqlite::Statement& s, int column) {
+  if (s.IsNull(column)) {
+    text += "N|";
+    return;
+  }
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%a|", s.Real(column));
+  text += buffer;
+}
+void AddInteger(std::string& text, const sqlite::Statement& s, int column) {
+  text += s.IsNull(column) ? std::string("N") : std::to_string(s.Integer(column));
+  text += '|';
+}
+void AddText(std::string& text, const sqlite::Statement& s, int column) {
+  if (s.IsNull(column)) {
+    text += "N|";
+    return;
+  }
+  const std::string value = s.Text(column);
+  text += std::to_string(value.size()) + ":" + value + "|";
+}
 
 std::string Get(sqlite::Connection& connection, const std::string& key) {
   sqlite::Statement s(connection, "SELECT value FROM campaign WHERE key = ?");
@@ -16,12 +45,85 @@ std::string Get(sqlite::Connection& connection, const std::string& key) {
   return s.Text(0);
 }
 
+int GetInteger(sqlite::Connection& connection, const std::string& key) {
+  const std::string text = Get(connection, key);
+  std::size_t end = 0;
+  long long value = 0;
+  try {
+    value = std::stoll(text, &end);
+  } catch (const std::exception&) {
+    end = 0;
+  }
+  if (end == 0 || end != text.size() || value < 0 || value > std::numeric_limits<int>::max())
+    throw InputError("'" + connection.file() + "' is damaged: its '" + key + "' is '" + CleanText(text, 80) +
+                     "', not a whole number >= 0; run the campaign again into a new --out directory");
+  return static_cast<int>(value);
+}
+
 void Put(sqlite::Statement& s, const std::string& key, const std::string& value) {
   s.Reset();
   s.Bind(1, key).Bind(2, value).Run();
 }
 
 }  // namespace
+
+std::string RunDigest(sqlite::Connection& connection, int run) {
+  std::string text = "run\n";
+  {
+    sqlite::Statement s(connection,
+                        "SELECT run, case_index, sample, sample_label, status, message, peak, peak_component, peak_time, "
+                        "single_dof, steps, simulate_seconds FROM runs WHERE run = ?");
+    s.Bind(1, static_cast<std::int64_t>(run));
+    if (!s.Step()) return "";
+    for (int k : {0, 1, 2}) AddInteger(text, s, k);
+    for (int k : {3, 4, 5}) AddText(text, s, k);
+    AddReal(text, s, 6);
+    AddText(text, s, 7);
+    for (int k : {8, 9}) AddReal(text, s, k);
+    AddInteger(text, s, 10);
+    AddReal(text, s, 11);
+  }
+  {
+    sqlite::Statement s(connection, "SELECT parameter_index, value FROM run_values WHERE run = ? ORDER BY parameter_index");
+    s.Bind(1, static_cast<std::int64_t>(run));
+    for (text += "\nvalues\n"; s.Step();) {
+      AddInteger(text, s, 0);
+      AddReal(text, s, 1);
+    }
+  }
+  {
+    sqlite::Statement s(connection,
+                        "SELECT position, component, torque, time FROM component_peaks WHERE run = ? ORDER BY position");
+    s.Bind(1, static_cast<std::int64_t>(run));
+    for (text += "\npeaks\n"; s.Step();) {
+      AddInteger(text, s, 0);
+      AddText(text, s, 1);
+      AddReal(text, s, 2);
+      AddReal(text, s, 3);
+    }
+  }
+  return Hex(Hash64(text));
+}
+
+std::vector<int> RunsNotMatchingChecksums(sqlite::Connection& connection) {
+  std::map<int, std::string> recorded;
+  {
+    sqlite::Statement s(connection, "SELECT run, digest FROM checksums");
+    while (s.Step()) recorded[static_cast<int>(s.Integer(0))] = s.Text(1);
+  }
+  std::set<int> bad;
+  {
+    sqlite::Statement s(connection, "SELECT run FROM runs ORDER BY run");
+    while (s.Step()) {
+      const int run = static_cast<int>(s.Integer(0));
+      auto it = recorded.find(run);
+      if (it == recorded.end() || it->second != RunDigest(connection, run)) bad.insert(run);
+      if (it != recorded.end()) recorded.erase(it);
+    }
+  }
+  for (const auto& [run, digest] : recorded) bad.insert(run);  // a checksum without its run: the run was deleted
+  return {bad.begin(), bad.end()};
+}
 
 int RunsInShard(int runs_total, const Shard& shard) {
   return runs_total <= shard.index ? 0 : (runs_total - shard.index + shard.count - 1) / shard.count;
@@ -43,6 +145,7 @@ void CreateSchema(sqlite::Connection& connection) {
                             PRIMARY KEY(run, parameter_index)) WITHOUT ROWID;
     CREATE TABLE component_peaks(run INTEGER NOT NULL, position INTEGER NOT NULL, component TEXT NOT NULL,
                                  torque REAL NOT NULL, time REAL NOT NULL, PRIMARY KEY(run, position)) WITHOUT ROWID;
+    CREATE TABLE checksums(run INTEGER PRIMARY KEY, digest TEXT NOT NULL);
   )sql");
   CreatePassivityTable(connection);
 }
@@ -60,13 +163,16 @@ FileIdentity ReadIdentity(sqlite::Connection& connection) {
   id.project_name = Get(connection, "project_name");
   id.project_hash = Get(connection, "project_hash");
   id.model = Get(connection, "model");
-  id.shard = {std::stoi(Get(connection, "shard_index")), std::stoi(Get(connection, "shard_count"))};
-  id.runs_total = std::stoi(Get(connection, "runs_total"));
-  id.samples_per_case = std::stoi(Get(connection, "samples_per_case"));
-  const int format = std::stoi(Get(connection, "format"));
+  const int format = GetInteger(connection, "format");
   if (format != kFormat)
     throw InputError("'" + connection.file() + "' has result format " + std::to_string(format) + "; this highlift reads format " +
-                     std::to_string(kFormat));
+                     std::to_string(kFormat) + " (format 2 added the checksum of every run): run the campaign again");
+  id.shard = {GetInteger(connection, "shard_index"), GetInteger(connection, "shard_count")};
+  if (id.shard.count < 1 || id.shard.index >= id.shard.count)
+    throw InputError("'" + connection.file() + "' is damaged: it calls itself shard " + id.shard.ToString() +
+                     "; run the campaign again into a new --out directory");
+  id.runs_total = GetInteger(connection, "runs_total");
+  id.samples_per_case = GetInteger(connection, "samples_per_case");
   return id;
 }
 
@@ -90,6 +196,7 @@ ResultStore::ResultStore(const std::filesystem::path& file, const Project& proje
   // which the next start rejects by name; creating into a temporary name avoids even that).
   const std::filesystem::path partial = file.string() + ".creating";
   std::filesystem::remove(partial);
+  const TemporaryFileGuard removed_on_a_signal(partial.string());
   {
     sqlite::Connection c(partial, sqlite::Connection::Mode::kReadWriteCreate);
     sqlite::Transaction t(c);
@@ -191,6 +298,11 @@ void ResultStore::Write(const RunResult& r) {
       s.Bind(1, static_cast<std::int64_t>(r.run)).Bind(2, static_cast<std::int64_t>(i)).Bind(3, p.element)
           .Bind(4, p.tau).Bind(5, p.time).Run();
     }
+  }
+  {
+    // Of the rows as stored, so that the check reads exactly what it hashes.
+    sqlite::Statement s(*connection_, "INSERT OR REPLACE INTO checksums VALUES(?, ?)");
+    s.Bind(1, static_cast<std::int64_t>(r.run)).Bind(2, RunDigest(*connection_, r.run)).Run();
   }
   t.Commit();
 }

@@ -12,6 +12,7 @@
 //                              order), its largest |torque|
 //   passivity(run, violations, report)   per run, the number of elements whose dissipated power
 //                              fell below zero (sim::PassivityReport) and its brief report
+//   checksums(run, digest)     per run, RunDigest of its rows when it was committed
 #pragma once
 
 #include <filesystem>
@@ -19,6 +20,7 @@
 #include <memory>
 #include <set>
 #include <string>
+#include <vector>
 
 #include "highlift/campaign/campaign.h"
 #include "highlift/componentdb/sqlite.h"
@@ -63,6 +65,15 @@ class ResultStore {
   std::unique_ptr<sqlite::Connection> connection_;
   FileIdentity identity_;
 };
+
+/// The checksum of a run as stored: 16 hex digits of a hash (FNV-1a) of its row in `runs`, its
+/// `run_values` and its `component_peaks`, every number exact; "" when the run is not in the file.
+/// ResultStore::Write records it in `checksums` in the run's transaction. It finds edits and
+/// damage after the run, not a forger who recomputes it.
+std::string RunDigest(sqlite::Connection& connection, int run);
+/// The runs whose rows no longer match their recorded checksum (or have none, or whose checksum
+/// has no run any more), in run order.
+std::vector<int> RunsNotMatchingChecksums(sqlite::Connection& connection);
 
 /// Creates the tables of a result file (empty).
 void CreateSchema(sqlite::Connection& connection);

@@ -46,6 +46,7 @@ CampaignSummary LoadSummary(const std::filesystem::path& file_or_directory) {
   s.shard = id.shard.ToString();
   s.runs_total = detail::RunsInShard(id.runs_total, id.shard);
   s.samples_per_case = id.samples_per_case;
+  s.edited_runs = detail::RunsNotMatchingChecksums(c);
 
   struct CaseInfo {
     std::string name, kind, load_case;
@@ -79,8 +80,12 @@ CampaignSummary LoadSummary(const std::filesystem::path& file_or_directory) {
                                 "peak_time, single_dof FROM runs ORDER BY run");
     while (q.Step()) {
       const int run = static_cast<int>(q.Integer(0));
-      const int k = static_cast<int>(q.Integer(1));
-      runs[run] = {k, static_cast<int>(q.Integer(2)), q.Text(3)};
+      const std::int64_t k = q.Integer(1);
+      if (k < 0 || k >= static_cast<std::int64_t>(cases.size()))
+        throw InputError("'" + file.string() + "' is damaged: run " + std::to_string(run) + " names case " +
+                         std::to_string(k) + ", and the file holds " + std::to_string(cases.size()) +
+                         " case(s); run the campaign again into a new --out directory");
+      runs[run] = {static_cast<int>(k), static_cast<int>(q.Integer(2)), q.Text(3)};
       ++s.runs_done;
       CasePeakRow& row = per_case.at(static_cast<std::size_t>(k));
       ++row.runs;
@@ -118,7 +123,9 @@ CampaignSummary LoadSummary(const std::filesystem::path& file_or_directory) {
   {
     detail::sqlite::Statement q(c, "SELECT run, component, torque, time FROM component_peaks ORDER BY run, position");
     while (q.Step()) {
-      const RunInfo& r = runs.at(static_cast<int>(q.Integer(0)));
+      auto found = runs.find(static_cast<int>(q.Integer(0)));
+      if (found == runs.end()) continue;  // of a deleted run: edited_runs names it
+      const RunInfo& r = found->second;
       const std::string component = q.Text(1);
       const double torque = q.Real(2);
       auto it = envelope.find(component);
@@ -155,7 +162,7 @@ CampaignSummary LoadSummary(const std::filesystem::path& file_or_directory) {
 }
 
 bool CampaignSummary::ok() const {
-  if (failures > 0) return false;
+  if (failures > 0 || interrupted_signal != 0 || !edited_runs.empty()) return false;
   for (const auto& e : envelope)
     if (e.margin && *e.margin < 0) return false;
   return true;
@@ -170,7 +177,11 @@ std::string CampaignSummary::BriefReport() const {
   }
   std::ostringstream out;
   out << "campaign " << campaign_id << " of '" << project_name << "': " << runs_done << "/" << runs_total << " runs"
-      << (complete() ? "" : " (incomplete: run the same command again to resume)") << ", " << failures << " failed";
+      << (interrupted_signal != 0
+              ? " (interrupted by signal " + std::to_string(interrupted_signal) + ": " +
+                    std::to_string(runs_total - runs_done) + " run(s) left to do; run the same command again to resume)"
+              : complete() ? "" : " (incomplete: run the same command again to resume)")
+      << ", " << failures << " failed";
   if (not_passive != 0)
     out << ", " << (not_passive < 0 ? std::string("negative dissipation not recorded")
                                     : std::to_string(not_passive) + " with negative dissipation");
@@ -178,6 +189,9 @@ std::string CampaignSummary::BriefReport() const {
     out << "; smallest margin " << FormatNumber(*worst->margin, 3) << " at " << worst->component << " (" << worst->case_name
         << ", " << worst->sample_label << ")";
   out << (negative ? "; " + std::to_string(negative) + " negative margin(s)" : std::string("; all margins >= 0"));
+  if (!edited_runs.empty())
+    out << "; " << edited_runs.size() << " run(s) (first: run " << edited_runs.front()
+        << ") do not match their checksums: the file was edited or damaged after the runs, do not trust it";
   return out.str();
 }
 
@@ -230,7 +244,8 @@ nlohmann::json CampaignSummary::ToJson() const {
                       {"runs_total", runs_total},  {"runs_done", runs_done}, {"failures", failures},
                       {"not_passive", not_passive >= 0 ? nlohmann::json(not_passive) : nlohmann::json(nullptr)},
                       {"cases", cases},            {"samples_per_case", samples_per_case},
-                      {"parameters", parameters},  {"complete", complete()}, {"ok", ok()}};
+                      {"parameters", parameters},  {"complete", complete()}, {"ok", ok()},
+                      {"interrupted", interrupted_signal != 0}, {"edited_runs", edited_runs}};
   j["envelope"] = nlohmann::json::array();
   for (const auto& e : envelope)
     j["envelope"].push_back({{"component", e.component},   {"torque_N_m", e.torque},   {"case", e.case_name},

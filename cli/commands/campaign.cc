@@ -21,7 +21,11 @@ namespace highlift::cli {
 namespace {
 
 int PrintSummary(const campaign::CampaignSummary& summary, bool json) {
-  if (json) std::cout << summary.ToJson().dump(2) << "\n";
+  if (json) {
+    nlohmann::json document = summary.ToJson();
+    if (summary.interrupted_signal != 0) document["status"] = "interrupted";  // as every interrupted command's
+    std::cout << document.dump(2) << "\n";
+  }
   else std::cout << summary.FullReport() << "\n";
   return summary.complete() && summary.ok() ? kSuccess : kViolated;
 }
@@ -39,7 +43,9 @@ class CampaignCommand : public Command {
                    "every combination of the min and max of these parameters, comma-separated "
                    "(e.g. pdu.motor_inertia,wtb_left.engagement_latency)")
         ->delimiter(',');
-    app.add_option("--samples", options_.samples, "quasi-random points per case over the parameter domains (default 0)");
+    app.add_option("--samples", options_.samples,
+                   "quasi-random points per case over the parameter domains (default 0; at most " +
+                       std::to_string(campaign::CampaignOptions::kMaxSamples) + ")");
     app.add_option("--seed", options_.seed, "seed of the quasi-random points (default 1)");
     app.add_option("--sampling", sampling_, "sobol (default) or lhs (Latin hypercube)");
     app.add_option("--vary", options_.vary,
@@ -47,7 +53,9 @@ class CampaignCommand : public Command {
         ->delimiter(',');
     app.add_option("--model", model_, "full (default: split shafts) or reduced (lumped chains)");
     app.add_option("--elements", options_.shaft_elements,
-                   "spring-dampers per torque shaft in the full model (default: the project's, at least 4)");
+                   "spring-dampers per torque shaft in the full model (default: the project's, at least 4; 1 to " +
+                       std::to_string(sim::DriveNetworkOptions::kMaxShaftElements) + ", as for simulate)")
+        ->check(NumberIn(1, sim::DriveNetworkOptions::kMaxShaftElements));
     app.add_option("--jobs", jobs_, "threads (default: every core)");
     app.add_option("--shard", shard_,
                    "run part I of N (0 <= I < N) into DIR/campaign-shard-I-of-N.sqlite (default inside a Slurm job "
@@ -100,7 +108,9 @@ class CampaignCommand : public Command {
               << campaign::ResultFile(run.directory, run.shard).string() << "\n";
     const campaign::CampaignReport report = campaign::RunCampaign(project, plan, run);
     std::cerr << report.BriefReport() << "\n";
-    return PrintSummary(campaign::LoadSummary(report.file), json_);
+    campaign::CampaignSummary summary = campaign::LoadSummary(report.file);
+    summary.interrupted_signal = report.interrupted_signal;  // main() then exits 130
+    return PrintSummary(summary, json_);
   }
 
  private:

@@ -14,6 +14,7 @@
 #include "command.h"
 #include "highlift/campaign/campaign.h"
 #include "highlift/core/error.h"
+#include "highlift/core/output_file.h"
 #include "highlift/core/project_io.h"
 #include "highlift/core/validate.h"
 #include "highlift/core/text_table.h"
@@ -34,6 +35,7 @@ struct TransientPeak {
   std::string at;         ///< component carrying it
   double time = 0;        ///< s
   bool ok = true;
+  bool interrupted = false;  ///< SIGINT/SIGTERM stopped the simulation: no result
   std::string message;    ///< the simulation's failure
   double wall_seconds = 0;
   sim::PassivityReport passivity;  ///< elements whose dissipated power fell below zero
@@ -53,6 +55,7 @@ TransientPeak RunCase(const Project& project, const reduced_models::PeakCase& pc
   // The largest shaft (or brake) torque on the load path, referred to the shaft speed.
   const campaign::CaseSimulation simulation = campaign::SimulateCase(project, scenario, pc.load_path, options);
   t.ok = simulation.report.ok();
+  t.interrupted = simulation.report.status == sim::SimulationStatus::kInterrupted;
   t.message = simulation.report.message;
   t.wall_seconds = simulation.report.wall_seconds;
   t.passivity = simulation.report.passivity;
@@ -77,8 +80,9 @@ class PeakCommand : public Command {
                  "beside the single-DOF estimate");
     app.add_option("--elements", elements_,
                    "with --transient: spring-dampers per torque shaft (default: the project's "
-                   "shaft_elements, at least 4; 1 to 1000)")
-        ->check(NumberIn(1, 1000));
+                   "shaft_elements, at least 4; 1 to " +
+                       std::to_string(sim::DriveNetworkOptions::kMaxShaftElements) + ")")
+        ->check(NumberIn(1, sim::DriveNetworkOptions::kMaxShaftElements));
   }
   int Run() override {
     const Project project = LoadValidProject(options_.project);
@@ -96,11 +100,18 @@ class PeakCommand : public Command {
       if (!sim::IsDriveSystemProject(project))
         throw InputError("--transient simulates the drive system of the project, which has no components: "
                          "add \"components\" and \"connections\"");
+      // A signal stops the simulation in progress (after its current step) instead of the
+      // process; no case starts after it, and none of them counts as a result.
+      const InterruptibleScope interruptible;
       for (const auto& pc : report.cases) {
+        if (InterruptRequested()) break;
         transient.push_back(RunCase(project, pc, elements_));
         all_ok = all_ok && transient.back().ok;
       }
     }
+    const int interrupted = transient_ && InterruptRequested() ? InterruptSignal() : 0;
+    std::size_t simulated = 0;  // cases whose simulation ran to its end
+    for (const auto& t : transient) simulated += !t.interrupted;
     if (options_.json) {
       nlohmann::json j = report.ToJson();
       if (transient_) {
@@ -118,9 +129,21 @@ class PeakCommand : public Command {
           for (const auto& v : t.passivity.violations)
             violations.push_back({{"element", v.element}, {"time", v.time}, {"power", v.power}, {"duration", v.duration}});
           c["passivity"] = {{"passive", t.passivity.passive()}, {"violations", violations}};
+          c["status"] = t.interrupted ? "interrupted" : t.ok ? "ok" : "failed";
           cases.push_back(c);
         }
         j["transient"] = cases;
+        if (interrupted != 0) {
+          // The document describes an unfinished command: never "ok".
+          j["ok"] = false;
+          j["status"] = "interrupted";
+          j["interrupted"] = {{"signal", interrupted},
+                              {"cases", report.cases.size()},
+                              {"simulated", simulated},
+                              {"message", "interrupted by signal " + std::to_string(interrupted) + " after " +
+                                              std::to_string(simulated) + " of " + std::to_string(report.cases.size()) +
+                                              " simulations; the transient peaks are incomplete"}};
+        }
       }
       std::cout << j.dump(2) << "\n";
     } else {
@@ -135,7 +158,10 @@ class PeakCommand : public Command {
           if (t.ok && (!worst || t.transient > worst->transient)) worst = &t;
         }
         if (worst) std::cout << "; transient worst " << worst->name << ": " << FormatNumber(worst->transient, 4) << " N*m at " << worst->at;
-        if (failed) std::cout << "; " << failed << " simulation(s) failed";
+        if (interrupted != 0)
+          std::cout << "; interrupted by signal " << interrupted << " after " << simulated << " of "
+                    << report.cases.size() << " simulations";
+        else if (failed) std::cout << "; " << failed << " simulation(s) failed";
         if (not_passive) std::cout << "; " << not_passive << " simulation(s) with negative dissipation";
       }
       std::cout << "\n\n" << report.FullReport() << "\n";
@@ -150,11 +176,12 @@ class PeakCommand : public Command {
                         FormatNumber(t.single_dof, 4), FormatNumber(t.transient, 4),
                         std::isfinite(t.Ratio()) ? FormatNumber(t.Ratio(), 3) : "-", t.at.empty() ? "-" : t.at,
                         FormatNumber(t.time, 4),
-                        (t.ok ? "ok" : "failed: " + t.message) +
+                        (t.interrupted ? std::string("interrupted") : t.ok ? std::string("ok") : "failed: " + t.message) +
                             (t.passivity.passive() ? "" : "; " + t.passivity.BriefReport())});
         std::cout << table.ToString();
       }
     }
+    if (interrupted != 0) return kInterruptedExit;
     return report.ok() && all_ok ? kSuccess : kViolated;
   }
 

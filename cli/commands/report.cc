@@ -9,16 +9,17 @@
 // incomplete, has failed runs or a negative margin (the report is written all the same), 2 on
 // invalid input (a campaign of another project among them).
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 
 #include "command.h"
 #include "estimated_project.h"
 #include "highlift/core/error.h"
+#include "highlift/core/output_file.h"
 #include "highlift/core/project_io.h"
 #include "highlift/core/validate.h"
 #include "highlift/core/text_table.h"
 #include "highlift/report/report.h"
+#include "highlift/sim/drive_network.h"
 
 namespace highlift::cli {
 namespace {
@@ -35,8 +36,9 @@ class ReportCommand : public Command {
                  "skip the transient simulation of every sizing case (single-DOF peaks and capacities only)");
     app.add_flag("--no-scenarios", no_scenarios_, "skip the simulation of the project's scenarios (no time histories)");
     app.add_option("--elements", report_.shaft_elements,
-                   "spring-dampers per torque shaft in the simulations (default: the project's shaft_elements, at least 4)")
-        ->check(NumberIn(1, 1000));
+                   "spring-dampers per torque shaft in the simulations (default: the project's shaft_elements, at "
+                   "least 4; 1 to " + std::to_string(sim::DriveNetworkOptions::kMaxShaftElements) + ")")
+        ->check(NumberIn(1, sim::DriveNetworkOptions::kMaxShaftElements));
     app.add_option("--threads", report_.threads, "simulations run side by side (default: all hardware threads)")
         ->check(NumberIn(1, 4096));
   }
@@ -46,15 +48,25 @@ class ReportCommand : public Command {
     const EstimatedProject estimated = LoadEstimatedProject(options_, true);
     report_.transient = !no_transient_;
     report_.scenarios = !no_scenarios_;
-    const report::DesignReport report =
-        report::BuildDesignReport(project, estimated.project, estimated.estimation_brief, report_);
-    const std::string html = report::RenderHtml(report);
+    // The file is checked before the analyses (not an input, a regular file, a writable folder)
+    // and replaced only when the report is complete (highlift::OutputFile).
+    OutputFile file(out_, "report file");
+    report::DesignReport report;
     {
-      std::ofstream file(out_, std::ios::binary);
-      if (!file) throw InputError("cannot write the report to '" + out_ + "': check that the folder exists and is writable");
-      file << html;
-      if (!file.flush()) throw InputError("writing the report to '" + out_ + "' failed (disk full?)");
+      // A signal stops the simulations (each after its current step) instead of the process.
+      const InterruptibleScope interruptible;
+      report = report::BuildDesignReport(project, estimated.project, estimated.estimation_brief, report_);
     }
+    if (InterruptRequested()) {
+      // Its simulations were cut short: a report of them would be wrong. The old file stays.
+      std::cerr << "highlift report: interrupted by signal " << InterruptSignal()
+                << " during the analyses and simulations: no report written; '" << out_
+                << "' is as it was before (run the command again for the whole report)\n";
+      return kInterruptedExit;
+    }
+    const std::string html = report::RenderHtml(report);
+    file.Write(html);
+    file.Commit();
     const auto& t = report.timings;
     if (options_.json) {
       nlohmann::json j = {{"file", out_},

@@ -95,8 +95,9 @@ class SimulateCommand : public Command {
                    "(inertias lumped at gearboxes and stations)");
     app.add_option("--elements", elements_,
                    "Drive-system projects, full model: spring-dampers per torque shaft (default: the "
-                   "project's shaft_elements, at least 4; 1 to 1000)")
-        ->check(NumberIn(1, 1000));
+                   "project's shaft_elements, at least 4; 1 to " +
+                       std::to_string(sim::DriveNetworkOptions::kMaxShaftElements) + ")")
+        ->check(NumberIn(1, sim::DriveNetworkOptions::kMaxShaftElements));
     app.add_option("--max-rows", max_rows_, "Refuse runs that would write more output rows than this (default 1e7)")
         ->check(NumberIn(1, 1e12));
     app.add_flag("--energy", energy_, "Energy bookkeeping: energy.* columns and the balance in the report");

@@ -2,6 +2,8 @@
 
 #include <limits>
 
+#include "highlift/core/output_file.h"
+
 namespace highlift::componentdb::sqlite {
 namespace {
 
@@ -66,6 +68,9 @@ Connection::Connection(const std::filesystem::path& file, Mode mode) : file_(fil
     db_ = nullptr;
     throw Error(m, rc);
   }
+  // Every database a command opens is one of its inputs: no output file may be written over it
+  // (a campaign's result file given to `report --campaign` and as `--out`, a component database).
+  RegisterInputFile(file);
   sqlite3_extended_result_codes(db_, 1);
   sqlite3_busy_timeout(db_, 5000);
   Execute("PRAGMA foreign_keys = ON");

@@ -201,7 +201,9 @@ void OutputFile::CommitAs(const fs::path& other) {
     committed_ = true;
     return;
   }
-  const fs::path target = other == path_ ? target_ : CheckedTarget(other, what_);
+  // Checked again: an input the command read after this file was opened (a campaign database
+  // found through a folder, an import file) is protected as well as the ones read before.
+  const fs::path target = CheckedTarget(other, what_);
   if (::fsync(fd_) != 0 && errno != EINVAL && errno != EROFS) Fail("the data could not be synced to the disk", errno);
   const int fd = fd_;
   fd_ = -1;  // closed below, whatever close() says

@@ -595,9 +595,10 @@ DriveResolution ParseDriveResolution(const std::string& text) {
 }
 
 void DriveNetworkOptions::Validate() const {
-  if (shaft_elements < 0 || shaft_elements > 1000)
+  if (shaft_elements < 0 || shaft_elements > kMaxShaftElements)
     throw InputError("option shaft_elements = " + std::to_string(shaft_elements) +
-                     " must be 0 (the project's setting, at least 4) or 1..1000 spring-dampers per shaft");
+                     " must be 0 (the project's setting, at least 4) or 1.." + std::to_string(kMaxShaftElements) +
+                     " spring-dampers per shaft");
   if (!(friction_speed >= 0 && friction_speed < 1e3))
     throw InputError("option friction_speed = " + FormatMessageNumber(friction_speed) +
                      " rad/s must be >= 0 (0: exact stick/slip) and small against the shaft speed, "

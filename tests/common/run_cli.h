@@ -56,7 +56,31 @@ inline CliResult RunCli(const std::vector<std::string>& args, const std::string&
   return r;
 }
 
-/// The whole content of `file` ("" when it cannot be read).
+/// Starts `highlift args...` from the source directory without waiting, stdout and stderr going
+/// to `dir`/stdout and `dir`/stderr (for tests that send it a signal); returns its pid.
+inline pid_t StartCli(const std::filesystem::path& dir, const std::vector<std::string>& args) {
+  const std::string out = (dir / "stdout").string(), err = (dir / "stderr").string();
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    if (::chdir(HIGHLIFT_SOURCE_DIR) != 0) ::_exit(127);
+    if (!std::freopen(out.c_str(), "w", stdout) || !std::freopen(err.c_str(), "w", stderr)) ::_exit(127);
+    std::vector<char*> argv{const_cast<char*>(HIGHLIFT_CLI_PATH)};
+    for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    ::execv(HIGHLIFT_CLI_PATH, argv.data());
+    ::_exit(127);
+  }
+  return pid;
+}
+
+/// The exit code of a process StartCli started (-1 when a signal ended it).
+inline int WaitCli(pid_t pid) {
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+/// The whole content of a file ("" when it cannot be read).
 inline std::string ReadFile(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
   std::stringstream s;

@@ -38,7 +38,8 @@ TEST(ReportCommand, UnwritableOutputIsNamed) {
   const auto r = highlift::testing::RunCli({"report", "examples/a380_class_flaps.json", "--no-transient",
                                             "--no-scenarios", "--out", "/nonexistent-folder/report.html"});
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.err.find("cannot write the report to '/nonexistent-folder/report.html': check that the folder exists"),
+  EXPECT_NE(r.err.find("cannot write the report file '/nonexistent-folder/report.html': cannot create a file in the "
+                       "folder '/nonexistent-folder' (No such file or directory); check that it exists and is writable"),
             std::string::npos)
       << r.err;
 }

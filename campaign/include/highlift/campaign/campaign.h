@@ -75,7 +75,8 @@ struct CampaignOptions {
   std::vector<std::string> vary;
   /// Model of every run: full (split shafts) or reduced (lumped chains).
   sim::DriveResolution model = sim::DriveResolution::kFull;
-  /// Spring-dampers per torque shaft in the full model; 0: the project's setting (at least 4).
+  /// Spring-dampers per torque shaft in the full model; 0: the project's setting (at least 4);
+  /// otherwise 1 to sim::DriveNetworkOptions::kMaxShaftElements, as for `simulate`.
   int shaft_elements = 0;
   /// Guards of every run, so that a sample that makes the model chatter or stiff becomes a failed
   /// run instead of a run that never ends. A sizing case of the A380-class example takes 4000 to
@@ -87,6 +88,12 @@ struct CampaignOptions {
   static constexpr int kRowsPerRun = 20;
 
   static constexpr int kMaxCorners = 12;  ///< 4096 corners per case
+  /// Quasi-random points per case (--samples): a Latin hypercube draws a permutation of this
+  /// many strata per parameter and run.
+  static constexpr int kMaxSamples = 100000;
+  /// Runs of a whole campaign (cases x samples per case): about 7 kB of results each in the
+  /// A380-class example, and seconds of CPU time each.
+  static constexpr long kMaxRuns = 1000000;
 
   /// Throws InputError naming the option when a value is invalid.
   void Validate() const;
@@ -156,6 +163,9 @@ struct RunResult {
   std::string sample_label;
   std::vector<double> values;       ///< per Plan::parameters
   bool ok = true;
+  /// SIGINT/SIGTERM (highlift::InterruptRequested()) stopped the simulation: the run is not a
+  /// result and stays to do (RunCampaign does not commit it).
+  bool interrupted = false;
   std::string message;              ///< the failure (solver or model) when !ok
   double peak = 0.0;                ///< N*m at the shaft speed, largest on the case's load path
   std::string peak_component;
@@ -208,6 +218,10 @@ struct CampaignReport {
   int runs_done_before = 0;    ///< resumed: already in the file
   int runs_done_now = 0;
   int failures = 0;            ///< of all runs in the file
+  /// SIGINT/SIGTERM stopped this session (0: it ran to the end): the runs it had not finished
+  /// stay to do, and the same command resumes them.
+  int interrupted_signal = 0;
+  int runs_left = 0;           ///< runs of the shard not in the file when the session ended
   double wall_seconds = 0.0;
   double run_seconds = 0.0;    ///< sum over this session's runs of build + single-DOF + simulate
   double simulate_seconds = 0.0;
@@ -219,12 +233,17 @@ struct CampaignReport {
 std::filesystem::path ResultFile(const std::filesystem::path& directory, const Shard& shard);
 
 /// Runs (or resumes) the shard of the plan. Throws InputError when the result file holds another
-/// campaign (nothing is written then).
+/// campaign (nothing is written then), or when another process is running into the same result
+/// file (the message names its pid, host and start time; see the lock file ResultFile + ".lock").
+/// SIGINT/SIGTERM (highlift::InterruptRequested()) stop it cleanly: no new run starts, the runs
+/// the signal interrupted are not committed (they stay to do), the finished ones are, and the
+/// report says so (interrupted_signal).
 CampaignReport RunCampaign(const Project& project, const Plan& plan, const ExecutionOptions& options);
 
 /// Merges complete shard files (given as files or directories holding them) into
 /// `out`/campaign.sqlite. Throws InputError, writing nothing, for shards of different campaigns,
-/// a shard given twice, missing or incomplete shards, or an existing output file.
+/// a shard given twice, missing or incomplete shards, a shard whose runs do not match their
+/// checksums (edited after the runs), an existing output file, or another merge into it.
 std::filesystem::path MergeShards(const std::vector<std::filesystem::path>& inputs, const std::filesystem::path& out);
 
 /// Per component: the largest |torque| of the campaign.
@@ -281,9 +300,15 @@ struct CampaignSummary {
   std::vector<EnvelopeRow> envelope;
   std::vector<CasePeakRow> case_peaks;
   std::vector<FailureRow> failed;
+  /// Set by the command whose session a signal stopped (not stored in the file): the summary
+  /// then says "interrupted" and how to resume.
+  int interrupted_signal = 0;
+  /// Runs whose stored results no longer match the checksum recorded when they were committed
+  /// (edited or damaged since); the summary flags them and is not ok.
+  std::vector<int> edited_runs;
 
   bool complete() const { return runs_done == runs_total; }
-  /// Every margin >= 0 and no failure.
+  /// Every margin >= 0, no failure and not interrupted.
   bool ok() const;
   std::string BriefReport() const;
   std::string FullReport() const;

@@ -1,7 +1,9 @@
 // Output files that never damage data. Every command that writes a file goes through
 // OutputFile (or WriteOutputFile), which
 //   - refuses to write over a file this process read as input (same st_dev/st_ino, whatever the
-//     path or link that names it): RegisterInputFile() is called by the readers;
+//     path or link that names it): RegisterInputFile() is called by the readers (project files,
+//     import files, and every SQLite database a command opens); checked when the file is opened
+//     and again at Commit(), so an input read meanwhile is protected too;
 //   - writes through a symbolic link to its target, and refuses targets that are not regular
 //     files (directories, devices, FIFOs), except "-" for stdout;
 //   - writes to a temporary file beside the target and renames it over the target only on
@@ -33,6 +35,19 @@ void UnregisterTemporaryFile(int slot);
 /// Removes every registered temporary path. Async-signal-safe (unlink only): the CLI calls it
 /// from its SIGINT/SIGTERM handler before it exits.
 void RemoveRegisteredTemporaryFiles() noexcept;
+
+/// RegisterTemporaryFile for the lifetime of the object (a file made under a temporary name and
+/// renamed, or a lock file): removed if a signal ends the process meanwhile.
+class TemporaryFileGuard {
+ public:
+  explicit TemporaryFileGuard(const std::string& path) : slot_(RegisterTemporaryFile(path)) {}
+  ~TemporaryFileGuard() { UnregisterTemporaryFile(slot_); }
+  TemporaryFileGuard(const TemporaryFileGuard&) = delete;
+  TemporaryFileGuard& operator=(const TemporaryFileGuard&) = delete;
+
+ private:
+  int slot_;
+};
 
 class OutputFile {
  public:

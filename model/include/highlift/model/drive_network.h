@@ -59,6 +59,9 @@ struct DriveNetworkOptions {
   double friction_speed = 0.1;
 
   static constexpr int kMinShaftElements = 4;  ///< default lower bound of the split
+  /// Upper bound of shaft_elements: the one range of --elements of simulate, peak, report and
+  /// campaign (a model of 1000 elements per shaft has about 10^5 states).
+  static constexpr int kMaxShaftElements = 1000;
 
   /// Throws InputError naming the option when a value is invalid.
   void Validate() const;
