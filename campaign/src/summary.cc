@@ -6,6 +6,7 @@
 #include "highlift/campaign/campaign.h"
 #include "highlift/core/error.h"
 #include "highlift/core/text_table.h"
+#include "internal.h"
 #include "store.h"
 
 namespace highlift::campaign {
@@ -82,6 +83,7 @@ CampaignSummary LoadSummary(const std::filesystem::path& file_or_directory) {
       const int k = static_cast<int>(q.Integer(1));
       runs[run] = {k, static_cast<int>(q.Integer(2)), q.Text(3)};
       ++s.runs_done;
+      s.rejected_draws += detail::RejectedDraws(runs[run].label);
       CasePeakRow& row = per_case.at(static_cast<std::size_t>(k));
       ++row.runs;
       const std::optional<double> single_dof = q.OptionalReal(9);
@@ -166,7 +168,8 @@ std::string CampaignSummary::BriefReport() const {
   }
   std::ostringstream out;
   out << "campaign " << campaign_id << " of '" << project_name << "': " << runs_done << "/" << runs_total << " runs"
-      << (complete() ? "" : " (incomplete: run the same command again to resume)") << ", " << failures << " failed";
+      << (complete() ? "" : " (incomplete: run the same command again to resume)") << ", " << failures << " failed, "
+      << rejected_draws << " sampled draw(s) rejected for breaking a parameter relation";
   if (worst)
     out << "; smallest margin " << FormatNumber(*worst->margin, 3) << " at " << worst->component << " (" << worst->case_name
         << ", " << worst->sample_label << ")";
@@ -221,6 +224,7 @@ nlohmann::json CampaignSummary::ToJson() const {
   nlohmann::json j = {{"campaign_id", campaign_id}, {"project", project_name}, {"project_hash", project_hash},
                       {"model", model},            {"shard", shard},          {"file", file.string()},
                       {"runs_total", runs_total},  {"runs_done", runs_done}, {"failures", failures},
+                      {"rejected_draws", rejected_draws},
                       {"cases", cases},            {"samples_per_case", samples_per_case},
                       {"parameters", parameters},  {"complete", complete()}, {"ok", ok()}};
   j["envelope"] = nlohmann::json::array();

@@ -257,23 +257,33 @@ TEST(Examples, RequirementsParseInTheConstraintLanguage) {
 namespace highlift {
 namespace {
 
-// Issue 20: every bundled example passes its own sizing rules in size, check and peak; only the
-// infeasible variant, which exists to show a conflict, fails `check` (the README's table).
-TEST(Examples, SizeCheckAndPeakFindNoViolationButTheInfeasibleVariantsConflict) {
+// Issue 20 and issue 26 item 3: `check` passes every example but the infeasible variant, which
+// exists to show a conflict. Since the station torque limiter passes what its brake does not
+// ground (docs/reduced_models.md, "The station torque limiter in a jam"), `size` and `peak` find
+// that the examples' limiter brakes (2 x the lock-out torque) cannot ground what the drive puts
+// into a jammed station: `size` flags max_brake_torque, `peak` the actuators' margins (the
+// simulation agrees: 563-730 N*m at the A380-class actuator inputs against 278 N*m). Pinned here
+// until the examples are re-sized (README's table).
+TEST(Examples, CheckPassesButSizeAndPeakFlagTheStationLimitersThatCannotGroundAJam) {
   struct Expected {
     std::string file;
     int size, check, peak;
   };
-  const Expected expected[] = {{"examples/a380_class_flaps.json", 0, 0, 0},
-                               {"examples/hydraulic_pdu_flaps.json", 0, 0, 0},
-                               {"examples/a320_class_flaps.json", 0, 0, 0},
-                               {"examples/a320_class_slats.json", 0, 0, 0},
-                               {"examples/a380_class_flaps_infeasible.json", 0, 1, 0}};
+  const Expected expected[] = {{"examples/a380_class_flaps.json", 1, 0, 1},
+                               {"examples/hydraulic_pdu_flaps.json", 1, 0, 1},
+                               {"examples/a320_class_flaps.json", 1, 0, 1},
+                               {"examples/a320_class_slats.json", 1, 0, 1},
+                               {"examples/a380_class_flaps_infeasible.json", 1, 1, 1}};
   for (const auto& e : expected) {
     SCOPED_TRACE(e.file);
     const auto size = RunCli({"size", e.file});
     EXPECT_EQ(size.exit_code, e.size) << size.out << size.err;
-    EXPECT_NE(size.out.find("all settings and margins ok"), std::string::npos) << size.out;
+    // The only settings out of their rules are the limiter brakes.
+    for (std::size_t at = size.out.find("OUT OF RANGE"); at != std::string::npos; at = size.out.find("OUT OF RANGE", at + 1)) {
+      const std::size_t line = size.out.rfind('\n', at) + 1;
+      EXPECT_NE(size.out.substr(line, at - line).find("max_brake_torque"), std::string::npos) << size.out;
+    }
+    EXPECT_NE(size.out.find("max_brake_torque"), std::string::npos) << size.out;
     const auto check = RunCli({"check", e.file});
     EXPECT_EQ(check.exit_code, e.check) << check.out << check.err;
     if (e.check == 0) {
@@ -282,7 +292,12 @@ TEST(Examples, SizeCheckAndPeakFindNoViolationButTheInfeasibleVariantsConflict) 
     const auto peak = RunCli({"peak", e.file, "--json"});
     EXPECT_EQ(peak.exit_code, e.peak) << peak.err;
     const nlohmann::json j = nlohmann::json::parse(peak.out);
-    EXPECT_TRUE(j.at("ok").get<bool>());
+    EXPECT_FALSE(j.at("ok").get<bool>());
+    // Only actuators behind a station limiter have negative margins.
+    for (const auto& w : j.at("worst")) {
+      if (w.at("margin").is_null() || w.at("margin").get<double>() >= 0) continue;
+      EXPECT_EQ(w.at("component").get<std::string>().rfind("gra_", 0), 0u) << w.dump();
+    }
     // Every rupture is capped where its wing-tip brake slips, and the cap is what it reports.
     for (const auto& c : j.at("cases")) {
       if (c.at("kind") != "rupture") continue;
