@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <map>
 #include <regex>
 #include <string>
 
@@ -305,6 +306,83 @@ TEST(Examples, CheckPassesButSizeAndPeakFlagTheStationLimitersThatCannotGroundAJ
       ASSERT_FALSE(c.at("stop_limit_N_m").is_null());
       EXPECT_LE(c.at("tau_max_N_m").at("nominal").get<double>(), c.at("stop_limit_N_m").at("nominal").get<double>());
       EXPECT_LE(c.at("tau_max_N_m").at("max").get<double>(), c.at("stop_limit_N_m").at("max").get<double>());
+    }
+  }
+}
+
+}  // namespace
+}  // namespace highlift
+
+namespace highlift {
+namespace {
+
+// Issue 26 item 3: on the bundled examples at the nominal point, `peak --transient` compares every
+// component on a load path with the largest torque the simulations of every jam and rupture put
+// into it. The single-DOF value bounds the actuators and station limiters (the limiter law is the
+// simulated one); where it is not a bound (the rupture cap on the shafts next to the brake, the PDU,
+// which carries both wings) the row says so and by how much; and `peak` gives the actuators the
+// verdict the simulation gives them against the same allowable. (The hydraulic example shares the
+// A380-class transmission; the 16 sampled points per example are not run here: see the report.)
+TEST(Examples, PeakBoundsTheSimulatedActuatorAndLimiterLoadsAndSaysWhereItIsNoBound) {
+  for (const char* file : {"examples/a380_class_flaps.json", "examples/a320_class_flaps.json",
+                           "examples/a320_class_slats.json"}) {
+    SCOPED_TRACE(file);
+    const auto peak = RunCli({"peak", file, "--transient", "--json", "--tightness", "0"});
+    ASSERT_EQ(peak.exit_code, 1) << peak.err;  // the actuators' margins (README)
+    const nlohmann::json j = nlohmann::json::parse(peak.out);
+    std::map<std::string, nlohmann::json> worst;
+    for (const auto& w : j.at("worst")) worst[w.at("component").get<std::string>()] = w;
+    int actuators = 0, limiters = 0, not_bound = 0;
+    for (const auto& c : j.at("transient_components")) {
+      const std::string id = c.at("component").get<std::string>();
+      SCOPED_TRACE(id);
+      const double single_dof = c.at("single_dof_N_m").get<double>(), transient = c.at("transient_N_m").get<double>();
+      const bool bound = c.at("bound").get<bool>();
+      EXPECT_EQ(bound, transient <= single_dof * (1 + 1e-6));
+      if (!bound) {
+        ++not_bound;
+        EXPECT_NEAR(c.at("exceeded_by").get<double>(), transient / single_dof - 1.0, 1e-9);
+      }
+      // Measured: bounded on both flap examples; on the slats the simulated actuator torque in a
+      // jam (about 1017 N*m at every station) exceeds the single-DOF value (290-442 N*m), and the
+      // row says so (open: issue 26 item 3).
+      const bool slats = std::string(file) == "examples/a320_class_slats.json";
+      if (id.rfind("gra_", 0) == 0) {
+        ++actuators;
+        if (!slats) {
+          EXPECT_TRUE(bound) << single_dof << " < " << transient;
+        }
+        EXPECT_GT(transient, 0.0);
+        // The same verdict: the simulated torque against the allowable the margin uses.
+        const double allowable = worst.at(id).at("allowable_N_m").get<double>();
+        const double margin = worst.at(id).at("margin").get<double>();
+        EXPECT_EQ(margin < 0, transient > allowable) << "peak margin " << margin << ", simulated " << transient
+                                                     << " against " << allowable;
+      }
+      if (id.rfind("stl_", 0) == 0 && worst.at(id).at("worst_case").get<std::string>().rfind("jam_", 0) == 0 &&
+          id != "stl_left" && id != "stl_right") {
+        ++limiters;
+        if (!slats) {
+          EXPECT_TRUE(bound) << single_dof << " < " << transient;
+        }
+      }
+    }
+    EXPECT_GT(actuators, 0);
+    EXPECT_GT(limiters, 0);
+    // Each case row says whether its single-DOF value bounds its simulation.
+    int cases_not_bound = 0;
+    for (const auto& t : j.at("transient")) {
+      ASSERT_TRUE(t.at("ok").get<bool>()) << t.dump();
+      EXPECT_EQ(t.at("bound").get<bool>(), t.at("transient").get<double>() <= t.at("single_dof").get<double>() * (1 + 1e-6));
+      cases_not_bound += !t.at("bound").get<bool>();
+    }
+    if (std::string(file) == "examples/a380_class_flaps.json") continue;  // the text once more: the smaller examples
+    const auto text = RunCli({"peak", file, "--transient", "--no-intervals"});
+    if (not_bound > 0) {
+      EXPECT_NE(text.out.find("NOT A BOUND: the simulation exceeds it by"), std::string::npos);
+    }
+    if (cases_not_bound > 0) {
+      EXPECT_NE(text.out.find("NOT A BOUND: exceeded by"), std::string::npos);
     }
   }
 }
