@@ -33,4 +33,8 @@ inline std::string Hex(std::uint64_t value) {
   return s;
 }
 
+/// The draws a sample's label says were rejected for breaking a parameter relation
+/// (Plan::SampleOf appends ", N rejected draw(s)"); 0 when it says none.
+int RejectedDraws(const std::string& label);
+
 }  // namespace highlift::campaign::detail

@@ -4,6 +4,8 @@
 // hypercube points). Everything here is a pure function of the project and the options.
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <map>
 #include <set>
 
 #include <boost/random/sobol.hpp>
@@ -236,6 +238,38 @@ double FromUnit(const SampledParameter& p, double u) {
   return std::clamp(v, p.domain.lo, p.domain.hi);
 }
 
+/// The catalogue's relations (ParameterRelation, which validation enforces) between parameters of
+/// one component of which at least one is a plan parameter; the other side at its value.
+std::vector<SampleRelation> SampleRelations(const Project& project, const std::vector<SampledParameter>& parameters) {
+  std::map<std::string, int> index;
+  for (std::size_t k = 0; k < parameters.size(); ++k) index[parameters[k].Name()] = static_cast<int>(k);
+  std::vector<SampleRelation> out;
+  for (const Component& c : project.components) {
+    const ComponentTypeSpec* spec = FindComponentType(c.type);
+    if (!spec) continue;
+    for (const ParameterRelation& r : spec->relations) {
+      SampleRelation s;
+      s.divisor = r.divisor;
+      s.text = c.id + "." + r.parameter + " <= " + c.id + "." + r.bound +
+               (r.divisor == 1.0 ? std::string() : " / " + FormatNumber(r.divisor, 6));
+      const auto side = [&](const std::string& name, int* at, double* fixed) {
+        if (auto it = index.find(c.id + "." + name); it != index.end()) {
+          *at = it->second;
+          return true;
+        }
+        const auto p = c.parameters.find(name);
+        if (p == c.parameters.end() || !p->second.nominal) return false;
+        *fixed = *p->second.nominal;
+        return true;
+      };
+      if (!side(r.parameter, &s.value_index, &s.value) || !side(r.bound, &s.bound_index, &s.bound)) continue;
+      if (s.value_index < 0 && s.bound_index < 0) continue;  // nothing sampled: validation's business
+      out.push_back(std::move(s));
+    }
+  }
+  return out;
+}
+
 }  // namespace
 
 Sample Plan::SampleOf(int run) const {
@@ -291,7 +325,41 @@ Sample Plan::SampleOf(int run) const {
       s.values[first + j] = FromUnit(parameters[first + j], u);
     }
   }
+  // Draws that break a parameter relation are rejected: the sampled parameters of the broken
+  // relations are drawn again, uniformly, from a stream of (case, point, attempt, parameter)
+  // only; the other coordinates keep their quasi-random values.
+  for (int attempt = 1; attempt <= kMaxDraws; ++attempt) {
+    std::set<int> redraw;
+    for (const SampleRelation& r : relations) {
+      if (r.Holds(s.values)) continue;
+      for (int k : {r.value_index, r.bound_index})
+        if (k >= corner_count) redraw.insert(k);
+    }
+    if (redraw.empty()) break;
+    ++s.rejected;
+    for (int k : redraw) {
+      const std::uint64_t bits = detail::SplitMix64(
+          case_seed ^ detail::SplitMix64(0x51afd7ed558ccd1dULL * static_cast<std::uint64_t>(attempt) +
+                                         0x9e3779b97f4a7c15ULL * static_cast<std::uint64_t>(k + 1) +
+                                         static_cast<std::uint64_t>(n)));
+      s.values[static_cast<std::size_t>(k)] = FromUnit(parameters[static_cast<std::size_t>(k)], Unit(bits));
+    }
+  }
+  if (s.rejected > 0)
+    s.label += ", " + std::to_string(s.rejected) + (s.rejected == 1 ? " rejected draw" : " rejected draws");
   return s;
+}
+
+bool SampleRelation::Holds(const std::vector<double>& values) const {
+  const double v = value_index >= 0 ? values.at(static_cast<std::size_t>(value_index)) : value;
+  const double b = bound_index >= 0 ? values.at(static_cast<std::size_t>(bound_index)) : bound;
+  return v * divisor <= b;
+}
+
+int detail::RejectedDraws(const std::string& label) {
+  const std::size_t at = label.rfind(", ");
+  if (at == std::string::npos || label.find(" rejected draw", at) == std::string::npos) return 0;
+  return std::atoi(label.c_str() + at + 2);
 }
 
 Project Plan::Apply(const Project& project, const Sample& sample) const {
@@ -366,6 +434,7 @@ Plan MakePlan(const Project& project, const CampaignOptions& options) {
     throw InputError(std::to_string(plan.cases.size()) + " case(s) x " + std::to_string(plan.samples_per_case) +
                      " sample(s) = " + std::to_string(runs) + " runs, beyond the limit of " + std::to_string(CampaignOptions::kMaxRuns) +
                      " runs of a campaign: lower --samples (or name fewer --corners), or select fewer cases with --cases");
+  if (options.samples > 0) plan.relations = SampleRelations(project, plan.parameters);
 
   plan.project_hash = ProjectHash(project);
   std::string identity = plan.project_hash + "\nmodel " + sim::ToString(options.model) + "\nelements " +

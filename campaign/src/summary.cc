@@ -6,6 +6,7 @@
 #include "highlift/campaign/campaign.h"
 #include "highlift/core/error.h"
 #include "highlift/core/text_table.h"
+#include "internal.h"
 #include "store.h"
 
 namespace highlift::campaign {
@@ -87,6 +88,7 @@ CampaignSummary LoadSummary(const std::filesystem::path& file_or_directory) {
                          " case(s); run the campaign again into a new --out directory");
       runs[run] = {static_cast<int>(k), static_cast<int>(q.Integer(2)), q.Text(3)};
       ++s.runs_done;
+      s.rejected_draws += detail::RejectedDraws(runs[run].label);
       CasePeakRow& row = per_case.at(static_cast<std::size_t>(k));
       ++row.runs;
       const std::optional<double> single_dof = q.OptionalReal(9);
@@ -181,7 +183,8 @@ std::string CampaignSummary::BriefReport() const {
               ? " (interrupted by signal " + std::to_string(interrupted_signal) + ": " +
                     std::to_string(runs_total - runs_done) + " run(s) left to do; run the same command again to resume)"
               : complete() ? "" : " (incomplete: run the same command again to resume)")
-      << ", " << failures << " failed";
+      << ", " << failures << " failed, "
+      << rejected_draws << " sampled draw(s) rejected for breaking a parameter relation";
   if (not_passive != 0)
     out << ", " << (not_passive < 0 ? std::string("negative dissipation not recorded")
                                     : std::to_string(not_passive) + " with negative dissipation");
@@ -243,6 +246,7 @@ nlohmann::json CampaignSummary::ToJson() const {
                       {"model", model},            {"shard", shard},          {"file", file.string()},
                       {"runs_total", runs_total},  {"runs_done", runs_done}, {"failures", failures},
                       {"not_passive", not_passive >= 0 ? nlohmann::json(not_passive) : nlohmann::json(nullptr)},
+                      {"rejected_draws", rejected_draws},
                       {"cases", cases},            {"samples_per_case", samples_per_case},
                       {"parameters", parameters},  {"complete", complete()}, {"ok", ok()},
                       {"interrupted", interrupted_signal != 0}, {"edited_runs", edited_runs}};

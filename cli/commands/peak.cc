@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <map>
 
 #include "command.h"
 #include "highlift/campaign/campaign.h"
@@ -39,8 +40,68 @@ struct TransientPeak {
   std::string message;    ///< the simulation's failure
   double wall_seconds = 0;
   sim::PassivityReport passivity;  ///< elements whose dissipated power fell below zero
+  std::map<std::string, double> components;  ///< |torque| N*m at each component's own speed
   double Ratio() const { return single_dof > 0 ? transient / single_dof : NAN; }
+  /// The single-DOF estimate (a rupture's: capped where the brake slips) is at least the simulated
+  /// peak on the load path, within kBoundTolerance.
+  bool Bound() const;
 };
+
+constexpr double kBoundTolerance = 1e-6;  // relative: simulated torques within this count as at the bound
+
+bool TransientPeak::Bound() const { return transient <= single_dof * (1.0 + kBoundTolerance); }
+
+/// A component's single-DOF value beside the largest transient torque of any simulated case, both
+/// at its own speed: the single-DOF value is a bound when the simulation stays at or below it.
+struct ComponentCheck {
+  std::string component;
+  double single_dof = 0;  ///< N*m, nominal, worst over the cases whose load path it is on
+  std::string single_dof_case;
+  double transient = 0;   ///< N*m, largest |torque| over every simulated case
+  std::string transient_case;
+  /// transient / single_dof - 1 when the simulation exceeds the single-DOF value (beyond the
+  /// simulation's torque tolerance), else 0.
+  double exceeded_by = 0;
+  bool bound() const { return exceeded_by <= 0; }
+};
+
+std::vector<ComponentCheck> CompareComponents(const reduced_models::PeakReport& report,
+                                              const std::vector<TransientPeak>& transient) {
+  std::vector<ComponentCheck> out;
+  for (const auto& w : report.worst) {
+    ComponentCheck c;
+    c.component = w.component;
+    c.single_dof = w.local_nominal;
+    c.single_dof_case = w.worst_case;
+    for (const auto& t : transient) {
+      auto it = t.components.find(w.component);
+      if (t.ok && it != t.components.end() && it->second > c.transient) {
+        c.transient = it->second;
+        c.transient_case = t.name;
+      }
+    }
+    if (c.transient > c.single_dof * (1.0 + kBoundTolerance))
+      c.exceeded_by = c.single_dof > 0 ? c.transient / c.single_dof - 1.0 : INFINITY;
+    out.push_back(c);
+  }
+  return out;
+}
+
+/// A gear's element reports the torque at its geared flange (a branch gearbox: the branch); the
+/// single-DOF table gives every component's torque at its input flange: the factor w_geared /
+/// w_input turns the one into the other (power through an ideal gear). 1 for every other
+/// component and for actuators (their element's torque is at their input).
+double InputSideFactor(const Project& project, const std::string& id) {
+  const Component* c = project.FindComponent(id);
+  const ComponentTypeSpec* spec = c ? FindComponentType(c->type) : nullptr;
+  const model::ComponentModel* m = c ? model::FindComponentModel(c->type) : nullptr;
+  if (!spec || !m || m->roles().actuator || !spec->GearedPort() || !spec->FindPort("input")) return 1.0;
+  try {
+    return m->SpeedRatio(*c, "input", spec->GearedPort()->name);
+  } catch (const InputError&) {
+    return 1.0;
+  }
+}
 
 TransientPeak RunCase(const Project& project, const reduced_models::PeakCase& pc, int elements) {
   TransientPeak t;
@@ -62,6 +123,7 @@ TransientPeak RunCase(const Project& project, const reduced_models::PeakCase& pc
   t.transient = simulation.load_path_peak.tau;
   t.at = simulation.load_path_peak.element;
   t.time = simulation.load_path_peak.time;
+  for (const auto& p : simulation.components) t.components[p.element] = std::abs(p.tau) * InputSideFactor(project, p.element);
   return t;
 }
 
@@ -124,6 +186,7 @@ class PeakCommand : public Command {
                               {"time", t.time},          {"ok", t.ok},
                               {"wall_seconds", t.wall_seconds}};
           c["ratio"] = std::isfinite(t.Ratio()) ? nlohmann::json(t.Ratio()) : nlohmann::json(nullptr);
+          c["bound"] = t.Bound();  // false: the single-DOF value is not a bound of this simulation
           if (!t.ok) c["message"] = t.message;
           nlohmann::json violations = nlohmann::json::array();
           for (const auto& v : t.passivity.violations)
@@ -144,6 +207,17 @@ class PeakCommand : public Command {
                                               std::to_string(simulated) + " of " + std::to_string(report.cases.size()) +
                                               " simulations; the transient peaks are incomplete"}};
         }
+        nlohmann::json components = nlohmann::json::array();
+        for (const auto& c : CompareComponents(report, transient))
+          components.push_back({{"component", c.component},
+                                 {"single_dof_N_m", c.single_dof},
+                                 {"single_dof_case", c.single_dof_case},
+                                 {"transient_N_m", c.transient},
+                                 {"transient_case", c.transient_case},
+                                 {"bound", c.bound()},
+                                 {"exceeded_by", std::isfinite(c.exceeded_by) ? nlohmann::json(c.exceeded_by)
+                                                                              : nlohmann::json(nullptr)}});
+        j["transient_components"] = components;
       }
       std::cout << j.dump(2) << "\n";
     } else {
@@ -169,16 +243,34 @@ class PeakCommand : public Command {
         std::cout << "Transient peaks (full-resolution simulation) beside the single-DOF estimate, N*m at the "
                      "shaft speed\n(jams while extending, ruptures while retracting with the airload aiding the motion,\nfailure at "
                      "1 s, as the single-DOF estimate assumes):\n";
-        TextTable table({"case", "simulated as (load case)", "single-DOF", "transient", "ratio", "at", "t [s]", "status"},
-                        {2, 3, 4, 6});
+        TextTable table({"case", "simulated as (load case)", "single-DOF", "transient", "ratio", "single-DOF value", "at",
+                         "t [s]", "simulation"},
+                        {2, 3, 4, 7});
         for (const auto& t : transient)
           table.AddRow({t.name, t.scenario + (t.load_case.empty() ? "" : " (" + t.load_case + ")"),
                         FormatNumber(t.single_dof, 4), FormatNumber(t.transient, 4),
-                        std::isfinite(t.Ratio()) ? FormatNumber(t.Ratio(), 3) : "-", t.at.empty() ? "-" : t.at,
-                        FormatNumber(t.time, 4),
+                        std::isfinite(t.Ratio()) ? FormatNumber(t.Ratio(), 3) : "-",
+                        !t.ok ? "-" : t.Bound() ? "bound" : "NOT A BOUND: exceeded by " + FormatNumber(100.0 * (t.Ratio() - 1.0), 3) + " %",
+                        t.at.empty() ? "-" : t.at, FormatNumber(t.time, 4),
                         (t.interrupted ? std::string("interrupted") : t.ok ? std::string("ok") : "failed: " + t.message) +
                             (t.passivity.passive() ? "" : "; " + t.passivity.BriefReport())});
         std::cout << table.ToString();
+        std::cout << "\nPer component: the single-DOF value (nominal, its worst case) beside the largest transient torque of "
+                     "any simulated case,\nN*m at the component's own speed; \"not a bound\" when the simulation exceeds "
+                     "the single-DOF value:\n";
+        TextTable per({"component", "single-DOF", "case", "transient", "case", "single-DOF value"}, {1, 3});
+        int exceeded = 0;
+        for (const auto& c : CompareComponents(report, transient)) {
+          exceeded += !c.bound();
+          per.AddRow({c.component, FormatNumber(c.single_dof, 4), c.single_dof_case, FormatNumber(c.transient, 4),
+                      c.transient_case.empty() ? "-" : c.transient_case,
+                      c.bound() ? "bound"
+                                : "NOT A BOUND: the simulation exceeds it by " +
+                                      (std::isfinite(c.exceeded_by) ? FormatNumber(100.0 * c.exceeded_by, 3) + " %"
+                                                                    : std::string("(no single-DOF load)"))});
+        }
+        std::cout << per.ToString();
+        if (exceeded) std::cout << exceeded << " component(s) where the single-DOF value is not a bound\n";
       }
     }
     if (interrupted != 0) return kInterruptedExit;

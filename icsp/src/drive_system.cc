@@ -752,6 +752,26 @@ class Builder {
         };
         setting("", "lockout_torque_extend", "extend", "");
         if (HasParam(c, "lockout_torque_retract")) setting("_retract", "lockout_torque_retract", "retract", " in retract");
+        // As reduced_models' rule for max_brake_torque: in a jam behind it the limiter's brake
+        // must ground the static torque the drive can put into it (the PDU stall torque capped by
+        // the system torque limiters inboard, at its speed) minus its end-stop torque, for the
+        // actuator to see no more than the end-stop torque (LimiterPassedTorque).
+        const Component& pdu = *Find(root_);
+        if (station && HasParam(c, "max_brake_torque") && HasValue(c, "end_stop_torque") && HasValue(pdu, "stall_torque")) {
+          Sym available = Reader(*this, pdu)("stall_torque");
+          for (int k = limited; k >= 0; k = peaks_->nodes[k].parent) {
+            const Component& u = *Find(peaks_->nodes[k].id);
+            if (HasRole(u, &model::ComponentRoles::wing_limiter) && HasValue(u, "lockout_torque_extend"))
+              available = min(available, Reader(*this, u)("lockout_torque_extend") * SpeedRatioOf(u.id));
+          }
+          const Sym grounding =
+              Define(p + "jam_grounding", "N*m",
+                     "torque the limiter's brake grounds in a jam behind it: the PDU stall torque capped by the system "
+                     "torque limiters, at its speed, minus its end-stop torque",
+                     available / SpeedRatioOf(peaks_->nodes[limited].id) - Reader(*this, c)("end_stop_torque"), Whole());
+          Define(p + "brake_margin", "N*m", "limiter brake margin, max_brake_torque minus the jam torque it grounds",
+                 Var(p + "max_brake_torque") - grounding, Whole());
+        }
       } else if (roles.tip_brake && HasParam(c, "static_capacity")) {
         // Holding (as reduced_models' rule for the static capacity): the larger of the wing's
         // operating torque at its root and the back-drive of its actuators' airloads through
@@ -963,20 +983,27 @@ class Builder {
     Derived(p + "total_torque", "N*m", Whole());
     Law(p + "total_torque", "peak load of '" + pc.name + "', " + total_what, p + "total_torque == " + total);
     // The load of each component on the path (at the PDU speed); in a jam, what lies behind a
-    // station torque limiter sees at most its end-stop torque.
-    std::string cap;
+    // station torque limiter is what its type's law passes on (ComponentModel::JamPassedTorque,
+    // the law reduced_models' peak uses: its end-stop torque while its brake grounds the excess).
+    Sym through = Var(p + "total_torque");
     for (auto id = pc.load_path.rbegin(); id != pc.load_path.rend(); ++id) {
       const Component& c = *Find(*id);
       Derived(p + c.id, "N*m", Whole());
-      Law(p + c.id, "peak load of '" + pc.name + "' at " + c.id,
-          p + c.id + " == " + (cap.empty() ? p + "total_torque" : "min(" + p + "total_torque, " + cap + ")"));
-      // A limiter in a down-drive (LimitedPort) caps only when the path goes on through that port.
+      Law(p + c.id, "peak load of '" + pc.name + "' at " + c.id, p + c.id + " == " + through.Text());
+      // A limiter in a down-drive (LimitedPort) limits only when the path goes on through that port.
       const int k = node_index_.at(c.id), limited = LimitedNode(k);
       const bool behind = limited == k || (std::next(id) != pc.load_path.rend() && node_index_.at(*std::next(id)) == limited);
-      if (pc.kind == kJamKind && behind && HasRole(c, &model::ComponentRoles::station_limiter) &&
-          HasValue(c, "end_stop_torque")) {
-        const std::string end_stop = Value(c, "end_stop_torque") + " * " + SpeedRatio(limited);
-        cap = cap.empty() ? end_stop : "min(" + cap + ", " + end_stop + ")";
+      const model::ComponentModel* m = ModelOf(c);
+      if (pc.kind == kJamKind && behind && m && HasRole(c, &model::ComponentRoles::station_limiter)) {
+        const std::optional<Sym> passed =
+            m->JamPassedTorque(Reader(*this, c), through, SpeedRatioOf(peaks_->nodes[limited].id));
+        if (passed && !passed->missing()) {
+          Derived(p + c.id + ".passed", "N*m", Whole());
+          Law(p + c.id + ".passed",
+              "torque " + c.id + " passes on in '" + pc.name + "': its end-stop torque, or the excess over its brake",
+              p + c.id + ".passed == " + passed->Text());
+          through = Var(p + c.id + ".passed");
+        }
       }
     }
   }

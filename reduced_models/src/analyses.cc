@@ -413,7 +413,8 @@ PeakReport AnalysePeaks(const Project& project, const PeakOptions& options) {
     pc.tau_static = static_torque;
     pc.tau_static_bounds = static_bounds.ToDomain();
     pc.note = "static part: PDU stall torque, capped by the system torque limiter on the path; components behind "
-              "a station torque limiter see at most its end-stop torque";
+              "a station torque limiter see what it does not ground: its end-stop torque, or the excess over its "
+              "brake torque";
     Interval omega(pc.omega), J(pc.J_star);
     if (options.intervals) Enclose(g, focus, elements, all, &omega, &J);
     pc.tau_dynamic.bounds = (w_operating_all * omega * J).ToDomain();
@@ -524,34 +525,37 @@ PeakReport AnalysePeaks(const Project& project, const PeakOptions& options) {
   }
 
   // Worst case per component on any load path, with its allowable. In a jam, a station torque
-  // limiter locks out and grounds the excess: what lies behind it sees at most its end-stop torque.
-  // The cap (nominal and its enclosure) and everything after it are taken over the same domains
-  // as the case's enclosure, so the margin below is guaranteed: the smallest allowable against
-  // the largest local torque.
+  // limiter grounds into its housing what its brake holds: what lies behind it sees the torque
+  // its type's law passes on (ComponentModel::JamPassedTorque: at most the end-stop torque while
+  // the brake grounds the excess, the excess over the brake torque beyond). The torque passed
+  // (nominal and its enclosure) and everything after it are taken over the same domains as the
+  // case's enclosure, so the margin below is guaranteed: the smallest allowable against the
+  // largest local torque.
   std::map<std::string, ComponentPeak> worst;
   for (const auto& pc : report.cases) {
-    double cap = kInf;               // N*m at the reference speed, nominal
-    Interval cap_bounds(kInf, kInf);  // its enclosure
+    Bounded through = pc.tau_total;  // N*m at the reference speed: what reaches the component
     for (auto id = pc.load_path.rbegin(); id != pc.load_path.rend(); ++id) {
       const int k = g.Find(*id);
-      Bounded torque = pc.tau_total;
-      torque.nominal = std::min(torque.nominal, cap);
-      torque.bounds = detail::Min(Interval::FromDomain(torque.bounds), cap_bounds).ToDomain();
       auto& w = worst[*id];
-      if (w.component.empty() || torque.bounds.hi > w.torque.bounds.hi) {
+      if (w.component.empty() || through.bounds.hi > w.torque.bounds.hi) {
         w.component = *id;
         w.worst_case = pc.name;
-        w.torque = torque;
+        w.torque = through;
       }
-      // A limiter in a down-drive (LimitedPort) caps only when the path goes on through that port.
+      // A limiter in a down-drive (LimitedPort) limits only when the path goes on through that port.
       const int limited = g.LimitedNode(k);
       const bool behind = limited == k || (std::next(id) != pc.load_path.rend() && g.Find(*std::next(id)) == limited);
-      if (pc.kind == kJamKind && behind && g.Roles(k).station_limiter &&
-          detail::HasValue(*g.nodes[k].component, "end_stop_torque")) {
+      const model::ComponentModel* m = detail::ModelOf(*g.nodes[k].component);
+      if (pc.kind == kJamKind && behind && g.Roles(k).station_limiter && m) {
         const Component& limiter = *g.nodes[k].component;
-        cap = std::min(cap, detail::NominalValue(limiter, "end_stop_torque") * speed_ratio[limited]);
-        cap_bounds =
-            detail::Min(cap_bounds, detail::Read<Interval>(limiter, "end_stop_torque", bounds.mode) * bounds.n[limited]);
+        const auto nominal_pass = m->JamPassedTorque(detail::ModeReader<double>(limiter, nominal), through.nominal,
+                                                     speed_ratio[limited]);
+        const auto pass_bounds = m->JamPassedTorque(detail::ModeReader<Interval>(limiter, bounds.mode),
+                                                    Interval::FromDomain(through.bounds), bounds.n[limited]);
+        if (nominal_pass && pass_bounds) {
+          through.nominal = *nominal_pass;
+          through.bounds = pass_bounds->ToDomain();
+        }
       }
     }
   }
@@ -562,6 +566,7 @@ PeakReport AnalysePeaks(const Project& project, const PeakOptions& options) {
     const Component& c = *g.nodes[i].component;
     // Largest torque at the component's own speed: the largest reference torque over the smallest ratio.
     w.local_torque = (Interval(w.torque.bounds.hi) / bounds.n[i]).hi;
+    w.local_nominal = w.torque.nominal / speed_ratio[i];
     // The allowable at its input flange, by its type's law: nominal and over the domains.
     std::optional<Interval> allowable;
     if (const model::ComponentModel* m = detail::ModelOf(c)) {
@@ -671,7 +676,8 @@ nlohmann::json PeakReport::ToJson() const {
   j["worst"] = nlohmann::json::array();
   for (const auto& w : worst)
     j["worst"].push_back({{"component", w.component}, {"worst_case", w.worst_case}, {"tau_max_N_m", bounded(w.torque)},
-                          {"local_torque_N_m", w.local_torque}, {"allowable_name", w.allowable_name},
+                          {"local_torque_N_m", w.local_torque}, {"local_nominal_N_m", w.local_nominal},
+                          {"allowable_name", w.allowable_name},
                           {"allowable_N_m", w.allowable > 0 ? nlohmann::json(w.allowable) : nlohmann::json(nullptr)},
                           {"allowable_min_N_m", w.allowable_min > 0 ? nlohmann::json(w.allowable_min) : nlohmann::json(nullptr)},
                           {"margin", std::isfinite(w.margin) ? nlohmann::json(w.margin) : nlohmann::json(nullptr)}});

@@ -159,6 +159,27 @@ SizingReport Size(const Project& project, const SizingOptions& options) {
     }
     return holding;
   };
+  // The torque a limiter (its limited node `limited`) grounds in a jam behind it: the static
+  // torque the drive can put into it, the PDU stall torque capped by the system torque limiters
+  // inboard, at its speed, minus its end-stop torque. Nullopt without a stall torque.
+  const auto n_nominal = detail::SpeedRatios<double>(g, nominal_mode);
+  const auto n_wide = detail::SpeedRatios<Interval>(g, options.intervals ? interval_mode : nominal_mode);
+  auto jam_grounding = [&](int node, int limited) -> std::optional<Bounded> {
+    const Component& limiter = *g.nodes[node].component;
+    if (!detail::HasValue(pdu, "stall_torque") || !detail::HasValue(limiter, "end_stop_torque")) return std::nullopt;
+    const detail::ParameterMode& mode = options.intervals ? interval_mode : nominal_mode;
+    double available = detail::NominalValue(pdu, "stall_torque");
+    Interval available_all = detail::Read<Interval>(pdu, "stall_torque", mode);
+    for (int k : g.PathToRoot(limited))
+      if (g.Roles(k).wing_limiter && detail::HasValue(*g.nodes[k].component, "lockout_torque_extend")) {
+        const Component& stl = *g.nodes[k].component;
+        available = std::min(available, detail::NominalValue(stl, "lockout_torque_extend") * n_nominal[k]);
+        available_all = detail::Min(available_all, detail::Read<Interval>(stl, "lockout_torque_extend", mode) * n_wide[k]);
+      }
+    const double nominal = available / n_nominal[limited] - detail::NominalValue(limiter, "end_stop_torque");
+    const Interval all = available_all / n_wide[limited] - detail::Read<Interval>(limiter, "end_stop_torque", mode);
+    return options.intervals ? Make(nominal, all) : Make(nominal);
+  };
   // The settings by the sizing rules their component types declare.
   for (std::size_t i = 0; i < g.nodes.size(); ++i) {
     const int node = static_cast<int>(i);
@@ -168,9 +189,12 @@ SizingReport Size(const Project& project, const SizingOptions& options) {
     for (const model::SettingRule& rule : m->SettingRules()) {
       using Against = model::SettingRule::Against;
       if (limited < 0 && rule.against != Against::kWingHolding) continue;
+      std::optional<Bounded> grounding;
+      if (rule.against == Against::kJamGrounding && !(grounding = jam_grounding(node, limited))) continue;
       const Bounded against = rule.against == Against::kOperating          ? operating(limited, "")
                               : rule.against == Against::kOperatingExtend  ? operating(limited, "extend")
                               : rule.against == Against::kOperatingRetract ? operating(limited, "retract")
+                              : rule.against == Against::kJamGrounding     ? *grounding
                                                                            : wing_holding(node);
       recommend(node, rule.parameter, rule.rule, against, rule.factor, rule.factor_min, rule.factor_max);
     }

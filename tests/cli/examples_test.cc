@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <map>
 #include <regex>
 #include <string>
 
@@ -257,23 +258,33 @@ TEST(Examples, RequirementsParseInTheConstraintLanguage) {
 namespace highlift {
 namespace {
 
-// Issue 20: every bundled example passes its own sizing rules in size, check and peak; only the
-// infeasible variant, which exists to show a conflict, fails `check` (the README's table).
-TEST(Examples, SizeCheckAndPeakFindNoViolationButTheInfeasibleVariantsConflict) {
+// Issue 20 and issue 26 item 3: `check` passes every example but the infeasible variant, which
+// exists to show a conflict. Since the station torque limiter passes what its brake does not
+// ground (docs/reduced_models.md, "The station torque limiter in a jam"), `size` and `peak` find
+// that the examples' limiter brakes (2 x the lock-out torque) cannot ground what the drive puts
+// into a jammed station: `size` flags max_brake_torque, `peak` the actuators' margins (the
+// simulation agrees: 563-730 N*m at the A380-class actuator inputs against 278 N*m). Pinned here
+// until the examples are re-sized (README's table).
+TEST(Examples, CheckPassesButSizeAndPeakFlagTheStationLimitersThatCannotGroundAJam) {
   struct Expected {
     std::string file;
     int size, check, peak;
   };
-  const Expected expected[] = {{"examples/a380_class_flaps.json", 0, 0, 0},
-                               {"examples/hydraulic_pdu_flaps.json", 0, 0, 0},
-                               {"examples/a320_class_flaps.json", 0, 0, 0},
-                               {"examples/a320_class_slats.json", 0, 0, 0},
-                               {"examples/a380_class_flaps_infeasible.json", 0, 1, 0}};
+  const Expected expected[] = {{"examples/a380_class_flaps.json", 1, 0, 1},
+                               {"examples/hydraulic_pdu_flaps.json", 1, 0, 1},
+                               {"examples/a320_class_flaps.json", 1, 0, 1},
+                               {"examples/a320_class_slats.json", 1, 0, 1},
+                               {"examples/a380_class_flaps_infeasible.json", 1, 1, 1}};
   for (const auto& e : expected) {
     SCOPED_TRACE(e.file);
     const auto size = RunCli({"size", e.file});
     EXPECT_EQ(size.exit_code, e.size) << size.out << size.err;
-    EXPECT_NE(size.out.find("all settings and margins ok"), std::string::npos) << size.out;
+    // The only settings out of their rules are the limiter brakes.
+    for (std::size_t at = size.out.find("OUT OF RANGE"); at != std::string::npos; at = size.out.find("OUT OF RANGE", at + 1)) {
+      const std::size_t line = size.out.rfind('\n', at) + 1;
+      EXPECT_NE(size.out.substr(line, at - line).find("max_brake_torque"), std::string::npos) << size.out;
+    }
+    EXPECT_NE(size.out.find("max_brake_torque"), std::string::npos) << size.out;
     const auto check = RunCli({"check", e.file});
     EXPECT_EQ(check.exit_code, e.check) << check.out << check.err;
     if (e.check == 0) {
@@ -282,7 +293,12 @@ TEST(Examples, SizeCheckAndPeakFindNoViolationButTheInfeasibleVariantsConflict) 
     const auto peak = RunCli({"peak", e.file, "--json"});
     EXPECT_EQ(peak.exit_code, e.peak) << peak.err;
     const nlohmann::json j = nlohmann::json::parse(peak.out);
-    EXPECT_TRUE(j.at("ok").get<bool>());
+    EXPECT_FALSE(j.at("ok").get<bool>());
+    // Only actuators behind a station limiter have negative margins.
+    for (const auto& w : j.at("worst")) {
+      if (w.at("margin").is_null() || w.at("margin").get<double>() >= 0) continue;
+      EXPECT_EQ(w.at("component").get<std::string>().rfind("gra_", 0), 0u) << w.dump();
+    }
     // Every rupture is capped where its wing-tip brake slips, and the cap is what it reports.
     for (const auto& c : j.at("cases")) {
       if (c.at("kind") != "rupture") continue;
@@ -290,6 +306,83 @@ TEST(Examples, SizeCheckAndPeakFindNoViolationButTheInfeasibleVariantsConflict) 
       ASSERT_FALSE(c.at("stop_limit_N_m").is_null());
       EXPECT_LE(c.at("tau_max_N_m").at("nominal").get<double>(), c.at("stop_limit_N_m").at("nominal").get<double>());
       EXPECT_LE(c.at("tau_max_N_m").at("max").get<double>(), c.at("stop_limit_N_m").at("max").get<double>());
+    }
+  }
+}
+
+}  // namespace
+}  // namespace highlift
+
+namespace highlift {
+namespace {
+
+// Issue 26 item 3: on the bundled examples at the nominal point, `peak --transient` compares every
+// component on a load path with the largest torque the simulations of every jam and rupture put
+// into it. The single-DOF value bounds the actuators and station limiters (the limiter law is the
+// simulated one); where it is not a bound (the rupture cap on the shafts next to the brake, the PDU,
+// which carries both wings) the row says so and by how much; and `peak` gives the actuators the
+// verdict the simulation gives them against the same allowable. (The hydraulic example shares the
+// A380-class transmission; the 16 sampled points per example are not run here: see the report.)
+TEST(Examples, PeakBoundsTheSimulatedActuatorAndLimiterLoadsAndSaysWhereItIsNoBound) {
+  for (const char* file : {"examples/a380_class_flaps.json", "examples/a320_class_flaps.json",
+                           "examples/a320_class_slats.json"}) {
+    SCOPED_TRACE(file);
+    const auto peak = RunCli({"peak", file, "--transient", "--json", "--tightness", "0"});
+    ASSERT_EQ(peak.exit_code, 1) << peak.err;  // the actuators' margins (README)
+    const nlohmann::json j = nlohmann::json::parse(peak.out);
+    std::map<std::string, nlohmann::json> worst;
+    for (const auto& w : j.at("worst")) worst[w.at("component").get<std::string>()] = w;
+    int actuators = 0, limiters = 0, not_bound = 0;
+    for (const auto& c : j.at("transient_components")) {
+      const std::string id = c.at("component").get<std::string>();
+      SCOPED_TRACE(id);
+      const double single_dof = c.at("single_dof_N_m").get<double>(), transient = c.at("transient_N_m").get<double>();
+      const bool bound = c.at("bound").get<bool>();
+      EXPECT_EQ(bound, transient <= single_dof * (1 + 1e-6));
+      if (!bound) {
+        ++not_bound;
+        EXPECT_NEAR(c.at("exceeded_by").get<double>(), transient / single_dof - 1.0, 1e-9);
+      }
+      // Measured: bounded on both flap examples; on the slats the simulated actuator torque in a
+      // jam (about 1017 N*m at every station) exceeds the single-DOF value (290-442 N*m), and the
+      // row says so (open: issue 26 item 3).
+      const bool slats = std::string(file) == "examples/a320_class_slats.json";
+      if (id.rfind("gra_", 0) == 0) {
+        ++actuators;
+        if (!slats) {
+          EXPECT_TRUE(bound) << single_dof << " < " << transient;
+        }
+        EXPECT_GT(transient, 0.0);
+        // The same verdict: the simulated torque against the allowable the margin uses.
+        const double allowable = worst.at(id).at("allowable_N_m").get<double>();
+        const double margin = worst.at(id).at("margin").get<double>();
+        EXPECT_EQ(margin < 0, transient > allowable) << "peak margin " << margin << ", simulated " << transient
+                                                     << " against " << allowable;
+      }
+      if (id.rfind("stl_", 0) == 0 && worst.at(id).at("worst_case").get<std::string>().rfind("jam_", 0) == 0 &&
+          id != "stl_left" && id != "stl_right") {
+        ++limiters;
+        if (!slats) {
+          EXPECT_TRUE(bound) << single_dof << " < " << transient;
+        }
+      }
+    }
+    EXPECT_GT(actuators, 0);
+    EXPECT_GT(limiters, 0);
+    // Each case row says whether its single-DOF value bounds its simulation.
+    int cases_not_bound = 0;
+    for (const auto& t : j.at("transient")) {
+      ASSERT_TRUE(t.at("ok").get<bool>()) << t.dump();
+      EXPECT_EQ(t.at("bound").get<bool>(), t.at("transient").get<double>() <= t.at("single_dof").get<double>() * (1 + 1e-6));
+      cases_not_bound += !t.at("bound").get<bool>();
+    }
+    if (std::string(file) == "examples/a380_class_flaps.json") continue;  // the text once more: the smaller examples
+    const auto text = RunCli({"peak", file, "--transient", "--no-intervals"});
+    if (not_bound > 0) {
+      EXPECT_NE(text.out.find("NOT A BOUND: the simulation exceeds it by"), std::string::npos);
+    }
+    if (cases_not_bound > 0) {
+      EXPECT_NE(text.out.find("NOT A BOUND: exceeded by"), std::string::npos);
     }
   }
 }

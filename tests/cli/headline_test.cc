@@ -220,8 +220,9 @@ TEST(Headline, ExamplesMatchDomainFigures) {
     for (const Figure* f : {&h.pdu_torque, &h.pdu_power, &h.station_input})
       ASSERT_NE(domain.find(f->quote), std::string::npos) << "domain.md no longer says '" << f->quote << "'";
 
+    // Exit 1: the examples' station limiter brakes are out of their rule (README's table, issue 26).
     const auto size = RunCli({"size", h.file, "--json"});
-    ASSERT_EQ(size.exit_code, 0) << size.err << size.out.substr(0, 2000);
+    ASSERT_EQ(size.exit_code, 1) << size.err << size.out.substr(0, 2000);
     const auto report = nlohmann::json::parse(size.out);
     const nlohmann::json* extend = nullptr;
     for (const auto& c : report.at("load_cases"))

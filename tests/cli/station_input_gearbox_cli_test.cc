@@ -1,10 +1,11 @@
 // The station input gearbox end to end: the two-station rig (tests/model/station_input_gearbox.json)
 // through every command, and what its limiter in the down-drive means for the analyses: sizing sets
-// it against the station's torque, a jam behind its branch is capped at its end stop, a jam at
-// another station is not.
+// it against the station's torque, a jam behind its branch gets what its brake does not ground, a
+// jam at another station is not limited.
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -156,8 +157,17 @@ TEST(StationInputGearbox, SizingSetsItsLimiterAgainstTheStationTorque) {
     return best;
   };
   int found = 0;
+  int brakes = 0;
   for (const auto& s : report.settings) {
     if (s.component != "sig_1" && s.component != "sig_2") continue;
+    if (s.parameter == "max_brake_torque") {
+      // The brake grounds what the drive can put into a jammed station above the end stop: the
+      // STL's 160 N*m at the shaft is 320 N*m behind the 2:1 stage, minus the default end stop
+      // 1.25 x 180 N*m.
+      EXPECT_DOUBLE_EQ(s.operating.nominal, 160.0 * 2.0 - 1.25 * 180.0) << s.component;
+      ++brakes;
+      continue;
+    }
     const std::string station = s.component == "sig_1" ? "gra_1" : "gra_2";
     const std::string direction = s.parameter == "lockout_torque_extend" ? "extend" : "retract";
     // The torque through the limiter is the actuator's input torque, not the unit's own input
@@ -167,17 +177,23 @@ TEST(StationInputGearbox, SizingSetsItsLimiterAgainstTheStationTorque) {
     ++found;
   }
   EXPECT_EQ(found, 4);
+  EXPECT_EQ(brakes, 2);
   // domain.md s3: the opposing 20 kN*m through 200:1 at 0.85 is 117.6 N*m at the actuator input.
   EXPECT_NEAR(torque("gra_1", "extend"), 20e3 / (200 * 0.85), 0.5);
 }
 
-TEST(StationInputGearbox, JamIsCappedBehindItsBranchOnly) {
+// Issue 26 item 3: behind its branch a jammed actuator gets what the limiter's brake does not
+// ground, min(tau_in, max(tau_2, tau_in - tau_B_max)) (docs/reduced_models.md); the through shaft
+// to the other stations is not limited.
+TEST(StationInputGearbox, JamPassesWhatTheLimiterBrakeDoesNotGroundBehindItsBranchOnly) {
   const double end_stop_at_shaft = 1.25 * 180.0 / 2.0;  // default end stop 1.25 x tau1, behind 2:1
-  auto jam = [&](const std::string& name) {
+  const double brake_at_shaft = 2.0 * 180.0 / 2.0;      // default max_brake_torque 2 x tau1, behind 2:1
+  auto passed = [&](double total) { return std::min(total, std::max(end_stop_at_shaft, total - brake_at_shaft)); };
+  auto jam = [&](const Project& project, const std::string& name) {
     reduced_models::PeakOptions options;
     options.intervals = false;
     options.only_case = name;
-    return reduced_models::AnalysePeaks(Rig(), options);
+    return reduced_models::AnalysePeaks(project, options);
   };
   auto worst = [](const reduced_models::PeakReport& report, const std::string& id) {
     for (const auto& w : report.worst)
@@ -185,20 +201,26 @@ TEST(StationInputGearbox, JamIsCappedBehindItsBranchOnly) {
     ADD_FAILURE() << id << " is not on the load path";
     return 0.0;
   };
-  // A jam at station 1: what lies behind sig_1's branch sees at most the end stop.
-  const auto first = jam("jam_gra_1");
+  // A jam at station 1: the brake grounds 180 N*m (at the shaft), gra_1 gets the rest.
+  const auto first = jam(Rig(), "jam_gra_1");
   ASSERT_EQ(first.cases.size(), 1u);
-  EXPECT_GT(first.cases[0].tau_total.nominal, 2 * end_stop_at_shaft);
-  EXPECT_DOUBLE_EQ(worst(first, "gra_1"), end_stop_at_shaft);
-  EXPECT_DOUBLE_EQ(worst(first, "sig_1"), first.cases[0].tau_total.nominal);
-  // A jam at station 2 passes sig_1 on its through shaft: sig_1's limiter caps nothing there,
-  // sig_2's caps gra_2.
-  const auto second = jam("jam_gra_2");
+  const double total_1 = first.cases[0].tau_total.nominal;
+  EXPECT_GT(total_1, end_stop_at_shaft + brake_at_shaft);
+  EXPECT_DOUBLE_EQ(worst(first, "gra_1"), passed(total_1));
+  EXPECT_DOUBLE_EQ(worst(first, "gra_1"), total_1 - brake_at_shaft);
+  EXPECT_DOUBLE_EQ(worst(first, "sig_1"), total_1);
+  // A jam at station 2 passes sig_1 on its through shaft: sig_1's limiter limits nothing there,
+  // sig_2's limits gra_2.
+  const auto second = jam(Rig(), "jam_gra_2");
   ASSERT_EQ(second.cases.size(), 1u);
   const double total = second.cases[0].tau_total.nominal;
-  EXPECT_GT(total, 2 * end_stop_at_shaft);
+  EXPECT_GT(total, end_stop_at_shaft + brake_at_shaft);
   for (const char* id : {"shaft_1", "sig_1", "shaft_2", "sig_2"}) EXPECT_DOUBLE_EQ(worst(second, id), total) << id;
-  EXPECT_DOUBLE_EQ(worst(second, "gra_2"), end_stop_at_shaft);
+  EXPECT_DOUBLE_EQ(worst(second, "gra_2"), passed(total));
+  // A brake that grounds the whole jam leaves the actuator at the end-stop torque.
+  Project strong = Rig();
+  strong.FindComponent("sig_1")->parameters["max_brake_torque"].nominal = 2.0 * total_1;  // N*m at the branch
+  EXPECT_DOUBLE_EQ(worst(jam(strong, "jam_gra_1"), "gra_1"), end_stop_at_shaft);
 }
 
 }  // namespace

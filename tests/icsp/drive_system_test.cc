@@ -188,6 +188,7 @@ void ExpectAgreementWithSize(const std::string& file) {
   for (const reduced_models::SettingRecommendation& r : size.settings) {
     const std::string name = r.component + (r.parameter == "lockout_torque_extend"    ? ".torque_through"
                                             : r.parameter == "lockout_torque_retract" ? ".torque_through_retract"
+                                            : r.parameter == "max_brake_torque"       ? ".jam_grounding"
                                                                                       : ".holding_torque");
     expect(name, r.operating);
     ++compared;

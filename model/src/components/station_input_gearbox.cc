@@ -47,6 +47,7 @@ ComponentTypeSpec StationInputGearboxDeclaration() {
                    .Side(ReferenceSide::kActuatorInput));
   ps.push_back(SpanPosition());
   t.roles = {.lumps_inertia = true, .station_limiter = true};
+  t.relations = TorqueLimiterRelations();
   return t;
 }
 
@@ -80,6 +81,13 @@ class StationInputGearboxModel final : public NamedModel {
     return out;
   }
   HIGHLIFT_LUMPED_LAW
+
+  /// Its limiter in a jam of the station: the law of every torque limiter (torque_limiter.h).
+  template <class T>
+  std::optional<T> PassLaw(const ParameterReader<T>& p, const T& tau_in, const T& n) const {
+    return LimiterPassLaw(p, tau_in, n);
+  }
+  HIGHLIFT_JAM_PASSED_LAW
 
   std::vector<SettingRule> SettingRules() const override { return StationLimiterSettingRules(); }
 

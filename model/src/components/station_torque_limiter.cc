@@ -22,6 +22,7 @@ ComponentTypeSpec StationTorqueLimiterDeclaration() {
                                  ReferenceSide::kActuatorInput));
   t.parameters.push_back(SpanPosition());
   t.roles = {.lumps_inertia = true, .station_limiter = true};
+  t.relations = TorqueLimiterRelations();
   return t;
 }
 

@@ -19,6 +19,7 @@ ComponentTypeSpec SystemTorqueLimiterDeclaration() {
                                  ReferenceSide::kShaft));
   t.parameters.push_back(SpanPosition());
   t.roles = {.lumps_inertia = true, .wing_limiter = true};
+  t.relations = TorqueLimiterRelations();
   return t;
 }
 

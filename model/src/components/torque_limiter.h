@@ -63,6 +63,15 @@ inline void AddTorqueLimiter(std::vector<ParameterSpec>& ps, double tau1, double
                    .Side(side));
 }
 
+/// The relations of a limiter's settings that their ranges cannot express: both lock-out
+/// torques below the end-stop torque (paper fig. 4: the balls leave their seats at tau_1 and
+/// reach the end stop at tau_2).
+inline std::vector<ParameterRelation> TorqueLimiterRelations() {
+  const std::string note = "the balls reach their end stop above the lock-out torque, paper fig. 4";
+  return {{"lockout_torque_extend", "end_stop_torque", 1.0, "the end-stop torque", note},
+          {"lockout_torque_retract", "end_stop_torque", 1.0, "the end-stop torque", note}};
+}
+
 /// The element parameters of a HighLift.Mechanical.TorqueLimiter from a component's limiter
 /// settings and stiffnesses (AddTorqueLimiter) and its inertia parameter `inertia`. Throws
 /// InputError when the end stop does not exceed both lock-out torques.
@@ -88,6 +97,31 @@ inline Scalars TorqueLimiterScalars(const Component& c, ExpansionContext& x, con
           {"J", Require(c, inertia)}};
 }
 
+/// The torque a torque limiter passes on to a jammed output when `tau_in` arrives at its input
+/// (every torque at one speed). The paper's limiter (fig. 5) is a shaft brake that grounds the
+/// input side with y tau_B_max, y of eq. (2), in series with the nonlinear spring of fig. 4 that
+/// carries the rest to the output. Below the end stop (y < 1) the spring carries less than tau_2;
+/// at the end stop (y = 1) the brake, while it slides, grounds tau_B_max and the spring carries
+/// tau_in - tau_B_max; once it holds, the output's twist and torque are frozen. So the jammed
+/// output sees at most max(tau_2, tau_in - tau_B_max), and never more than arrives:
+///   tau_out = min(tau_in, max(tau_2, tau_in - tau_B_max)).
+/// A limiter whose brake (its lock-out into the housing) grounds what the drive can deliver
+/// passes tau_2; one whose brake is weaker passes the excess (docs/reduced_models.md).
+template <class T>
+T LimiterPassedTorque(const T& tau_in, const T& tau2, const T& tauB_max) {
+  using std::max;
+  using std::min;
+  return min(tau_in, max(tau2, tau_in - tauB_max));
+}
+
+/// LimiterPassedTorque with a limiter's parameters, every torque n x its own (n: the limiter's
+/// speed over the reference speed); nullopt without the settings.
+template <class T>
+std::optional<T> LimiterPassLaw(const ParameterReader<T>& p, const T& tau_in, const T& n) {
+  if (!p.Has("end_stop_torque") || !p.Has("max_brake_torque")) return std::nullopt;
+  return LimiterPassedTorque(tau_in, p("end_stop_torque") * n, p("max_brake_torque") * n);
+}
+
 /// The setting rules of a limiter in front of one station: extend against the station's largest
 /// extend torque; retract: the aiding airload leaves little drive torque, the rule applies to
 /// what remains, and the project's asymmetric setting (domain.md s3: 0.7 x extend) is checked
@@ -95,7 +129,12 @@ inline Scalars TorqueLimiterScalars(const Component& c, ExpansionContext& x, con
 inline std::vector<SettingRule> StationLimiterSettingRules() {
   const std::string rule = "1.3-1.6 x station max operating torque (domain.md s6)";
   return {{"lockout_torque_extend", rule, SettingRule::Against::kOperatingExtend, 1.5, 1.3, 1.6},
-          {"lockout_torque_retract", rule, SettingRule::Against::kOperatingRetract, 1.5, 1.3, kInfinity}};
+          {"lockout_torque_retract", rule, SettingRule::Against::kOperatingRetract, 1.5, 1.3, kInfinity},
+          {"max_brake_torque",
+           ">= the static jam torque it must ground (PDU stall torque, capped by the system torque limiter, at its "
+           "speed, minus its end-stop torque), so that a jammed actuator sees at most the end-stop torque "
+           "(docs/reduced_models.md)",
+           SettingRule::Against::kJamGrounding, 1.25, 1.0, kInfinity}};
 }
 
 class TorqueLimiterModel : public NamedModel {
@@ -112,6 +151,12 @@ class TorqueLimiterModel : public NamedModel {
     return out;
   }
   HIGHLIFT_LUMPED_LAW
+
+  template <class T>
+  std::optional<T> PassLaw(const ParameterReader<T>& p, const T& tau_in, const T& n) const {
+    return LimiterPassLaw(p, tau_in, n);
+  }
+  HIGHLIFT_JAM_PASSED_LAW
 
   void Expand(const Component& c, ExpansionContext& x) const override {
     x.Add("TorqueLimiter", c.id, TorqueLimiterScalars(c, x, "inertia"), c.id);

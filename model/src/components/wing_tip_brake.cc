@@ -42,6 +42,8 @@ ComponentTypeSpec WingTipBrakeDeclaration() {
                        ReferenceSide::kShaft));
   ps.push_back(SpanPosition());
   t.roles = {.tip_brake = true, .lumps_inertia = true};
+  t.relations = {{"max_dynamic_torque", "static_capacity", 1.0, "its static capacity",
+                  "a friction brake holds at least the torque it passes while sliding (paper, shaft brake)"}};
   return t;
 }
 

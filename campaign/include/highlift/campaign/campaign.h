@@ -119,11 +119,25 @@ struct SampledParameter {
   std::string Name() const { return component + "." + parameter; }
 };
 
+/// A relation between parameters that every sampled point satisfies: a ParameterRelation of the
+/// catalogue (value <= bound / divisor), which validation enforces, between two parameters of one
+/// component of which at least one is sampled; each side a plan parameter or its fixed value.
+struct SampleRelation {
+  int value_index = -1;  ///< into Plan::parameters; -1: fixed at `value`
+  double value = 0.0;
+  int bound_index = -1;  ///< into Plan::parameters; -1: fixed at `bound`
+  double bound = 0.0;
+  double divisor = 1.0;
+  std::string text;      ///< e.g. "wtb_left.max_dynamic_torque <= wtb_left.static_capacity"
+  bool Holds(const std::vector<double>& values) const;
+};
+
 /// One point: the value of every plan parameter.
 struct Sample {
   int index = 0;
   std::string label;           ///< "nominal", "corner 3 (min,max)", "sobol 5", "lhs 5"
   std::vector<double> values;  ///< per Plan::parameters, SI
+  int rejected = 0;            ///< draws rejected because they broke a Plan::relations
 };
 
 /// The cases times the samples of a campaign, fixed before anything runs.
@@ -136,6 +150,10 @@ struct Plan {
   std::string project_name;
   std::string project_hash;                  ///< 16 hex digits of the project's JSON text
   std::string campaign_id;                   ///< 16 hex digits of project hash, cases, samples, model
+  /// The parameter relations a quasi-random point must satisfy; a draw that breaks one is
+  /// rejected and the parameters of the broken relations are drawn again (Sample::rejected).
+  std::vector<SampleRelation> relations;
+  static constexpr int kMaxDraws = 1000;     ///< per point; then the point is kept as drawn
 
   int runs() const { return static_cast<int>(cases.size()) * samples_per_case; }
   int CaseOf(int run) const { return run / samples_per_case; }
@@ -294,6 +312,7 @@ struct CampaignSummary {
   /// Runs in which an element's dissipated power fell below zero (the simulator's passivity
   /// monitor); -1 when the file predates the monitor.
   int not_passive = 0;
+  int rejected_draws = 0;      ///< sampled draws rejected for breaking a parameter relation
   int cases = 0;
   int samples_per_case = 0;
   std::vector<std::string> parameters;

@@ -125,6 +125,10 @@ struct SettingRule {
     /// the larger of the wing's operating torque at its root (over every load case) and its
     /// back-drive torque (its airloads through the aiding efficiencies, friction neglected)
     kWingHolding,
+    /// what a jam behind a torque limiter makes it ground: the static torque the drive can put
+    /// into it (the PDU stall torque, capped by the system torque limiters on its path, at its
+    /// own speed) minus its end-stop torque (LimiterPassedTorque of torque_limiter.h)
+    kJamGrounding,
   };
   std::string parameter;  ///< the setting, e.g. "lockout_torque_extend"
   std::string rule;       ///< the rule in words with its source
@@ -236,6 +240,24 @@ class ComponentModel {
   virtual std::optional<double> StopTorqueLimit(const ParameterReader<double>&) const { return std::nullopt; }
   virtual std::optional<Interval> StopTorqueLimit(const ParameterReader<Interval>&) const { return std::nullopt; }
   virtual std::optional<Sym> StopTorqueLimit(const ParameterReader<Sym>&) const { return std::nullopt; }
+  /// A torque limiter in a jam behind it (the jammed actuator beyond its limited port): the
+  /// torque it passes on to what lies behind it when `tau_in` arrives at its input, both in the
+  /// units of `n` x its own torque (n = its limited node's speed / the reference speed; n = 1:
+  /// at its own speed); nullopt: it passes everything (the default). The law is
+  /// LimiterPassedTorque of torque_limiter.h, docs/reduced_models.md "The station torque limiter
+  /// in a jam".
+  virtual std::optional<double> JamPassedTorque(const ParameterReader<double>&, const double& /*tau_in*/,
+                                                const double& /*n*/) const {
+    return std::nullopt;
+  }
+  virtual std::optional<Interval> JamPassedTorque(const ParameterReader<Interval>&, const Interval& /*tau_in*/,
+                                                  const Interval& /*n*/) const {
+    return std::nullopt;
+  }
+  virtual std::optional<Sym> JamPassedTorque(const ParameterReader<Sym>&, const Sym& /*tau_in*/,
+                                             const Sym& /*n*/) const {
+    return std::nullopt;
+  }
 };
 
 /// In a ComponentModel: overrides the three LumpedAtInput with the member template
@@ -276,6 +298,21 @@ class ComponentModel {
     return StopLaw(p);                                                                                 \
   }                                                                                                    \
   std::optional<Sym> StopTorqueLimit(const ParameterReader<Sym>& p) const override { return StopLaw(p); }
+
+/// In a ComponentModel: overrides the three JamPassedTorque with the member template
+/// `template <class T> std::optional<T> PassLaw(const ParameterReader<T>&, const T& tau_in, const T& n) const`.
+#define HIGHLIFT_JAM_PASSED_LAW                                                                          \
+  std::optional<double> JamPassedTorque(const ParameterReader<double>& p, const double& tau_in, const double& n) \
+      const override {                                                                                  \
+    return PassLaw(p, tau_in, n);                                                                       \
+  }                                                                                                     \
+  std::optional<Interval> JamPassedTorque(const ParameterReader<Interval>& p, const Interval& tau_in,     \
+                                          const Interval& n) const override {                            \
+    return PassLaw(p, tau_in, n);                                                                       \
+  }                                                                                                     \
+  std::optional<Sym> JamPassedTorque(const ParameterReader<Sym>& p, const Sym& tau_in, const Sym& n) const override { \
+    return PassLaw(p, tau_in, n);                                                                       \
+  }
 
 /// The declarations of every component type (ports, parameters, roles: the Declaration() in each
 /// type's file), in catalogue order.

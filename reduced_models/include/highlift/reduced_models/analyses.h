@@ -87,6 +87,7 @@ struct ComponentPeak {
   std::string worst_case;
   Bounded torque;          ///< N*m at the reference (shaft) speed
   double local_torque = 0.0;  ///< N*m at the component's own speed (upper bound over the domains)
+  double local_nominal = 0.0;  ///< N*m at the component's own speed, nominal (torque.nominal, nominal ratios)
   std::string allowable_name;
   double allowable = 0.0;      ///< N*m at nominal values, 0 when the component has none
   double allowable_min = 0.0;  ///< N*m, lower bound of the allowable over the domains
