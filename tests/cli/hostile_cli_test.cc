@@ -24,6 +24,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using testing::RunCli;
+using testing::StartCli;
 using testing::ShellQuote;
 
 const char* const kProject = "tests/export/small_drive.json";  // simulates in well under a second
@@ -218,24 +219,6 @@ TEST(OutputFiles, AFailedWriteLeavesTheOldFileAndSaysWhy) {
 
 // --- signals ------------------------------------------------------------------------------------------
 
-/// Starts highlift with stdout/stderr in `dir`; returns the pid.
-pid_t Start(const fs::path& dir, const std::vector<std::string>& args) {
-  const pid_t pid = ::fork();
-  if (pid == 0) {
-    if (::chdir(HIGHLIFT_SOURCE_DIR) != 0) ::_exit(127);
-    const int out = ::open((dir / "stdout").c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    const int err = ::open((dir / "stderr").c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    ::dup2(out, 1);
-    ::dup2(err, 2);
-    std::vector<char*> argv{const_cast<char*>(HIGHLIFT_CLI_PATH)};
-    for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-    argv.push_back(nullptr);
-    ::execv(HIGHLIFT_CLI_PATH, argv.data());
-    ::_exit(127);
-  }
-  return pid;
-}
-
 bool TemporaryExists(const fs::path& dir) {
   for (const auto& entry : fs::directory_iterator(dir))
     if (entry.path().filename().string().find(".tmp-") != std::string::npos) return true;
@@ -247,7 +230,7 @@ TEST(Signals, SigintDuringSimulateKeepsAPartialFileAndTheOldOne) {
   const fs::path out = dir / "results.csv";
   std::ofstream(out) << "old results\n";
   // 300 spring-dampers per shaft: a run of several seconds, each step short.
-  const pid_t pid = Start(dir, {"simulate", kProject, "--scenario", "rupture_wtb", "--elements", "300", "--json",
+  const pid_t pid = StartCli(dir, {"simulate", kProject, "--scenario", "rupture_wtb", "--elements", "300", "--json",
                                 "--out", out.string()});
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
   while (!TemporaryExists(dir) && std::chrono::steady_clock::now() < deadline)
@@ -275,7 +258,7 @@ TEST(Signals, SigintDuringSimulateKeepsAPartialFileAndTheOldOne) {
 TEST(Signals, SigtermOutsideAnInterruptibleLoopExits130WithADocument) {
   const fs::path dir = Scratch();
   // modes at 100 elements per segment takes long enough to be stopped inside the analysis.
-  const pid_t pid = Start(dir, {"modes", "examples/a380_class_flaps.json", "--elements", "100", "--json"});
+  const pid_t pid = StartCli(dir, {"modes", "examples/a380_class_flaps.json", "--elements", "100", "--json"});
   std::this_thread::sleep_for(std::chrono::milliseconds(500));
   ::kill(pid, SIGTERM);
   int status = 0;
