@@ -251,7 +251,14 @@ TEST(Input27, ValidateDevZeroStopsAtTheFirstByte) {
   // still answer (the shell's ulimit -v), quickly and at line 1, column 1.
   const fs::path dir = Scratch();
   const auto start = std::chrono::steady_clock::now();
-  const std::string cmd = "ulimit -v 1000000 && " + ShellQuote(HIGHLIFT_CLI_PATH) + " validate /dev/zero > " +
+  // AddressSanitizer reserves terabytes of shadow address space, so the limit is set only in
+  // builds without it (the sanitizer build still checks the answer and the time).
+#if defined(__SANITIZE_ADDRESS__)
+  const std::string limit = "";
+#else
+  const std::string limit = "ulimit -v 1000000 && ";
+#endif
+  const std::string cmd = limit + ShellQuote(HIGHLIFT_CLI_PATH) + " validate /dev/zero > " +
                           ShellQuote((dir / "stdout").string()) + " 2> " + ShellQuote((dir / "stderr").string());
   const int status = std::system(cmd.c_str());
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
