@@ -177,6 +177,7 @@ TEST(PeakInterruption, AnInterruptedTransientRunIsNeverOk) {
   const fs::path dir = Scratch("peak-sigint");
   fs::create_directories(dir);
   const pid_t pid = StartCli(dir, {"peak", kExample, "--transient", "--no-intervals", "--json"});
+  ASSERT_TRUE(highlift::testing::WaitUntilCatching(pid, SIGINT)) << ReadFile(dir / "stderr");
   // The single-DOF analysis takes well under a second; the 36 simulations about 15 s.
   std::this_thread::sleep_for(std::chrono::milliseconds(2500));
   ::kill(pid, SIGINT);

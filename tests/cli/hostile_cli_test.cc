@@ -259,7 +259,8 @@ TEST(Signals, SigtermOutsideAnInterruptibleLoopExits130WithADocument) {
   const fs::path dir = Scratch();
   // modes at 100 elements per segment takes long enough to be stopped inside the analysis.
   const pid_t pid = StartCli(dir, {"modes", "examples/a380_class_flaps.json", "--elements", "100", "--json"});
-  std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  ASSERT_TRUE(highlift::testing::WaitUntilCatching(pid, SIGTERM)) << Read(dir / "stderr");
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
   ::kill(pid, SIGTERM);
   int status = 0;
   ::waitpid(pid, &status, 0);

@@ -80,6 +80,25 @@ inline int WaitCli(pid_t pid) {
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
+/// Waits until the process `pid` catches signal `sig` (its handler is installed: bit sig-1 of
+/// SigCgt in /proc/PID/status), at most `timeout_ms`; true when it does. A test that sends a
+/// signal waits for this first: under a sanitizer the start of main can take seconds, and a
+/// signal that arrives before the handler ends the process by the default action.
+inline bool WaitUntilCatching(pid_t pid, int sig, int timeout_ms = 60000) {
+  const std::string status_file = "/proc/" + std::to_string(pid) + "/status";
+  for (int waited = 0; waited <= timeout_ms; waited += 10) {
+    std::ifstream in(status_file);
+    std::string line;
+    while (std::getline(in, line)) {
+      if (line.rfind("SigCgt:", 0) != 0) continue;
+      const unsigned long long mask = std::stoull(line.substr(7), nullptr, 16);
+      if ((mask >> (sig - 1)) & 1ULL) return true;
+    }
+    ::usleep(10000);
+  }
+  return false;
+}
+
 /// The whole content of a file ("" when it cannot be read).
 inline std::string ReadFile(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);

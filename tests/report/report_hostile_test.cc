@@ -88,6 +88,7 @@ TEST(ReportSignals, SigintDuringTheSimulationsKeepsTheOldReportAndWritesNothing)
   std::ofstream(out) << "the old report\n";
   const pid_t pid = testing::StartCli(dir, {"report", "examples/a380_class_flaps.json", "--threads", "1", "--json",
                                             "--out", out.string()});
+  ASSERT_TRUE(testing::WaitUntilCatching(pid, SIGINT)) << ReadFile(dir / "stderr");
   // The analyses take about a second; the 38 simulations on one thread much longer.
   std::this_thread::sleep_for(std::chrono::milliseconds(4000));
   ::kill(pid, SIGINT);
