@@ -184,6 +184,8 @@ CampaignReport RunCampaign(const Project& project, const Plan& plan, const Execu
   if (InterruptRequested()) {
     report.interrupted_signal = InterruptSignal();
     progress.Stopped();
+    // In the file too, so that a later `campaign summary` says "interrupted", not only "incomplete".
+    if (report.runs_left > 0) store.RecordInterruption(report.interrupted_signal, report.runs_left);
   }
   report.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return report;
@@ -221,6 +223,7 @@ std::filesystem::path MergeShards(const std::vector<std::filesystem::path>& inpu
   for (const auto& f : files) {
     detail::sqlite::Connection c(f, detail::sqlite::Connection::Mode::kReadOnly);
     Input in{f, detail::ReadIdentity(c), 0};
+    detail::CheckRunsBelongToPlan(c, in.identity);  // then done <= the shard's runs
     in.done = static_cast<int>(c.QueryInteger("SELECT count(*) FROM runs"));
     const std::vector<int> edited = detail::RunsNotMatchingChecksums(c);
     if (!edited.empty()) {

@@ -2,6 +2,7 @@
 #include "store.h"
 
 #include <cstdio>
+#include <ctime>
 #include <limits>
 
 #include "highlift/core/error.h"
@@ -148,6 +149,57 @@ void CreateSchema(sqlite::Connection& connection) {
     CREATE TABLE checksums(run INTEGER PRIMARY KEY, digest TEXT NOT NULL);
   )sql");
   CreatePassivityTable(connection);
+  CreateInterruptionsTable(connection);
+}
+
+void CreateInterruptionsTable(sqlite::Connection& connection) {
+  connection.Execute(
+      "CREATE TABLE IF NOT EXISTS interruptions(session INTEGER PRIMARY KEY, time TEXT NOT NULL, "
+      "signal INTEGER NOT NULL, runs_done INTEGER NOT NULL, runs_left INTEGER NOT NULL)");
+}
+
+Interruption LastInterruption(sqlite::Connection& connection) {
+  Interruption last;
+  if (connection.QueryInteger("SELECT count(*) FROM sqlite_master WHERE type = 'table' AND name = 'interruptions'") == 0)
+    return last;
+  sqlite::Statement s(connection, "SELECT signal, time, runs_left FROM interruptions ORDER BY session DESC LIMIT 1");
+  if (s.Step()) {
+    last.signal = static_cast<int>(s.Integer(0));
+    last.time = s.Text(1);
+    last.runs_left = static_cast<int>(s.Integer(2));
+  }
+  return last;
+}
+
+void CheckRunsBelongToPlan(sqlite::Connection& connection, const FileIdentity& id) {
+  const std::string remedy = "; run the campaign again into a new --out directory";
+  const std::int64_t cases = connection.QueryInteger("SELECT count(*) FROM cases");
+  if (id.samples_per_case < 1 || cases * id.samples_per_case != id.runs_total)
+    throw InputError("'" + connection.file() + "' is damaged: it plans " + std::to_string(id.runs_total) +
+                     " runs, but holds " + std::to_string(cases) + " case(s) x " + std::to_string(id.samples_per_case) +
+                     " sample(s)" + remedy);
+  sqlite::Statement s(connection,
+                      "SELECT run, case_index, sample FROM runs WHERE run < 0 OR run >= ?1 OR run % ?2 != ?3 "
+                      "OR case_index != run / ?4 OR sample != run % ?4 ORDER BY run");
+  s.Bind(1, static_cast<std::int64_t>(id.runs_total)).Bind(2, static_cast<std::int64_t>(id.shard.count))
+      .Bind(3, static_cast<std::int64_t>(id.shard.index)).Bind(4, static_cast<std::int64_t>(id.samples_per_case));
+  if (!s.Step()) return;
+  const std::int64_t run = s.Integer(0), k = s.Integer(1), sample = s.Integer(2);
+  std::int64_t others = 0;
+  while (s.Step()) ++others;
+  std::string why;
+  if (run < 0 || run >= id.runs_total)
+    why = "its plan has runs 0 to " + std::to_string(id.runs_total - 1);
+  else if (run % id.shard.count != id.shard.index)
+    why = "it is shard " + id.shard.ToString() + ", which holds the runs I with I mod " + std::to_string(id.shard.count) +
+          " = " + std::to_string(id.shard.index);
+  else
+    why = "run " + std::to_string(run) + " is case " + std::to_string(run / id.samples_per_case) + ", sample " +
+          std::to_string(run % id.samples_per_case) + " of its plan (" + std::to_string(id.samples_per_case) +
+          " samples per case), not case " + std::to_string(k) + ", sample " + std::to_string(sample);
+  throw InputError("'" + connection.file() + "' is damaged: it holds run " + std::to_string(run) + ", and " + why +
+                   (others > 0 ? " (and " + std::to_string(others) + " more such run(s))" : std::string()) +
+                   "; its runs would not add up to its plan" + remedy);
 }
 
 void CreatePassivityTable(sqlite::Connection& connection) {
@@ -189,6 +241,8 @@ ResultStore::ResultStore(const std::filesystem::path& file, const Project& proje
       throw InputError("'" + file.string() + "' holds shard " + identity_.shard.ToString() + ", not " + shard.ToString());
     connection_->Execute("PRAGMA journal_mode = WAL; PRAGMA synchronous = NORMAL");
     CreatePassivityTable(*connection_);  // a file begun before the passivity monitor
+    CreateInterruptionsTable(*connection_);  // or before interruptions were recorded
+    detail::CheckRunsBelongToPlan(*connection_, identity_);
     return;
   }
   // Everything the summary needs besides the runs, in one transaction: a file either has all of
@@ -258,6 +312,16 @@ std::set<int> ResultStore::DoneRuns() {
   sqlite::Statement s(*connection_, "SELECT run FROM runs");
   while (s.Step()) done.insert(static_cast<int>(s.Integer(0)));
   return done;
+}
+
+void ResultStore::RecordInterruption(int signal, int runs_left) {
+  char time[32] = "";
+  const std::time_t now = std::time(nullptr);
+  std::tm utc{};
+  if (gmtime_r(&now, &utc) != nullptr) std::strftime(time, sizeof time, "%Y-%m-%dT%H:%M:%SZ", &utc);
+  sqlite::Statement s(*connection_, "INSERT INTO interruptions(time, signal, runs_done, runs_left) VALUES(?, ?, ?, ?)");
+  s.Bind(1, std::string(time)).Bind(2, static_cast<std::int64_t>(signal))
+      .Bind(3, connection_->QueryInteger("SELECT count(*) FROM runs")).Bind(4, static_cast<std::int64_t>(runs_left)).Run();
 }
 
 int ResultStore::Failures() {

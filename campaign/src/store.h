@@ -13,6 +13,8 @@
 //   passivity(run, violations, report)   per run, the number of elements whose dissipated power
 //                              fell below zero (sim::PassivityReport) and its brief report
 //   checksums(run, digest)     per run, RunDigest of its rows when it was committed
+//   interruptions(session, time, signal, runs_done, runs_left)   one row per session a signal
+//                              stopped (UTC time, ISO 8601); files begun before it lack the table
 #pragma once
 
 #include <filesystem>
@@ -59,6 +61,8 @@ class ResultStore {
   int Failures();
   /// Commits one finished run.
   void Write(const RunResult& result);
+  /// Records that a signal stopped this session with `runs_left` runs of the shard still to do.
+  void RecordInterruption(int signal, int runs_left);
   sqlite::Connection& connection() { return *connection_; }
 
  private:
@@ -75,10 +79,27 @@ std::string RunDigest(sqlite::Connection& connection, int run);
 /// has no run any more), in run order.
 std::vector<int> RunsNotMatchingChecksums(sqlite::Connection& connection);
 
+/// The last interruption recorded in a result file (table `interruptions`).
+struct Interruption {
+  int signal = 0;    ///< 0: none recorded (or a file begun before the table)
+  std::string time;  ///< UTC, ISO 8601
+  int runs_left = 0;
+};
+Interruption LastInterruption(sqlite::Connection& connection);
+
+/// Throws InputError naming the first run of the file that its plan does not have: a run
+/// number outside [0, runs_total) or outside the file's shard, or a run whose case and sample
+/// are not those its number stands for (run = case * samples_per_case + sample), and a file
+/// whose runs_total is not its cases times samples_per_case. Every count of done runs then
+/// stays within the plan (issue 27 item 19: "incomplete: 43 of 42 runs").
+void CheckRunsBelongToPlan(sqlite::Connection& connection, const FileIdentity& identity);
+
 /// Creates the tables of a result file (empty).
 void CreateSchema(sqlite::Connection& connection);
 /// Creates the table `passivity` unless the file has it.
 void CreatePassivityTable(sqlite::Connection& connection);
+/// Creates the table `interruptions` unless the file has it.
+void CreateInterruptionsTable(sqlite::Connection& connection);
 /// Reads the identity of a result file; throws InputError when it is no campaign result file.
 FileIdentity ReadIdentity(sqlite::Connection& connection);
 

@@ -48,6 +48,7 @@ CampaignSummary LoadSummary(const std::filesystem::path& file_or_directory) {
   s.runs_total = detail::RunsInShard(id.runs_total, id.shard);
   s.samples_per_case = id.samples_per_case;
   s.edited_runs = detail::RunsNotMatchingChecksums(c);
+  detail::CheckRunsBelongToPlan(c, id);  // runs_done <= runs_total
 
   struct CaseInfo {
     std::string name, kind, load_case;
@@ -110,6 +111,11 @@ CampaignSummary LoadSummary(const std::filesystem::path& file_or_directory) {
     }
   }
   s.case_peaks = std::move(per_case);
+  if (!s.complete()) {
+    const detail::Interruption last = detail::LastInterruption(c);
+    s.interrupted_signal = last.signal;
+    s.interrupted_time = last.time;
+  }
   s.not_passive =
       c.QueryInteger("SELECT count(*) FROM sqlite_master WHERE type = 'table' AND name = 'passivity'") == 0
           ? -1
@@ -180,7 +186,8 @@ std::string CampaignSummary::BriefReport() const {
   std::ostringstream out;
   out << "campaign " << campaign_id << " of '" << project_name << "': " << runs_done << "/" << runs_total << " runs"
       << (interrupted_signal != 0
-              ? " (interrupted by signal " + std::to_string(interrupted_signal) + ": " +
+              ? " (interrupted by signal " + std::to_string(interrupted_signal) +
+                    (interrupted_time.empty() ? std::string() : " at " + interrupted_time) + ": " +
                     std::to_string(runs_total - runs_done) + " run(s) left to do; run the same command again to resume)"
               : complete() ? "" : " (incomplete: run the same command again to resume)")
       << ", " << failures << " failed, "
@@ -250,6 +257,10 @@ nlohmann::json CampaignSummary::ToJson() const {
                       {"cases", cases},            {"samples_per_case", samples_per_case},
                       {"parameters", parameters},  {"complete", complete()}, {"ok", ok()},
                       {"interrupted", interrupted_signal != 0}, {"edited_runs", edited_runs}};
+  if (interrupted_signal != 0) {
+    j["interrupted_signal"] = interrupted_signal;
+    j["interrupted_at"] = interrupted_time.empty() ? nlohmann::json(nullptr) : nlohmann::json(interrupted_time);
+  }
   j["envelope"] = nlohmann::json::array();
   for (const auto& e : envelope)
     j["envelope"].push_back({{"component", e.component},   {"torque_N_m", e.torque},   {"case", e.case_name},

@@ -20,11 +20,13 @@
 namespace highlift::cli {
 namespace {
 
-int PrintSummary(const campaign::CampaignSummary& summary, bool json) {
+/// `interrupted_now`: a signal stopped this command's own session (main() then exits 130); a
+/// summary of a file that an earlier session left interrupted says so in "interrupted".
+int PrintSummary(const campaign::CampaignSummary& summary, bool json, bool interrupted_now = false) {
   if (json) {
     nlohmann::json document = summary.ToJson();
-    if (summary.interrupted_signal != 0) document["status"] = "interrupted";  // as every interrupted command's
-    std::cout << document.dump(2) << "\n";
+    if (interrupted_now) document["status"] = "interrupted";  // as every interrupted command's
+    std::cout << JsonText(document) << "\n";
   }
   else std::cout << summary.FullReport() << "\n";
   return summary.complete() && summary.ok() ? kSuccess : kViolated;
@@ -109,8 +111,8 @@ class CampaignCommand : public Command {
     const campaign::CampaignReport report = campaign::RunCampaign(project, plan, run);
     std::cerr << report.BriefReport() << "\n";
     campaign::CampaignSummary summary = campaign::LoadSummary(report.file);
-    summary.interrupted_signal = report.interrupted_signal;  // main() then exits 130
-    return PrintSummary(summary, json_);
+    if (report.interrupted_signal != 0) summary.interrupted_signal = report.interrupted_signal;  // main() then exits 130
+    return PrintSummary(summary, json_, report.interrupted_signal != 0);
   }
 
  private:

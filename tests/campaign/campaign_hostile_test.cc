@@ -109,7 +109,7 @@ TEST(CampaignInterruption, RunsStoppedByASignalStayToDoAndTheNextSessionDoesThem
   EXPECT_FALSE(summary.complete());
   EXPECT_FALSE(summary.ok());
   EXPECT_EQ(summary.ToJson()["interrupted"], true);
-  EXPECT_NE(summary.BriefReport().find("(interrupted by signal 2: "), std::string::npos) << summary.BriefReport();
+  EXPECT_NE(summary.BriefReport().find("(interrupted by signal 2 at "), std::string::npos) << summary.BriefReport();
 
   e.progress = nullptr;
   const CampaignReport resumed = RunCampaign(A380(), plan, e);
@@ -358,6 +358,145 @@ TEST(CampaignChecksums, AnUneditedMergeKeepsItsChecksums) {
   EXPECT_TRUE(merged.edited_runs.empty());
   EXPECT_EQ(Count(out / "campaign.sqlite", "SELECT count(*) FROM checksums"), 9);
   EXPECT_FALSE(fs::exists(out / "campaign.sqlite.lock"));
+}
+
+// --- item 19: a count of runs done never exceeds the plan ("incomplete: 43 of 42 runs") ----------
+
+void Edit(const fs::path& file, const std::string& sql) {
+  componentdb::sqlite::Connection c(file, componentdb::sqlite::Connection::Mode::kReadWrite);
+  c.Execute(sql);
+}
+
+TEST(CampaignCounts, ARunOutsideThePlanIsRefusedByNameNotCountedBeyondIt) {
+  // Was: the summary counted every row of `runs` (10/9 runs, "complete": false, resume "9 of 9
+  // left"), a shard with a run of another shard merged as "incomplete: 6 of 5 runs".
+  const Plan plan = SmallPlan();
+  const fs::path dir = Scratch("counts");
+  ExecutionOptions e;
+  e.directory = dir;
+  e.jobs = 1;
+  RunCampaign(A380(), plan, e);
+  const fs::path file = dir / "campaign.sqlite";
+  ASSERT_EQ(LoadSummary(dir).runs_done, 9);
+
+  const fs::path beyond = Scratch("counts-beyond");
+  fs::create_directories(beyond);
+  fs::copy_file(file, beyond / "campaign.sqlite");
+  Edit(beyond / "campaign.sqlite",
+       "INSERT INTO runs SELECT 9, 3, 0, sample_label, status, message, peak, peak_component, peak_time, single_dof, "
+       "steps, simulate_seconds FROM runs WHERE run = 8");
+  std::string m = MessageOf([&] { LoadSummary(beyond); });
+  EXPECT_NE(m.find("is damaged: it holds run 9, and its plan has runs 0 to 8; its runs would not add up to its plan"),
+            std::string::npos)
+      << m;
+  ExecutionOptions resume = e;
+  resume.directory = beyond;
+  m = MessageOf([&] { RunCampaign(A380(), plan, resume); });
+  EXPECT_NE(m.find("holds run 9, and its plan has runs 0 to 8"), std::string::npos) << m;
+
+  // The same (case, sample) under two run numbers: run 4 (case 1, sample 1) relabelled as sample 0.
+  const fs::path twice = Scratch("counts-twice");
+  fs::create_directories(twice);
+  fs::copy_file(file, twice / "campaign.sqlite");
+  Edit(twice / "campaign.sqlite", "UPDATE runs SET sample = 0 WHERE run = 4");
+  m = MessageOf([&] { LoadSummary(twice); });
+  EXPECT_NE(m.find("holds run 4, and run 4 is case 1, sample 1 of its plan (3 samples per case), not case 1, sample 0"),
+            std::string::npos)
+      << m;
+
+  // A file without a table this highlift reads: a sentence, not SQLite's raw "no such table"
+  // behind "the SQLite library failed: " (item 19, raw SQLite texts).
+  const fs::path lacking = Scratch("counts-lacking");
+  fs::create_directories(lacking);
+  fs::copy_file(file, lacking / "campaign.sqlite");
+  Edit(lacking / "campaign.sqlite", "DROP TABLE component_peaks");
+  try {
+    LoadSummary(lacking);
+    m = "(no error)";
+  } catch (const std::exception& e) {
+    m = e.what();
+  }
+  EXPECT_NE(m.find("the file lacks a table or column this highlift reads (no such table: component_peaks): it was "
+                   "written by another program or version of highlift, or edited"),
+            std::string::npos)
+      << m;
+  EXPECT_EQ(m.find("SQLite library failed"), std::string::npos) << m;
+
+  // A plan whose size no longer matches its cases (runs_total edited).
+  Edit(twice / "campaign.sqlite", "UPDATE runs SET sample = 1 WHERE run = 4; UPDATE campaign SET value = '8' WHERE key = 'runs_total'");
+  m = MessageOf([&] { LoadSummary(twice); });
+  EXPECT_NE(m.find("is damaged: it plans 8 runs, but holds 3 case(s) x 3 sample(s)"), std::string::npos) << m;
+}
+
+TEST(CampaignCounts, AShardHoldingARunOfAnotherShardIsRefusedOnMergeNamingIt) {
+  const Plan plan = SmallPlan();
+  const fs::path shards = Scratch("counts-shards"), out = Scratch("counts-shards-merged");
+  RunTwoShards(plan, shards);
+  const fs::path first = shards / "campaign-shard-0-of-2.sqlite";
+  Edit(first,
+       "ATTACH DATABASE '" + (shards / "campaign-shard-1-of-2.sqlite").string() + "' AS other;"
+       "INSERT INTO runs SELECT * FROM other.runs WHERE run = 1; DETACH DATABASE other;");
+  const std::string m = MessageOf([&] { MergeShards({shards}, out); });
+  EXPECT_EQ(m.find("incomplete: 6 of 5"), std::string::npos) << m;
+  EXPECT_NE(m.find("campaign-shard-0-of-2.sqlite' is damaged: it holds run 1, and it is shard 0/2, which holds the "
+                   "runs I with I mod 2 = 0"),
+            std::string::npos)
+      << m;
+  EXPECT_FALSE(fs::exists(out / "campaign.sqlite"));
+  EXPECT_NE(MessageOf([&] { LoadSummary(first); }).find("holds run 1"), std::string::npos);
+}
+
+// --- item 4 of the leftovers of 19: the interruption is stored in the file ---------------------------
+
+TEST(CampaignInterruption, TheFileRecordsTheInterruptionSoALaterSummarySaysIt) {
+  // Was: a later `campaign summary` said only "incomplete" (the signal lived in the session).
+  const Plan plan = SmallPlan();
+  const fs::path dir = Scratch("interrupted-stored");
+  InterruptOnFirstLine buffer;
+  std::ostream progress(&buffer);
+  ExecutionOptions e;
+  e.directory = dir;
+  e.jobs = 1;
+  e.progress = &progress;
+  const CampaignReport stopped = RunCampaign(A380(), plan, e);
+  ClearInterrupt();
+  ASSERT_EQ(stopped.interrupted_signal, SIGINT);
+  ASSERT_GT(stopped.runs_left, 0);
+
+  const CampaignSummary later = LoadSummary(dir);  // a new process: nothing from the session
+  EXPECT_EQ(later.interrupted_signal, SIGINT);
+  EXPECT_EQ(later.interrupted_time.size(), 20u) << later.interrupted_time;  // 2026-12-03T16:30:54Z
+  EXPECT_FALSE(later.ok());
+  EXPECT_NE(later.BriefReport().find("(interrupted by signal 2 at " + later.interrupted_time + ": " +
+                                     std::to_string(stopped.runs_left) + " run(s) left to do"),
+            std::string::npos)
+      << later.BriefReport();
+  const nlohmann::json j = later.ToJson();
+  EXPECT_EQ(j["interrupted"], true);
+  EXPECT_EQ(j["interrupted_signal"], SIGINT);
+  EXPECT_EQ(j["interrupted_at"], later.interrupted_time);
+
+  // A file begun before the table: read as before ("incomplete"), and a resume adds the table.
+  const fs::path old = Scratch("interrupted-old");
+  fs::create_directories(old);
+  fs::copy_file(dir / "campaign.sqlite", old / "campaign.sqlite");
+  Edit(old / "campaign.sqlite", "DROP TABLE interruptions");
+  const CampaignSummary before = LoadSummary(old);
+  EXPECT_EQ(before.interrupted_signal, 0);
+  EXPECT_NE(before.BriefReport().find("(incomplete: run the same command again to resume)"), std::string::npos)
+      << before.BriefReport();
+
+  // The resumed campaign completes: no longer interrupted.
+  e.progress = nullptr;
+  RunCampaign(A380(), plan, e);
+  const CampaignSummary done = LoadSummary(dir);
+  EXPECT_TRUE(done.complete());
+  EXPECT_EQ(done.interrupted_signal, 0);
+  EXPECT_EQ(done.ToJson()["interrupted"], false);
+  ExecutionOptions old_resume = e;
+  old_resume.directory = old;
+  RunCampaign(A380(), plan, old_resume);
+  EXPECT_TRUE(LoadSummary(old).complete());
 }
 
 }  // namespace

@@ -319,9 +319,11 @@ struct CampaignSummary {
   std::vector<EnvelopeRow> envelope;
   std::vector<CasePeakRow> case_peaks;
   std::vector<FailureRow> failed;
-  /// Set by the command whose session a signal stopped (not stored in the file): the summary
-  /// then says "interrupted" and how to resume.
+  /// The signal that stopped the last session of an incomplete file (its table
+  /// `interruptions`; 0 when none is recorded, as in files begun before the table), or the
+  /// command's own session: the summary then says "interrupted", when, and how to resume.
   int interrupted_signal = 0;
+  std::string interrupted_time;  ///< UTC, ISO 8601, of the recorded interruption ("" unknown)
   /// Runs whose stored results no longer match the checksum recorded when they were committed
   /// (edited or damaged since); the summary flags them and is not ok.
   std::vector<int> edited_runs;
