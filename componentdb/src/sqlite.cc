@@ -2,6 +2,7 @@
 
 #include <limits>
 
+#include "highlift/core/error.h"
 #include "highlift/core/output_file.h"
 
 namespace highlift::componentdb::sqlite {
@@ -42,8 +43,20 @@ std::string Sentence(sqlite3* db, int rc) {
         return "a row repeats a value that must be unique (" + text.substr(colon + 2) + ")";
       return "a row breaks a rule of the file's tables";
     }
+    case SQLITE_ERROR: {
+      // "no such table: runs", "table runs has no column named x": a file of another program or
+      // version, or one edited by hand. Said as such, with SQLite's words only as a detail.
+      const std::string text = db ? CleanText(sqlite3_errmsg(db), 200) : "";
+      if (text.find("no such table") != std::string::npos || text.find("no such column") != std::string::npos ||
+          text.find("has no column") != std::string::npos)
+        return "the file lacks a table or column this highlift reads (" + text +
+               "): it was written by another program or version of highlift, or edited; give a file this highlift "
+               "wrote";
+      return "the file's contents do not fit what this highlift reads (" + text + ")";
+    }
     default:
-      return std::string("the SQLite library failed: ") + (db ? sqlite3_errmsg(db) : sqlite3_errstr(rc));
+      // Not a sentence of ours: SQLite's own words, marked as such (issue 27 item 19).
+      return "the SQLite library failed (" + CleanText(db ? sqlite3_errmsg(db) : sqlite3_errstr(rc), 200) + ")";
   }
 }
 
