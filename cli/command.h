@@ -52,6 +52,13 @@ inline CLI::Validator NumberIn(double lo, double hi, bool lo_open = false) {
 inline CLI::Validator Positive() { return NumberIn(0.0, std::numeric_limits<double>::infinity(), true); }
 inline CLI::Validator NonNegative() { return NumberIn(0.0, std::numeric_limits<double>::infinity()); }
 
+/// The text of a JSON document for stdout: indented by 2, with every byte that is not UTF-8 (a
+/// Latin-1 file name, a database text) replaced by U+FFFD instead of nlohmann's exception
+/// (which would end the command as an internal error). Every command prints its documents so.
+inline std::string JsonText(const nlohmann::json& document) {
+  return document.dump(2, ' ', false, nlohmann::json::error_handler_t::replace);
+}
+
 /// {"file", "json_pointer", "line", "column"}: the known parts of a location, for --json documents.
 inline nlohmann::json LocationJson(const SourceLocation& where) {
   nlohmann::json j = nlohmann::json::object();

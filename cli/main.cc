@@ -6,8 +6,10 @@
 //   - with --json, stdout holds exactly one JSON document for every outcome: when a command
 //     ends with an error before printing its own document, main prints one with "ok": false,
 //     the status, the error and the messages written to stderr;
-//   - messages reach the terminal without control characters (escaped as \xNN) and with lines
-//     cut at kMaxLine bytes (a 1 MB key gives a short message);
+//   - messages reach the terminal without control characters and without bytes that are not
+//     UTF-8 (escaped as \xNN; U+FFFD on stdout under --json), with lines cut at kMaxLine bytes
+//     (a 1 MB key gives a short message); JSON documents are written with invalid UTF-8
+//     replaced (JsonText), never refused;
 //   - library exceptions (std::bad_alloc, std::filesystem errors, nlohmann::json errors) become
 //     sentences, never raw library texts;
 //   - SIGINT/SIGTERM: a loop that polls highlift::InterruptRequested() (the simulator) stops
@@ -30,6 +32,7 @@
 #include "highlift/core/catalogue.h"
 #include "highlift/core/error.h"
 #include "highlift/core/output_file.h"
+#include "highlift/core/utf8.h"
 
 namespace highlift::cli {
 
@@ -51,13 +54,20 @@ constexpr std::size_t kMaxLine = 2000;  // bytes per message line on stderr
 constexpr int kInterrupted = 130;       // 128 + SIGINT, the shell convention
 
 /// Forwards a stream to the real stdout/stderr, counting the bytes, escaping control characters
-/// and (for stderr) cutting long lines and keeping the lines for the JSON error document.
+/// and bytes that are not UTF-8, and (for stderr) cutting long lines and keeping the lines for
+/// the JSON error document. Every byte a command writes passes here: whatever a message carries
+/// (a Latin-1 file name, a database text, a component id), stdout and stderr are UTF-8.
 class GuardedBuffer : public std::streambuf {
  public:
   GuardedBuffer(std::streambuf* next, bool keep_lines, std::size_t max_line)
       : next_(next), keep_lines_(keep_lines), max_line_(max_line) {}
   std::size_t count() const { return count_; }
   const std::vector<std::string>& lines() const { return lines_; }
+  /// A byte that is not UTF-8 becomes U+FFFD instead of the text \xNN: inside a JSON document
+  /// "\x" is no escape (stdout under --json).
+  void ReplaceInvalidBytesByFffd(bool on) { fffd_ = on; }
+  /// Writes an unfinished UTF-8 sequence at the end of the output as escaped bytes.
+  void Finish() { FlushPending(); }
 
  protected:
   int_type overflow(int_type ch) override {
@@ -73,41 +83,72 @@ class GuardedBuffer : public std::streambuf {
  private:
   void Put(char c) {
     ++count_;
+    const auto u = static_cast<unsigned char>(c);
+    if (!pending_.empty()) {
+      if ((u & 0xC0) == 0x80) {
+        pending_ += c;
+        if (pending_.size() < pending_length_) return;
+        // The whole sequence is there: written as one character (never cut inside), or escaped
+        // byte by byte when it is no UTF-8 (an overlong form, a surrogate, beyond U+10FFFF).
+        if (Utf8SequenceLength(pending_, 0) == pending_.size()) Character(pending_);
+        else Invalid(pending_);
+        pending_.clear();
+        return;
+      }
+      FlushPending();  // a sequence cut short: its bytes are escaped, then c is a byte of its own
+    }
     if (c == '\n') {
       if (cut_ > 0) Emit(" [... " + std::to_string(cut_) + " more bytes]");
       Emit("\n");
       line_ = cut_ = 0;
-      continuation_ = 0;
       return;
     }
-    // The continuation bytes of a UTF-8 character whose first byte was written are written too:
-    // a line is never cut inside a character (CleanText made the text UTF-8).
-    const auto byte = static_cast<unsigned char>(c);
-    if (continuation_ > 0 && (byte & 0xC0) == 0x80) {
-      --continuation_;
-      if (cut_ == 0) {
-        next_->sputc(c);
-        if (keep_lines_) current_ += c;
-        ++line_;
+    if (u >= 0xC2 && u <= 0xF4) {  // the lead byte of a 2- to 4-byte sequence
+      pending_.assign(1, c);
+      pending_length_ = u >= 0xF0 ? 4 : u >= 0xE0 ? 3 : 2;
+      return;
+    }
+    if (u >= 0x80) {  // a continuation byte without its lead, or a byte UTF-8 never uses
+      Invalid(std::string(1, c));
+      return;
+    }
+    if ((u < 0x20 && c != '\t' && c != '\r') || u == 0x7f) {
+      Escaped(c);
+    } else {
+      Character(std::string(1, c));
+    }
+  }
+  void FlushPending() {
+    if (pending_.empty()) return;
+    Invalid(pending_);
+    pending_.clear();
+  }
+  void Character(const std::string& bytes) {
+    if (line_ >= max_line_) {
+      cut_ += bytes.size();
+      return;
+    }
+    next_->sputn(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+    if (keep_lines_) current_ += bytes;
+    line_ += bytes.size();
+  }
+  void Invalid(const std::string& bytes) {
+    for (const char b : bytes) {
+      if (fffd_) {
+        if (line_ >= max_line_) ++cut_;
+        else Character("\xEF\xBF\xBD");
       } else {
-        ++cut_;
+        Escaped(b);
       }
-      return;
     }
-    continuation_ = byte >= 0xF0 ? 3 : byte >= 0xE0 ? 2 : byte >= 0xC0 ? 1 : 0;
+  }
+  void Escaped(char c) {  // "\x1b", "\xe9"
     if (line_ >= max_line_) {
       ++cut_;
       return;
     }
-    const auto u = static_cast<unsigned char>(c);
-    if ((u < 0x20 && c != '\t' && c != '\r') || u == 0x7f) {
-      Emit(CleanText(std::string_view(&c, 1)));  // "\x1b"
-      line_ += 4;
-    } else {
-      next_->sputc(c);
-      if (keep_lines_) current_ += c;
-      ++line_;
-    }
+    Emit(CleanText(std::string_view(&c, 1)));
+    line_ += 4;
   }
   void Emit(const std::string& text) {
     next_->sputn(text.data(), static_cast<std::streamsize>(text.size()));
@@ -125,8 +166,10 @@ class GuardedBuffer : public std::streambuf {
   std::streambuf* next_;
   bool keep_lines_;
   std::size_t max_line_;
+  bool fffd_ = false;
   std::size_t count_ = 0, line_ = 0, cut_ = 0;
-  int continuation_ = 0;  // continuation bytes still to come of the UTF-8 character being written
+  std::string pending_;             // the bytes so far of a UTF-8 sequence being written
+  std::size_t pending_length_ = 0;  // its length announced by its lead byte
   std::string current_;
   std::vector<std::string> lines_;
 };
@@ -255,6 +298,8 @@ int main(int argc, char** argv) {
   std::streambuf* const real_err = std::cerr.rdbuf(&err);
   g_stdout = &out;
   const auto restore = [&](int code) {
+    out.Finish();
+    err.Finish();
     std::cout.flush();
     std::cerr.flush();
     std::cout.rdbuf(real_out);
@@ -309,6 +354,7 @@ int main(int argc, char** argv) {
   }
 
   g_json = JsonRequested(app);
+  out.ReplaceInvalidBytesByFffd(g_json);
   const std::string name = CommandPath(app);
   for (auto& [sub, command] : commands) {
     if (!sub->parsed()) continue;

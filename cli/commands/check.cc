@@ -55,7 +55,7 @@ class CheckCommand : public Command {
     const bool stopped = r.report.status == icsp::Status::kStoppedAtLimit;
     const nlohmann::json doc = report::CheckDocument(project, net, r, loaded.estimation_brief);
     if (options_.json) {
-      std::cout << doc.dump(2) << "\n";
+      std::cout << JsonText(doc) << "\n";
     } else {
       const report::Verdict verdict = report::DescribeVerdict(doc);
       std::cout << verdict.headline << "\n\n" << verdict.domains << "\n";

@@ -40,7 +40,7 @@ void PrintParts(const std::vector<componentdb::Part>& parts, const std::string& 
     out["database"] = database;
     out["count"] = parts.size();
     out["parts"] = doc["parts"];
-    std::cout << out.dump(2) << "\n";
+    std::cout << JsonText(out) << "\n";
     return;
   }
   TextTable table({"designation", "type", "program", "parameters"});
@@ -111,7 +111,7 @@ class DbCommand : public Command {
         out["database"] = db.file().string();
         out["count"] = materials.size();
         out["materials"] = componentdb::ToJson(r)["materials"];
-        std::cout << out.dump(2) << "\n";
+        std::cout << JsonText(out) << "\n";
         return kSuccess;
       }
       TextTable table({"material", "shear_modulus", "density", "allowable_shear_stress", "note"});
@@ -139,7 +139,7 @@ class DbCommand : public Command {
       throw InputError("no part or material '" + designation_ + "' in " + db.file().string() +
                        "; list them with 'highlift db list'");
     if (show_options_.json) {
-      std::cout << componentdb::ToJson(r).dump(2) << "\n";
+      std::cout << JsonText(componentdb::ToJson(r)) << "\n";
       return kSuccess;
     }
     const auto& quantities = r.parts.empty() ? r.materials[0].properties : r.parts[0].parameters;
@@ -187,7 +187,7 @@ class DbCommand : public Command {
       Json out{{"database", db.file().string()},     {"parts_added", report.parts_added},
                {"parts_replaced", report.parts_replaced}, {"materials_added", report.materials_added},
                {"materials_replaced", report.materials_replaced}};
-      std::cout << out.dump(2) << "\n";
+      std::cout << JsonText(out) << "\n";
     } else {
       std::cout << "imported " << (import_seed_ ? std::string("the shipped seed") : import_file_) << " into " << db.file().string() << ": " << report.BriefReport() << "\n";
     }
@@ -204,7 +204,7 @@ class DbCommand : public Command {
       return kSuccess;
     }
     if (format_ == "csv") std::cout << componentdb::ToCsv(records);
-    else std::cout << componentdb::ToJson(records).dump(2) << "\n";
+    else std::cout << JsonText(componentdb::ToJson(records)) << "\n";
     return kSuccess;
   }
 

@@ -38,7 +38,7 @@ class EstimateCommand : public Command {
       j["project"] = common_.project;
       j["database"] = database ? database->file().string() : "";
       if (!write_.empty()) j["written"] = write_;
-      std::cout << j.dump(2) << "\n";
+      std::cout << JsonText(j) << "\n";
     } else {
       std::cout << report.BriefReport() << "\n"
                 << "project " << common_.project << ", database "

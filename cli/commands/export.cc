@@ -86,7 +86,7 @@ class ExportCommand : public Command {
                             {"connections", report.connection_count},
                             {"renamed", report.renamed},
                             {"files", files}};
-      std::cout << doc.dump(2) << "\n";
+      std::cout << JsonText(doc) << "\n";
     } else {
       std::cout << report.BriefReport() << "\n";
       std::cout << "written to " << output_dir_ << "/ (load HighLift/package.mo, simulate " << report.model_path

@@ -58,7 +58,7 @@ int ListTypes(const std::vector<ComponentTypeSpec>& types, bool json) {
   if (json) {
     nlohmann::json a = nlohmann::json::array();
     for (const auto& t : types) a.push_back(TypeJson(t));
-    std::cout << a.dump(2) << "\n";
+    std::cout << JsonText(a) << "\n";
     return kSuccess;
   }
   TextTable table({"type", "ports (* optional)", "parameters"});
@@ -118,7 +118,7 @@ class InfoCommand : public Command {
       nlohmann::json doc = description.ToJson();
       doc["file"] = options_.project;
       doc["brief"] = description.BriefReport();
-      std::cout << doc.dump(2) << "\n";
+      std::cout << JsonText(doc) << "\n";
     } else if (brief_) {
       std::cout << description.BriefReport() << "\n";
     } else {
@@ -136,10 +136,9 @@ class InfoCommand : public Command {
       if (!where.json_pointer.empty()) location["json_pointer"] = where.json_pointer;
       if (where.line > 0) location["line"] = where.line;
       if (where.column > 0) location["column"] = where.column;
-      std::cout << nlohmann::json{{"file", options_.project},
-                                  {"ok", false},
-                                  {"error", {{"message", message}, {"location", location}}}}
-                       .dump(2)
+      std::cout << JsonText(nlohmann::json{{"file", options_.project},
+                                           {"ok", false},
+                                           {"error", {{"message", message}, {"location", location}}}})
                 << "\n";
     }
     std::cerr << "highlift info: error: " << text << "\n";

@@ -38,7 +38,7 @@ class ModesCommand : public Command {
                        std::to_string(kMaxModeElements) + " or fewer");
     const reduced_models::ModesReport report = reduced_models::AnalyseModes(project, modes_);
     if (options_.json)
-      std::cout << report.ToJson().dump(2) << "\n";
+      std::cout << JsonText(report.ToJson()) << "\n";
     else
       std::cout << report.BriefReport() << "\n\n" << report.FullReport() << "\n";
     return kSuccess;

@@ -219,7 +219,7 @@ class PeakCommand : public Command {
                                                                               : nlohmann::json(nullptr)}});
         j["transient_components"] = components;
       }
-      std::cout << j.dump(2) << "\n";
+      std::cout << JsonText(j) << "\n";
     } else {
       // Headline first: the worst case, the negative margins, and how the simulations went.
       std::cout << report.BriefReport();

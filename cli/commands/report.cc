@@ -76,7 +76,7 @@ class ReportCommand : public Command {
                           {"simulations_ok", report.simulations_ok},
                           {"campaign_ok", report.campaign_ok},
                           {"timings", report.data["timings"]}};
-      std::cout << j.dump(2) << "\n";
+      std::cout << JsonText(j) << "\n";
     } else {
       std::cout << report.data["verdict"].value("headline", "") << "\n"
                 << "wrote " << out_ << " (" << FormatNumber(html.size() / 1e6, 3) << " MB): open it in a browser, e.g. "

@@ -288,7 +288,7 @@ class SimulateCommand : public Command {
       for (const auto& p : report.peak_torques)
         peaks.push_back({{"element", p.element}, {"tau", p.tau}, {"abs_tau", std::abs(p.tau)}, {"time", p.time}});
       j["peak_torques"] = peaks;
-      std::cout << j.dump(2) << "\n";
+      std::cout << JsonText(j) << "\n";
     } else {
       std::cout << report.BriefReport() << "\n";
       if (!out_.empty())

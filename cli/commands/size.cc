@@ -29,7 +29,7 @@ class SizeCommand : public Command {
     options.tightness_samples = tightness_ >= 0 ? tightness_ : (options_.json ? kDefaultTightnessSamples : 0);
     const reduced_models::SizingReport report = reduced_models::Size(project, options);
     if (options_.json)
-      std::cout << report.ToJson().dump(2) << "\n";
+      std::cout << JsonText(report.ToJson()) << "\n";
     else
       std::cout << report.BriefReport() << "\n\n" << report.FullReport() << "\n";
     return report.ok() ? kSuccess : kViolated;

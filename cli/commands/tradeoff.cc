@@ -121,7 +121,7 @@ class TradeoffCommand : public Command {
       rows.push_back(row);
     }
     if (options_.json) {
-      std::cout << nlohmann::json{{"vary", name}, {"unit", unit}, {"rows", rows}}.dump(2) << "\n";
+      std::cout << JsonText(nlohmann::json{{"vary", name}, {"unit", unit}, {"rows", rows}}) << "\n";
     } else {
       int feasible = 0;
       for (const auto& row : rows) feasible += row["feasible"].get<bool>();

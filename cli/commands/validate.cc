@@ -50,7 +50,7 @@ class ValidateCommand : public Command {
                                                                   {"port", ""},
                                                                   {"message", e.message()},
                                                                   {"location", LocationJson(e.where())}}})}};
-        std::cout << doc.dump(2) << "\n";
+        std::cout << JsonText(doc) << "\n";
       }
       std::cerr << "highlift validate: error: " << e.what() << "\n";  // cleaned by InputError
       return kInvalidInput;
@@ -92,7 +92,7 @@ class ValidateCommand : public Command {
                             {"warnings", warnings},
                             {"counts", counts},
                             {"issues", issues}};
-      std::cout << doc.dump(2) << "\n";
+      std::cout << JsonText(doc) << "\n";
     }
     for (const auto& issue : report.issues) std::cerr << IssueText(issue) << "\n";
     if (!report.ok()) {

@@ -312,5 +312,98 @@ TEST(Input27, FileNamesThatAreNotUtf8GiveUtf8Messages) {
   EXPECT_EQ(OneDocument(r)["status"], "invalid_input");
 }
 
+/// The offset of the first byte of `text` that is not well-formed UTF-8, or npos.
+std::size_t FirstInvalidUtf8(const std::string& text) {
+  for (std::size_t i = 0; i < text.size();) {
+    const auto u = static_cast<unsigned char>(text[i]);
+    std::size_t n = u < 0x80 ? 1 : (u >= 0xC2 && u <= 0xDF) ? 2 : (u >= 0xE0 && u <= 0xEF) ? 3 : (u >= 0xF0 && u <= 0xF4) ? 4 : 0;
+    if (n == 0 || i + n > text.size()) return i;
+    for (std::size_t k = 1; k < n; ++k)
+      if ((static_cast<unsigned char>(text[i + k]) & 0xC0) != 0x80) return i;
+    const auto b = static_cast<unsigned char>(text[i + 1 < text.size() ? i + 1 : i]);
+    if ((u == 0xE0 && b < 0xA0) || (u == 0xED && b > 0x9F) || (u == 0xF0 && b < 0x90) || (u == 0xF4 && b > 0x8F)) return i;
+    i += n;
+  }
+  return std::string::npos;
+}
+
+TEST(Input27, EveryCommandsOutputIsUtf8WhateverItsInputCarries) {
+  // Was: only `check` was tested; a Latin-1 byte of a file name, a database text or an option
+  // reached stdout/stderr raw from the other commands' own messages and tables, and a --json
+  // document with such a byte ended as "internal error" (nlohmann refuses invalid UTF-8). Now
+  // every byte passes main()'s guarded streams (escaped as \xNN, U+FFFD inside --json documents)
+  // and every document is written with invalid bytes replaced.
+  const fs::path dir = Scratch() / "utf8 \xe9";
+  fs::create_directories(dir);
+  const fs::path project = dir / "caf\xe9.json";
+  fs::copy_file(fs::path(HIGHLIFT_SOURCE_DIR) / kProject, project, fs::copy_options::overwrite_existing);
+  // A component id with a Latin-1 byte (the reader refuses it by name) and a database whose
+  // parts carry one (the CSV import takes text as it is).
+  const fs::path bad_id = dir / "id.json";
+  {
+    std::string text = Read(project);
+    const auto at = text.find("\"id\": \"wtb\"");
+    ASSERT_NE(at, std::string::npos);
+    text.replace(at, 11, "\"id\": \"wtb\xe9\"");
+    std::ofstream(bad_id) << text;
+  }
+  const fs::path csv = dir / "parts\xe9.csv";
+  std::ofstream(csv) << "type,designation,program,supplier,note,parameter,value,min,max,unit,tag,source\n"
+                        "material,Ti\xe9-6Al,,Soci\xe9t\xe9,,shear_modulus,44,43,51,GPa,P,caf\xe9\n"
+                        "material,Ti\xe9-6Al,,,,density,4420,,,kg/m^3,P,caf\xe9\n";
+  const std::string db = (dir / "db\xe9.sqlite").string();
+  const std::string p = project.string();
+  const std::vector<std::vector<std::string>> commands = {
+      {"validate", p},
+      {"validate", bad_id.string()},
+      {"info", p},
+      {"check", p},
+      {"size", p},
+      {"modes", p},
+      {"estimate", p, "--db", db},
+      {"peak", p},
+      {"simulate", p, "--out", (dir / "out\xe9.csv").string()},
+      {"simulate", p, "--signals", "w\xe9"},
+      {"export", p, "--modelica", (dir / "mo\xe9").string()},
+      {"tradeoff", p, "--vary", "pdu.max_output_speed=20:30:2", "--show", "x\xe9"},
+      {"report", p, "--out", (dir / "r\xe9.html").string(), "--threads", "1"},
+      {"report", p, "--campaign", (dir / "none\xe9").string(), "--out", (dir / "r2.html").string()},
+      {"campaign", p, "--out", (dir / "c\xe9").string(), "--cases", "jam_*", "--model", "reduced", "--jobs", "1"},
+      {"campaign", "summary", (dir / "c\xe9").string()},
+      {"campaign", "summary", (dir / "nothing\xe9").string()},
+      {"db", "import", csv.string(), "--db", db},
+      {"db", "list", "material", "--db", db},
+      {"db", "show", "Ti\xe9-6Al", "--db", db},
+      {"db", "export", "--format", "csv", "--db", db},
+      {"db", "list", "--db", (dir / "missing\xe9" / "x.sqlite").string()},
+      {"valid\xe9", p},
+  };
+  for (const auto& base : commands) {
+    for (bool json : {false, true}) {
+      std::vector<std::string> args = base;
+      if (json) args.push_back("--json");
+      std::string line;
+      for (const auto& a : args) line += " " + a;
+      const auto r = RunCli(args);
+      EXPECT_NE(r.exit_code, 3) << line << "\n" << r.err;
+      EXPECT_NE(r.exit_code, -1) << line;
+      const std::size_t bad_out = FirstInvalidUtf8(r.out), bad_err = FirstInvalidUtf8(r.err);
+      EXPECT_EQ(bad_out, std::string::npos) << "stdout of" << line << " at byte " << bad_out << ":\n"
+                                            << r.out.substr(bad_out == std::string::npos ? 0 : bad_out > 80 ? bad_out - 80 : 0, 160);
+      EXPECT_EQ(bad_err, std::string::npos) << "stderr of" << line << " at byte " << bad_err << ":\n"
+                                            << r.err.substr(bad_err == std::string::npos ? 0 : bad_err > 80 ? bad_err - 80 : 0, 160);
+      if (json && !(base.size() >= 2 && base[0] == "db" && base[1] == "export")) {
+        try {
+          const nlohmann::json document = nlohmann::json::parse(r.out);
+          EXPECT_TRUE(document.is_object()) << line;
+        } catch (const std::exception& e) {
+          ADD_FAILURE() << line << ": stdout is not one JSON document (" << e.what() << "):\n" << r.out.substr(0, 400)
+                        << "\nstderr:\n" << r.err;
+        }
+      }
+    }
+  }
+}
+
 }  // namespace
 }  // namespace highlift
