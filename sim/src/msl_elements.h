@@ -909,17 +909,23 @@ class LossyGear : public GearBase {
     return tau_a + c.bf_a > 0 ? (1 - 1 / c.eta2) * tau_a - c.bf2 : (1 - c.eta1) * tau_a - c.bf1;
   }
 
+  double AA(const Eval& e) const { return e.acc[a] - e.acc[s]; }
   int NumRoots() const override { return ideal ? 0 : 4; }
   void Roots(const Eval& e, double* g) const override {
-    g[0] = Rolling() ? WA(e) : 1.0;
+    // Rolling: w_a, located where it reaches 0 against the mode. Starting from rest (MSL
+    // startForward/startBackward; case G4 of docs/simulation.md) w_a is 0 within roundoff on
+    // either side, so its crossing says nothing: the acceleration in the rolling direction is
+    // watched instead until the gear has moved clear of rest (MSL keeps startForward only while
+    // sa > tauLossMax_p, i.e. while that acceleration is positive).
+    g[0] = Rolling() ? (starting ? mode * AA(e) : WA(e)) : 1.0;
     // A margin of 1e-10 (as Friction's stuck root): the roots start positive at the event.
-    const double margin = 1e-10 * (1.0 + std::abs(tau_a) + std::abs(tau_loss));
+    const double margin = 1e-10 * (1.0 + std::abs(tau_a) + std::abs(tau_loss)) + settled_allowance;
     g[1] = mode == kStuck ? LossMaxForward() - tau_loss + margin : 1.0;
     g[2] = mode == kStuck ? tau_loss - LossMinBackward() + margin : 1.0;
     g[3] = Rolling() ? TauEta(e) : 1.0;
   }
   void RootDirections(int* d) const override {
-    d[0] = mode == kForward ? -1 : (mode == kBackward ? 1 : 0);
+    d[0] = starting ? 0 : (mode == kForward ? -1 : (mode == kBackward ? 1 : 0));
     d[1] = -1;
     d[2] = -1;
     d[3] = 0;
@@ -927,19 +933,25 @@ class LossyGear : public GearBase {
   bool IsSwitching() const override { return !ideal; }
   void PrepareEvent(const Eval& e) override {
     start_forward = start_backward = false;
+    settled_allowance = 0.0;
     if (ideal) {
       mode = kFree;
       return;
     }
     const double w = WA(e);
     const double w_eps = 1e-9 * (1.0 + std::abs(e.w[a]) + std::abs(e.w[s]));
+    // A start that has moved clear of rest rolls on: root 0 was its acceleration, not w_a.
+    const bool clear = starting && Rolling() && w * mode > w_eps;
+    if (clear || !Rolling()) starting = false;
+    const bool slip_root = Fired(0) && !clear;
     if (mode == kFree || mode == kUnknown) {
       mode = w > w_eps ? kForward : (w < -w_eps ? kBackward : kStuck);
-    } else if (mode == kForward && (w <= w_eps || Fired(0))) {
+    } else if (mode == kForward && (w <= w_eps || slip_root)) {
       mode = kStuck;
-    } else if (mode == kBackward && (w >= -w_eps || Fired(0))) {
+    } else if (mode == kBackward && (w >= -w_eps || slip_root)) {
       mode = kStuck;
     }
+    if (!Rolling()) starting = false;
     if (Rolling()) {
       const double te = TauEta(e);
       if (te > 0) quadrant = 1;
@@ -958,10 +970,13 @@ class LossyGear : public GearBase {
       return v > 0 ? v / (1.0 + std::abs(tau_a)) : 0.0;
     }
     if (Rolling()) {
-      const double te = TauEta(e);
-      if (te * quadrant < -scale) return std::abs(te) / (1.0 + std::abs(tau_a));
       const double w = WA(e);
       const double w_eps = 1e-9 * (1.0 + std::abs(e.w[a]) + std::abs(e.w[s]));
+      // Rolling against w_a beyond roundoff: the loss would push along the motion (negative
+      // lossPower). MSL's mode is Forward only while w_a > 0: Fix() takes the direction of w_a.
+      if (w * mode < -w_eps) return 1.0;
+      const double te = TauEta(e);
+      if (te * quadrant < -scale) return std::abs(te) / (1.0 + std::abs(tau_a));
       const double acc = e.acc[a] - e.acc[s];
       const double a_eps = 1e-9 * (1.0 + std::abs(e.acc[a]) + std::abs(e.acc[s]));
       if (std::abs(w) <= w_eps && acc * mode < -a_eps) return 1.0;
@@ -980,6 +995,16 @@ class LossyGear : public GearBase {
         mode = kBackward;
         start_backward = true;
       }
+      starting = true;
+      quadrant = 1;
+      return;
+    }
+    const double w = WA(e);
+    const double w_eps = 1e-9 * (1.0 + std::abs(e.w[a]) + std::abs(e.w[s]));
+    if (Rolling() && w * mode < -w_eps) {  // against its speed: roll the way it moves
+      mode = w > 0 ? kForward : kBackward;
+      start_forward = start_backward = false;
+      starting = false;
       quadrant = 1;
       return;
     }
@@ -994,11 +1019,21 @@ class LossyGear : public GearBase {
     }
     mode = kStuck;
     start_forward = start_backward = false;
+    starting = false;
   }
   void AfterEventRow() override {
     start_forward = start_backward = false;
     flips = 0;
     ClearFired();
+  }
+  /// Stuck and rolling each inconsistent by roundoff (the loss sits at its threshold): stuck,
+  /// with the threshold roots re-armed kSettledAllowance of the torque scale beyond it until the
+  /// next event (as Friction::Settle).
+  void Settle(const Eval&) override {
+    if (Rolling()) mode = kStuck;
+    start_forward = start_backward = false;
+    starting = false;
+    settled_allowance = kSettledAllowance * (1.0 + std::abs(tau_a) + std::abs(tau_loss));
   }
   std::string ModeText() const override { return ModeName(mode); }
   std::vector<std::string> OutputNames() const override {
@@ -1027,6 +1062,11 @@ class LossyGear : public GearBase {
   int quadrant = 1;
   int flips = 0;
   bool start_forward = false, start_backward = false;
+  /// Broke away from Stuck and not yet clear of rest (|w_a| <= roundoff): root 0 watches the
+  /// acceleration in the rolling direction (Friction::starting).
+  bool starting = false;
+  static constexpr double kSettledAllowance = 1e-6;  ///< relative, of a settled gear's roots
+  double settled_allowance = 0.0;  ///< N*m beyond the thresholds, from Settle() to the next event
   int kinematic = -1, stuck_constraint = -1;
   double tau_a = 0.0, tau_loss = 0.0;
   mutable Memo<1> smooth_memo_;  ///< Smooth at the last w_a

@@ -779,6 +779,11 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
     int flag = CV_SUCCESS;
     std::vector<double> y;
   } pending;
+  // The stop time last given to CVODE (NAN: none). CVodeReInit forgets it (SUNDIALS 6.4), so
+  // every re-initialisation resets this and the next step sets it again: without that a step
+  // after an event could pass t_end (seen: a stuck gear from 0.84 s stepped to 1.58 s past a
+  // stop time of 0.9 s, and the output loop then wrote rows at t_end without end).
+  double stop_set = NAN;
   auto handle_event = [&](double te, const char* kind, const std::string& what,
                           const int* fired) {
     pending.active = false;  // the integrator restarts at te
@@ -805,6 +810,7 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
     accumulate();
     ++report.statistics.reinitialisations;
     if (!check(CVodeReInit(cv.mem, te, cv.y), "CVodeReInit", te)) return false;
+    stop_set = NAN;
     return set_directions();
   };
 
@@ -824,7 +830,7 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
     ~VectorGuard() { N_VDestroy(v); }
   } interpolated_guard{interpolated};
   long steps_since_output = 0;
-  double last_progress = -1, stop_set = NAN;
+  double last_progress = -1;
   // Root functions at the last sample point (a step end or an output point).
   std::vector<double> g_prev(std::max(n_roots, 1), 1.0), g_out(std::max(n_roots, 1), 1.0), g_probe(g_out);
   double g_prev_time = t;
@@ -978,6 +984,8 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
     bool failed = false, hidden_root = false;
     while (next_output() < t_ret - eps_t) {
       const double t_out = next_output();
+      HIGHLIFT_CHECK(t_out < t_end + eps_t && (k == 1 || t0 + static_cast<double>(k - 1) * dt < t_end - eps_t),
+                     "a CVODE step ended past the stop time");
       if (!interpolate(t_out)) {
         failed = true;
         break;
@@ -1074,6 +1082,7 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
           ++report.statistics.reinitialisations;
           pending.active = false;
           if (!check(CVodeReInit(cv.mem, t, cv.y), "CVodeReInit", t)) break;
+          stop_set = NAN;
         }
       } else if (!handle_event(t, "state", what, root_info.data())) {
         break;

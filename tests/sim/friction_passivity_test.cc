@@ -10,7 +10,11 @@
 // with the friction torque tau = 0 and B > 0 (1/J for a brake on a shaft, 2 for a clutch
 // between two unit inertias). Sliding in direction s: tau = s Ck(t); stuck: tau = A/B while
 // |A/B| <= Cs(t). The reference integrates this in closed form between switches (Ik = integral
-// of Ck, Aint = integral of A) and finds the switches by scanning and bisection.
+// of Ck, Aint = integral of A) and finds the switches by scanning and bisection. The lossy gear
+// (issue 26 item 1, its leftover: MSL's LossyGear) is one degree of freedom in its input speed
+// w_a too, but its loss depends on the torque it transmits: its reference integrates the rolling
+// acceleration of each direction numerically and takes MSL's startForward/startBackward
+// thresholds (GearLaw).
 //
 // Checked: the slip against the reference away from the switches; the power tau * w of every
 // friction element never below zero (a sliding element never pushes along its slip); the
@@ -41,6 +45,15 @@ struct Reference {
   Fn Cs, Ck, Ik;  // static and kinetic capacity (N*m), integral of the kinetic one
   double d0 = 0.0;
   double stop = 0.9;
+  // A friction law whose sliding acceleration is not A - B s Ck (a lossy gear, whose loss depends
+  // on the torque it transmits): the slip acceleration when sliding in direction s, and at rest
+  // 0 while it holds or the direction +-1 in which it breaks away. The slip is then integrated
+  // numerically (Gauss-Legendre on a grid of 1e-5 s: exact to roundoff where the law is smooth,
+  // 1e-10 of the acceleration's kink at a quadrant change).
+  std::function<double(double, int)> rolling;
+  std::function<int(double)> breakaway;
+  std::vector<double> grid_forward, grid_backward;  // integral of rolling(t, +-1) from 0, per grid point
+  static constexpr double kGrid = 1e-5;
 
   struct Segment {
     double t0, d0;
@@ -49,10 +62,34 @@ struct Reference {
   std::vector<Segment> segments;
 
   double Slide(const Segment& g, double t) const {
+    if (rolling) return g.d0 + RollingIntegral(g.s, t) - RollingIntegral(g.s, g.t0);
     return g.d0 + (Aint(t) - Aint(g.t0)) - B * g.s * (Ik(t) - Ik(g.t0));
   }
-  bool Holds(double t) const { return std::abs(A(t)) <= B * Cs(t) * (1 + 1e-12); }
+  bool Holds(double t) const {
+    if (breakaway) return breakaway(t) == 0;
+    return std::abs(A(t)) <= B * Cs(t) * (1 + 1e-12);
+  }
   int Sign(double x) const { return x > 0 ? 1 : (x < 0 ? -1 : 0); }
+  int StartDirection(double t) const { return breakaway ? breakaway(t) : Sign(A(t)); }
+
+  // Integral of rolling(., s) over [a, b] by 3-point Gauss-Legendre.
+  double Gauss(int s, double a, double b) const {
+    const double m = 0.5 * (a + b), h = 0.5 * (b - a), x = std::sqrt(0.6);
+    return h * (5.0 / 9 * rolling(m - h * x, s) + 8.0 / 9 * rolling(m, s) + 5.0 / 9 * rolling(m + h * x, s));
+  }
+  void Tabulate() {
+    const int n = static_cast<int>(std::ceil(stop / kGrid)) + 2;
+    for (int s : {1, -1}) {
+      std::vector<double>& g = s > 0 ? grid_forward : grid_backward;
+      g.assign(static_cast<std::size_t>(n) + 1, 0.0);
+      for (int k = 0; k < n; ++k) g[k + 1] = g[k] + Gauss(s, k * kGrid, (k + 1) * kGrid);
+    }
+  }
+  double RollingIntegral(int s, double t) const {
+    const std::vector<double>& g = s > 0 ? grid_forward : grid_backward;
+    const auto k = std::min(static_cast<std::size_t>(std::max(0.0, t / kGrid)), g.size() - 2);
+    return g[k] + Gauss(s, static_cast<double>(k) * kGrid, t);
+  }
 
   // First t in (t0, stop] where pred turns true (scan of 1e-5 s, then bisection).
   double Find(double t0, const std::function<bool(double)>& pred) const {
@@ -73,22 +110,23 @@ struct Reference {
   }
 
   void Solve() {
+    if (rolling) Tabulate();
     segments.clear();
     Segment g{0.0, d0, 0};
     if (d0 != 0.0) g.s = Sign(d0);
-    else if (!Holds(0.0)) g.s = Sign(A(0.0));
+    else if (!Holds(0.0)) g.s = StartDirection(0.0);
     while (g.t0 < stop) {
       segments.push_back(g);
       if (g.s != 0) {
         const Segment cur = g;
         const double tc = Find(cur.t0, [&](double t) { return cur.s * Slide(cur, t) <= 0; });
         if (!std::isfinite(tc)) break;
-        g = {tc, 0.0, Holds(tc) ? 0 : Sign(A(tc))};
+        g = {tc, 0.0, Holds(tc) ? 0 : StartDirection(tc)};
         if (g.s == cur.s) break;  // cannot happen for these cases: the slip would not cross
       } else {
         const double tb = Find(g.t0, [&](double t) { return !Holds(t); });
         if (!std::isfinite(tb)) break;
-        g = {tb, 0.0, Sign(A(tb))};
+        g = {tb, 0.0, StartDirection(tb)};
       }
     }
   }
@@ -123,6 +161,20 @@ void AddSignal(Network& net, Signal s) {
 double F(Signal s, double t) { return s == Signal::kRamp ? std::min(t, 1.0) : std::sin(kPi * t); }
 double FInt(Signal s, double t) { return s == Signal::kRamp ? 0.5 * t * t : (1 - std::cos(kPi * t)) / kPi; }
 
+/// A network with the ground "fixed".
+Network Grounded() {
+  Network net;
+  net.AddElement("Fixed", "fixed");
+  return net;
+}
+void Ground(Network& net, const std::string& port) { net.Connect(port, "fixed.flange"); }
+/// A constant torque "load" of `tau` N*m on `flange`.
+void AddConstantLoad(Network& net, const std::string& flange, double tau) {
+  net.AddElement("ConstantTorque", "load", P({{"tau_constant", tau}}));
+  net.Connect("load.flange", flange);
+  Ground(net, "load.support");
+}
+
 Fn Constant(double a) {
   return [a](double) { return a; };
 }
@@ -138,19 +190,14 @@ Case BrakeCase(Signal sig, double fn_max, bool loaded) {
   Case c;
   c.name = "Brake" + SignalName(sig) + "Fn" + std::to_string(static_cast<int>(fn_max)) + (loaded ? "Loaded" : "Unloaded");
   c.build = [=] {
-    Network net;
-    net.AddElement("Fixed", "fixed");
+    Network net = Grounded();
     AddSignal(net, sig);
     net.AddElement("Inertia", "shaft", P({{"J", 1}, {"phi_start", 0}, {"w_start", loaded ? 0.0 : 10.0}}));
     net.AddElement("Brake", "brake", P({{"fn_max", fn_max}}));
     net.Connect("shaft.flange_b", "brake.flange_a");
-    net.Connect("brake.support", "fixed.flange");
+    Ground(net, "brake.support");
     net.Connect("f.y", "brake.f_normalized");
-    if (loaded) {
-      net.AddElement("ConstantTorque", "load", P({{"tau_constant", 5}}));
-      net.Connect("load.flange", "shaft.flange_a");
-      net.Connect("load.support", "fixed.flange");
-    }
+    if (loaded) AddConstantLoad(net, "shaft.flange_a", 5);
     return net;
   };
   c.slip = "brake.w";
@@ -177,8 +224,7 @@ Case ClutchCase(ClutchLoad load, double fn_max) {
   c.name = std::string("ClutchSineSlipMinus7e15Fn") + std::to_string(static_cast<int>(fn_max)) + where;
   const double slip0 = -7e-15;
   c.build = [=] {
-    Network net;
-    net.AddElement("Fixed", "fixed");
+    Network net = Grounded();
     AddSignal(net, Signal::kSine);
     net.AddElement("Inertia", "a", P({{"J", 1}, {"phi_start", 0}, {"w_start", 1.0}}));
     net.AddElement("Inertia", "b", P({{"J", 1}, {"phi_start", 0}, {"w_start", 1.0 + slip0}}));
@@ -186,11 +232,7 @@ Case ClutchCase(ClutchLoad load, double fn_max) {
     net.Connect("a.flange_b", "clutch.flange_a");
     net.Connect("clutch.flange_b", "b.flange_a");
     net.Connect("f.y", "clutch.f_normalized");
-    if (load != ClutchLoad::kNone) {
-      net.AddElement("ConstantTorque", "load", P({{"tau_constant", 5}}));
-      net.Connect("load.flange", load == ClutchLoad::kOnA ? "a.flange_a" : "b.flange_b");
-      net.Connect("load.support", "fixed.flange");
-    }
+    if (load != ClutchLoad::kNone) AddConstantLoad(net, load == ClutchLoad::kOnA ? "a.flange_a" : "b.flange_b", 5);
     return net;
   };
   c.slip = "clutch.w_rel";
@@ -216,19 +258,16 @@ Case ShaftBrakeCase(Signal sig, double scale) {
   Case c;
   c.name = "ShaftBrake" + SignalName(sig) + "Scale" + std::to_string(static_cast<int>(scale)) + "Loaded";
   c.build = [=] {
-    Network net;
-    net.AddElement("Fixed", "fixed");
+    Network net = Grounded();
     AddSignal(net, sig);
     net.AddElement("Gain", "gain", P({{"k", scale}}));
     net.Connect("f.y", "gain.u");
     net.AddElement("Inertia", "shaft", P({{"J", 1}, {"phi_start", 0}, {"w_start", 0}}));
     net.AddElement("ShaftBrake", "brake", P({{"tauB_max", 40}, {"tauB_lim", 50}}));
     net.Connect("shaft.flange_b", "brake.flange_a");
-    net.Connect("brake.support", "fixed.flange");
+    Ground(net, "brake.support");
     net.Connect("gain.y", "brake.u");
-    net.AddElement("ConstantTorque", "load", P({{"tau_constant", 5}}));
-    net.Connect("load.flange", "shaft.flange_a");
-    net.Connect("load.support", "fixed.flange");
+    AddConstantLoad(net, "shaft.flange_a", 5);
     return net;
   };
   c.slip = "brake.w";
@@ -252,8 +291,7 @@ Case SeveralBrakesCase(bool loaded) {
   Case c;
   c.name = std::string("TwoBrakesAndBearingFriction") + (loaded ? "Loaded" : "Unloaded");
   c.build = [=] {
-    Network net;
-    net.AddElement("Fixed", "fixed");
+    Network net = Grounded();
     net.AddElement("Ramp", "ramp", P({{"height", 1}, {"duration", 1}}));
     net.AddElement("Sine", "sine", P({{"amplitude", 1}, {"f", 0.5}}));
     net.AddElement("Inertia", "shaft", P({{"J", 1}, {"phi_start", 0}, {"w_start", loaded ? 0.0 : 10.0}}));
@@ -263,14 +301,10 @@ Case SeveralBrakesCase(bool loaded) {
     net.Connect("shaft.flange_b", "brake1.flange_a");
     net.Connect("brake1.flange_b", "brake2.flange_a");
     net.Connect("brake2.flange_b", "bearing.flange_a");
-    for (const char* s : {"brake1.support", "brake2.support", "bearing.support"}) net.Connect(s, "fixed.flange");
+    for (const char* s : {"brake1.support", "brake2.support", "bearing.support"}) Ground(net, s);
     net.Connect("ramp.y", "brake1.f_normalized");
     net.Connect("sine.y", "brake2.f_normalized");
-    if (loaded) {
-      net.AddElement("ConstantTorque", "load", P({{"tau_constant", 5}}));
-      net.Connect("load.flange", "shaft.flange_a");
-      net.Connect("load.support", "fixed.flange");
-    }
+    if (loaded) AddConstantLoad(net, "shaft.flange_a", 5);
     return net;
   };
   c.slip = "brake1.w";
@@ -296,18 +330,17 @@ Case WingTipBrakeCase(double residual, double load) {
            (load > 0 ? "Plus" : "Minus") + std::to_string(static_cast<int>(std::abs(load)));
   const double J = 1.0 + 5e-4;  // shaft and rotor
   c.build = [=] {
-    Network net;
-    net.AddElement("Fixed", "fixed");
+    Network net = Grounded();
     net.AddElement("Inertia", "shaft", P({{"J", 1}, {"phi_start", 0}, {"w_start", residual}}));
     net.AddElement("WingTipBrake", "wtb",
                    P({{"tauB_max", 100}, {"tauB_lim", 120}, {"t_lat", 0.1}, {"t_B", 0.03}, {"J", 5e-4}}));
     net.AddElement("Step", "apply", P({{"startTime", 0.4}}));
     net.Connect("shaft.flange_b", "wtb.flange_a");
-    net.Connect("wtb.support", "fixed.flange");
+    Ground(net, "wtb.support");
     net.Connect("apply.y", "wtb.apply");
     net.AddElement("TorqueStep", "load", P({{"stepTorque", load}, {"startTime", 0.7}}));
     net.Connect("load.flange", "shaft.flange_a");
-    net.Connect("load.support", "fixed.flange");
+    Ground(net, "load.support");
     return net;
   };
   c.slip = "wtb.w";
@@ -332,6 +365,133 @@ Case WingTipBrakeCase(double residual, double load) {
   return c;
 }
 
+// A LossyGear (ratio 2; eta_mf1 0.8, eta_mf2 0.6, tau_bf1 0.5, tau_bf2 0.4 N*m at every speed)
+// between a unit inertia at flange_a (speed w_a, the slip) and an inertia of 2 at flange_b, the
+// support fixed; a torque Ta(t) on the input inertia and Tb(t) on the output one.
+//
+// MSL's LossyGear (4.0.0), independently: with tau_a = flange_a.tau and tauLoss = k tau_a + c0
+// in the active quadrant (rolling forward: k = 1 - eta_mf1, c0 = tau_bf1 while tau_a - tau_bf_a
+// >= 0, else k = 1 - 1/eta_mf2, c0 = tau_bf2; backward: k = 1 - 1/eta_mf2, c0 = -tau_bf2 while
+// tau_a + tau_bf_a >= 0, else 1 - eta_mf1, -tau_bf1), Ja w_a' = Ta - tau_a and
+// Jb w_a' / i = Tb + i (tau_a - tauLoss) give w_a' = (Tb + i ((1 - k) Ta - c0)) / (Jb / i + i (1 - k) Ja).
+// Stuck (w_a' = 0): tau_a = Ta and tauLoss = sa = Ta + Tb / i; it starts forward when sa >
+// tauLossMax_p (quadrant 1 if Ta - tau_bf_a > 0, else 2), backward when sa < tauLossMin_m
+// (quadrant 4 if Ta + tau_bf_a > 0, else 3) -- MSL's startForward / startBackward.
+struct GearLaw {
+  double ratio = 2, Ja = 1, Jb = 2, eta1 = 0.8, eta2 = 0.6, bf1 = 0.5, bf2 = 0.4;
+  double bf_a() const { return (bf1 - bf2) / (eta1 - 1.0 / eta2); }
+  double Acceleration(double Ta, double Tb, double k, double c0) const {
+    return (Tb + ratio * ((1 - k) * Ta - c0)) / (Jb / ratio + ratio * (1 - k) * Ja);
+  }
+  double Rolling(double Ta, double Tb, int s) const {
+    // The quadrant whose tau_eta has its sign (the loss is continuous at the boundary).
+    const double k_pos = s > 0 ? 1 - eta1 : 1 - 1 / eta2, c_pos = s > 0 ? bf1 : -bf2;
+    const double a_pos = Acceleration(Ta, Tb, k_pos, c_pos);
+    if (Ta - Ja * a_pos - s * bf_a() >= 0) return a_pos;
+    return Acceleration(Ta, Tb, s > 0 ? 1 - 1 / eta2 : 1 - eta1, s > 0 ? bf2 : -bf1);
+  }
+  int Breakaway(double Ta, double Tb) const {
+    const double sa = Ta + Tb / ratio;
+    const double loss_max = Ta - bf_a() > 0 ? (1 - eta1) * Ta + bf1 : (1 - 1 / eta2) * Ta + bf2;
+    const double loss_min = Ta + bf_a() > 0 ? (1 - 1 / eta2) * Ta - bf2 : (1 - eta1) * Ta - bf1;
+    return sa > loss_max ? 1 : (sa < loss_min ? -1 : 0);
+  }
+};
+
+/// `loads` adds the torque sources on "a.flange_a" (Ta) and "b.flange_b" (Tb).
+Case LossyGearCase(const std::string& name, const std::function<void(Network&)>& loads, const Fn& Ta, const Fn& Tb,
+                   double w0 = 0.0) {
+  Case c;
+  c.name = "LossyGear" + name;
+  const GearLaw law;
+  c.build = [=] {
+    Network net = Grounded();
+    net.AddElement("Inertia", "a", P({{"J", law.Ja}, {"phi_start", 0}, {"w_start", w0}}));
+    net.AddElement("Inertia", "b", P({{"J", law.Jb}}));
+    ElementParameters gear = P({{"ratio", law.ratio}});
+    gear.tables["lossTable"] = {{0.0, law.eta1, law.eta2, law.bf1, law.bf2}};
+    net.AddElement("LossyGear", "gear", gear);
+    net.Connect("a.flange_b", "gear.flange_a");
+    net.Connect("gear.flange_b", "b.flange_a");
+    Ground(net, "gear.support");
+    loads(net);
+    return net;
+  };
+  c.slip = "gear.w_a";
+  c.friction = {{"gear.w_a", "gear.tauLoss"}};
+  c.reference = [=] {
+    Reference r;
+    r.rolling = [=](double t, int s) { return law.Rolling(Ta(t), Tb(t), s); };
+    r.breakaway = [=](double t) { return law.Breakaway(Ta(t), Tb(t)); };
+    r.d0 = w0;
+    return r;
+  };
+  return c;
+}
+
+/// A torque from the signal block `signal` on `flange`.
+void AddSignalTorque(Network& net, const std::string& id, const std::string& flange, const std::string& signal) {
+  net.AddElement("Torque", id);
+  net.Connect(signal + ".y", id + ".tau");
+  net.Connect(id + ".flange", flange);
+  Ground(net, id + ".support");
+}
+
+std::vector<Case> LossyGearCases() {
+  std::vector<Case> cases;
+  // Driven from rest by a rising torque (Ta = 10 t) against a load of -3 N*m: stuck until sa =
+  // 10 t - 1.5 passes tauLossMax_p = 2 t + 0.5 (t = 0.25), then rolling forward in quadrant 1.
+  cases.push_back(LossyGearCase(
+      "DrivenFromRestByARisingTorque",
+      [](Network& net) {
+        net.AddElement("Ramp", "f", P({{"height", 10}, {"duration", 1}}));
+        AddSignalTorque(net, "drive", "a.flange_a", "f");
+        AddConstantLoad(net, "b.flange_b", -3);
+      },
+      Linear(10.0), Constant(-3.0)));
+  // Back-driven from rest by a rising load on flange_b (Tb = 10 t): stuck until Tb / 2 passes
+  // tauLossMax_p = 0.5 at t = 0.1, then forward; the driving side changes (tau_a = -w_a' turns
+  // below tau_bf_a): quadrant 1, then 2 (eta_mf2).
+  cases.push_back(LossyGearCase(
+      "BackDrivenFromRestByARisingLoad",
+      [](Network& net) {
+        net.AddElement("Ramp", "f", P({{"height", 10}, {"duration", 1}}));
+        AddSignalTorque(net, "drive", "b.flange_b", "f");
+      },
+      Constant(0.0), Linear(10.0)));
+  // A sine drive Ta = 8 sin(2 pi t): forward, slows against its loss, sticks, starts backward.
+  cases.push_back(LossyGearCase(
+      "SineDriveForwardStuckBackward",
+      [](Network& net) {
+        net.AddElement("Sine", "f", P({{"amplitude", 8}, {"f", 1}}));
+        AddSignalTorque(net, "drive", "a.flange_a", "f");
+      },
+      [](double t) { return 8 * std::sin(2 * kPi * t); }, Constant(0.0)));
+  // A sine drive whose peak passes the breakaway torque (Ta = 0.625 N*m: 0.8 Ta > 0.5) by 0.16 %:
+  // it starts forward at t = 0.2306, moves by less than 1e-5 rad/s and sticks again (G4, G5).
+  cases.push_back(LossyGearCase(
+      "SineDrivePeakJustAboveBreakaway",
+      [](Network& net) {
+        net.AddElement("Sine", "f", P({{"amplitude", 0.626}, {"f", 1}}));
+        AddSignalTorque(net, "drive", "a.flange_a", "f");
+      },
+      [](double t) { return 0.626 * std::sin(2 * kPi * t); }, Constant(0.0)));
+  // At rest with a roundoff speed of +-1e-12 rad/s, held by its loss against Ta = +-0.3 N*m (of
+  // either sign relative to the roundoff), then a step to +-5 N*m at 0.5 s breaks it away.
+  for (double residual : {1e-12, -1e-12})
+    for (double drive : {1.0, -1.0})
+      cases.push_back(LossyGearCase(
+          std::string("RoundoffSpeed") + (residual > 0 ? "Plus" : "Minus") + "Drive" + (drive > 0 ? "Plus" : "Minus"),
+          [=](Network& net) {
+            net.AddElement("TorqueStep", "drive",
+                           P({{"offsetTorque", 0.3 * drive}, {"stepTorque", 4.7 * drive}, {"startTime", 0.5}}));
+            net.Connect("drive.flange", "a.flange_a");
+            Ground(net, "drive.support");
+          },
+          [=](double t) { return drive * (t < 0.5 ? 0.3 : 5.0); }, Constant(0.0), residual));
+  return cases;
+}
+
 std::vector<Case> AllCases() {
   std::vector<Case> cases;
   for (double fn : {1.0, 2.0, 100.0})
@@ -345,6 +505,7 @@ std::vector<Case> AllCases() {
   for (bool loaded : {false, true}) cases.push_back(SeveralBrakesCase(loaded));
   for (double residual : {1e-10, -1e-10})
     for (double load : {50.0, -50.0, 150.0, -150.0}) cases.push_back(WingTipBrakeCase(residual, load));
+  for (Case& c : LossyGearCases()) cases.push_back(std::move(c));
   return cases;
 }
 
