@@ -8,9 +8,13 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "highlift/core/catalogue.h"
+#include "highlift/core/error.h"
+#include "highlift/core/message_number.h"
 #include "highlift/core/project.h"
 #include "highlift/model/component_model.h"
 #include "highlift/reduced_models/lumped_model.h"
@@ -121,6 +125,24 @@ inline Interval Read<Interval>(const Component& c, std::string_view name, const 
 /// (component id, parameter name).
 std::vector<std::pair<std::string, std::string>> UncertainParameters(const Graph& graph);
 
+/// "inertia = 1e+308, ratio = 1e+200": the parameters a law read, for a message.
+inline std::string ParameterList(const std::vector<std::pair<std::string, double>>& read) {
+  std::string text;
+  for (const auto& [name, value] : read) text += (text.empty() ? "" : ", ") + name + " = " + FormatMessageNumber(value);
+  return text.empty() ? "no parameter" : text;
+}
+
+/// A derived value of a component that is not finite (an overflow to inf, or inf - inf, 0 * inf
+/// = nan) names that component, the value and the parameters it came from (issue 27 item 19:
+/// a "J = -nan" message named a lumped node whose own component was not the culprit).
+[[noreturn]] inline void ThrowNotFinite(const Component& c, const std::string& what, double value,
+                                        const std::string& from) {
+  throw InputError("component '" + c.id + "': its " + what + " is not finite (" + FormatMessageNumber(value) +
+                   "), computed from " + from +
+                   "; give values whose products and sums stay within the range of numbers (about 1e308 in SI "
+                   "units; check the units of these parameters)");
+}
+
 /// Speed of each node's input flange relative to the PDU output speed (w_in / w_pdu).
 template <class T>
 std::vector<T> SpeedRatios(const Graph& g, const ParameterMode& mode) {
@@ -138,6 +160,13 @@ std::vector<T> SpeedRatios(const Graph& g, const ParameterMode& mode) {
       n[i] = n[node.parent] / Read<T>(parent, law.parameter, mode);
     else
       n[i] = n[node.parent] * Read<T>(parent, law.parameter, mode);
+    if constexpr (std::is_same_v<T, double>) {
+      if (!std::isfinite(n[i]) || n[i] == 0.0)
+        ThrowNotFinite(parent, "speed ratio towards '" + node.component->id + "' (w / w_pdu)", n[i],
+                       "its parameter " + std::string(law.parameter) + " = " +
+                           FormatMessageNumber(Read<double>(parent, law.parameter, mode)) +
+                           " and the speed ratio at its own input, " + FormatMessageNumber(n[node.parent]));
+    }
   }
   return n;
 }
@@ -146,22 +175,41 @@ std::vector<T> SpeedRatios(const Graph& g, const ParameterMode& mode) {
 template <class T>
 class ModeReader final : public model::ParameterReader<T> {
  public:
-  ModeReader(const Component& c, const ParameterMode& mode) : c_(c), mode_(mode) {}
-  T operator()(std::string_view name) const override { return Read<T>(c_, name, mode_); }
+  /// `log` (double only): every parameter the law reads, with its value, for messages.
+  ModeReader(const Component& c, const ParameterMode& mode,
+             std::vector<std::pair<std::string, double>>* log = nullptr)
+      : c_(c), mode_(mode), log_(log) {}
+  T operator()(std::string_view name) const override {
+    T value = Read<T>(c_, name, mode_);
+    if constexpr (std::is_same_v<T, double>) {
+      if (log_ != nullptr) log_->emplace_back(std::string(name), value);
+    }
+    return value;
+  }
   bool Has(std::string_view name) const override { return HasValue(c_, name); }
   double Nominal(std::string_view name) const override { return NominalValue(c_, name); }
 
  private:
   const Component& c_;
   const ParameterMode& mode_;
+  std::vector<std::pair<std::string, double>>* log_;
 };
 
 /// The component's contribution to the lumped models, from its type's lumped law
-/// (ComponentModel::LumpedAtInput); the default law for a type without a model.
+/// (ComponentModel::LumpedAtInput); the default law for a type without a model. For double, a
+/// value that is not finite is an InputError naming the component and the parameters read.
 template <class T>
 model::Lumped<T> LumpedOf(const Component& c, const ParameterMode& mode, const model::ComponentModel* m) {
-  const ModeReader<T> reader(c, mode);
-  return m ? m->LumpedAtInput(reader) : model::DefaultLumped<T>(reader);
+  std::vector<std::pair<std::string, double>> read;
+  const ModeReader<T> reader(c, mode, &read);
+  model::Lumped<T> lumped = m ? m->LumpedAtInput(reader) : model::DefaultLumped<T>(reader);
+  if constexpr (std::is_same_v<T, double>) {
+    if (!std::isfinite(lumped.J))
+      ThrowNotFinite(c, "lumped inertia J [kg*m^2]", lumped.J, "its parameters " + ParameterList(read));
+    if (lumped.c && !std::isfinite(*lumped.c))
+      ThrowNotFinite(c, "lumped stiffness c [N*m/rad]", *lumped.c, "its parameters " + ParameterList(read));
+  }
+  return lumped;
 }
 template <class T>
 model::Lumped<T> LumpedOf(const Component& c, const ParameterMode& mode) {
@@ -222,6 +270,17 @@ TransmissionDraft<T> BuildTransmission(const Graph& g, const ParameterMode& mode
     int at = root ? -1 : t.point_of_node[parent];
     const model::ComponentModel* m = g.nodes[i].model;
     const model::Lumped<T> lumped = LumpedOf<T>(c, mode, m);
+    if constexpr (std::is_same_v<T, double>) {
+      // Finite factors whose product overflows: named here, not at the lumped node they reach.
+      const std::string reflected = " reflected to the PDU output speed";
+      const std::string from = " x (w / w_pdu)^2 = " + FormatMessageNumber(n2) + " (the speed ratio at its input)";
+      if (!std::isfinite(lumped.J * n2))
+        ThrowNotFinite(c, "inertia" + reflected + " [kg*m^2]", lumped.J * n2,
+                       "its lumped inertia " + FormatMessageNumber(lumped.J) + from);
+      if (lumped.c && !std::isfinite(*lumped.c * n2))
+        ThrowNotFinite(c, "stiffness" + reflected + " [N*m/rad]", *lumped.c * n2,
+                       "its lumped stiffness " + FormatMessageNumber(*lumped.c) + from);
+    }
     if (m && m->roles().segment) {
       if (root) at = static_cast<int>(t.points.size()), t.points.push_back({c.id + ".a", T(0.0), false, ""});
       const int end = static_cast<int>(t.points.size());
@@ -245,6 +304,12 @@ TransmissionDraft<T> BuildTransmission(const Graph& g, const ParameterMode& mode
       continue;
     }
     auto& p = t.points[at];
+    if constexpr (std::is_same_v<T, double>) {
+      if (!std::isfinite(p.J + J))
+        ThrowNotFinite(c, "inertia" + std::string(" [kg*m^2], added to that of '") + p.name + "'", p.J + J,
+                       FormatMessageNumber(J) + " (its own, at the PDU output speed) + " + FormatMessageNumber(p.J) +
+                           " (of '" + p.name + "')");
+    }
     p.J = p.J + J;
     if (accumulate && p.component.empty()) {
       p.name = c.id;

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "highlift/core/error.h"
+#include "highlift/core/project_io.h"
 #include "test_project.h"
 
 namespace highlift::reduced_models {
@@ -126,6 +127,63 @@ TEST(Peak, UnknownCaseListsTheCases) {
               std::string::npos)
         << e.what();
   }
+}
+
+// Issue 27 item 19 ("J = -nan" naming the wrong node): a derived value that is not finite names
+// the component and the parameters it came from, not the lumped node it reaches. Project files
+// cannot carry such values (their valid ranges stop them); a project built in code, a sampled
+// domain or a library user can: the values here are set past validation.
+std::string ModesError(const Project& project) {
+  try {
+    AnalyseModes(project);
+  } catch (const InputError& e) {
+    return e.what();
+  } catch (const std::exception& e) {
+    return std::string("(not an InputError) ") + e.what();
+  }
+  return "(no error)";
+}
+
+Project SmallDrive() { return LoadProject(std::string(HIGHLIFT_SOURCE_DIR) + "/tests/export/small_drive.json"); }
+
+void Set(Project& project, const std::string& id, const std::string& name, double value) {
+  for (auto& c : project.components)
+    if (c.id == id) c.parameters[name].nominal = value;
+}
+
+TEST(NonFiniteDerivedValues, AnInertiaThatOverflowsWhenReflectedNamesItsComponentAndParameter) {
+  // stl_1 sits behind the branch gearbox (w_branch = w_in / ratio): with ratio 1e-3 its
+  // 1e303 kg*m^2 reflect as 1e303 x 1e6 -> inf; before, the lumped node got J = inf and the
+  // modes a non-finite matrix.
+  Project p = SmallDrive();
+  Set(p, "gbx_1", "ratio", 1e-3);
+  Set(p, "stl_1", "inertia", 1e303);
+  const std::string m = ModesError(p);
+  EXPECT_NE(m.find("component 'stl_1': its inertia reflected to the PDU output speed [kg*m^2] is not finite (inf), "
+                   "computed from its lumped inertia 1e"),
+            std::string::npos)
+      << m;
+}
+
+TEST(NonFiniteDerivedValues, ASpeedRatioThatOverflowsNamesTheGearboxAndItsRatio) {
+  Project p = SmallDrive();
+  Set(p, "gbx_1", "ratio", 1e-320);  // w_branch = w_in * ratio or / ratio: 0 or inf either way
+  const std::string m = ModesError(p);
+  EXPECT_NE(m.find("component 'gbx_1': its speed ratio towards '"), std::string::npos) << m;
+  EXPECT_NE(m.find("computed from its parameter ratio = "), std::string::npos) << m;
+}
+
+TEST(NonFiniteDerivedValues, ALumpedLawThatOverflowsNamesTheParametersItRead) {
+  // The shaft's lumped stiffness G Ip / L with G = 1e308 Pa overflows.
+  Project p = SmallDrive();
+  Set(p, "shaft_3", "shear_modulus", 1e308);
+  Set(p, "shaft_3", "length", 1e-300);
+  const std::string m = ModesError(p);
+  EXPECT_NE(m.find("component 'shaft_3': its lumped stiffness c [N*m/rad] is not finite (inf), computed from its "
+                   "parameters "),
+            std::string::npos)
+      << m;
+  EXPECT_NE(m.find("shear_modulus = 1e"), std::string::npos) << m;
 }
 
 }  // namespace
