@@ -337,6 +337,31 @@ int main(int argc, char** argv) {
     }
   }
 
+  // An unknown subcommand ("db lst", "campaign sumary DIR"): CLI11 would say "A subcommand is
+  // required" or "The following argument was not expected: DIR". Name the word and the closest
+  // subcommand when the command requires one, or when the word is close to one (a command whose
+  // subcommands are optional takes other words as its positional, a project file).
+  if (argc >= 3 && argv[2][0] != '-') {
+    for (CLI::App* sub : app.get_subcommands({})) {
+      if (sub->get_name() != argv[1]) continue;
+      std::vector<std::string> names;
+      for (const CLI::App* s : sub->get_subcommands({})) names.push_back(s->get_name());
+      const std::string word = argv[2];
+      if (names.empty() || std::find(names.begin(), names.end(), word) != names.end()) break;
+      const bool required = sub->get_require_subcommand_min() > 0;
+      const std::string close = highlift::DidYouMean(word, names);
+      if (!required && close.empty()) break;
+      const std::string message = "unknown subcommand '" + word + "' of '" + sub->get_name() + "'" +
+                                  highlift::SuggestionHint(word, names, "its subcommands are") +
+                                  "; run `highlift " + sub->get_name() + " --help` for what each does";
+      std::cerr << "highlift " << sub->get_name() << ": error: " << CleanText(message) << "\n";
+      bool json = false;
+      for (int i = 1; i < argc; ++i) json = json || std::string(argv[i]) == "--json";
+      if (json) std::cout << OutcomeDocument(sub->get_name(), kInvalidInput, message, {}, err.lines());
+      return restore(kInvalidInput);
+    }
+  }
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -346,6 +371,21 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     return restore(app.exit(e));
   } catch (const CLI::ParseError& e) {
+    std::string what = e.what();
+    if (what == "A subcommand is required" && argc >= 2) {  // "highlift db": say which there are
+      for (CLI::App* sub : app.get_subcommands({})) {
+        if (sub->get_name() != argv[1]) continue;
+        std::string names;
+        for (const CLI::App* s : sub->get_subcommands({})) names += (names.empty() ? "" : ", ") + s->get_name();
+        what = "'" + sub->get_name() + "' needs a subcommand: " + names + "; run `highlift " + sub->get_name() +
+               " --help` for what each does";
+        std::cerr << "highlift " << sub->get_name() << ": error: " << what << "\n";
+        bool json = false;
+        for (int i = 1; i < argc; ++i) json = json || std::string(argv[i]) == "--json";
+        if (json) std::cout << OutcomeDocument(sub->get_name(), kInvalidInput, what, {}, err.lines());
+        return restore(kInvalidInput);
+      }
+    }
     app.exit(e, std::cout, std::cerr);  // prints the usage problem to stderr
     bool json = false;
     for (int i = 1; i < argc; ++i) json = json || std::string(argv[i]) == "--json";

@@ -300,6 +300,26 @@ TEST(Input27, UnknownCommandSaysWhichItMeant) {
   EXPECT_TRUE(Has(j.err, "did you mean 'check'?")) << j.err;
 }
 
+TEST(Input27, UnknownOrMissingSubcommandSaysWhichItMeant) {
+  // Was: "A subcommand is required" (db lst, db) and "The following argument was not expected:
+  // DIR" (campaign sumary DIR), with no word of the subcommands.
+  auto r = RunCli({"db", "lst"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_TRUE(Has(r.err, "unknown subcommand 'lst' of 'db'; did you mean 'list'?")) << r.err;
+  r = RunCli({"campaign", "sumary", "some/dir", "--json"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_TRUE(Has(r.err, "unknown subcommand 'sumary' of 'campaign'; did you mean 'summary'?")) << r.err;
+  EXPECT_EQ(OneDocument(r)["status"], "invalid_input");
+  r = RunCli({"db"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_TRUE(Has(r.err, "'db' needs a subcommand: list, show, find, import, export")) << r.err;
+  EXPECT_FALSE(Has(r.err, "A subcommand is required")) << r.err;
+  // A project file whose name is no subcommand's is still a project.
+  r = RunCli({"campaign", "no_such_project.json"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_FALSE(Has(r.err, "unknown subcommand")) << r.err;
+}
+
 TEST(Input27, FileNamesThatAreNotUtf8GiveUtf8Messages) {
   // Was: the Latin-1 byte of a file name went into the message (and broke the JSON document).
   const fs::path dir = Scratch();
