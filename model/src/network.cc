@@ -51,7 +51,11 @@ void Network::AddElement(std::string_view type, std::string_view id, ElementPara
     if (p == nullptr || p->kind == ParameterKind::kTable)
       throw InputError("element '" + sid + "' (" + stype + "): unknown parameter '" + name + "'" +
                        DidYouMean(name, names));
-    if (!std::isfinite(value) || !p->valid_range.contains(value))
+    if (!std::isfinite(value))  // a value derived from a component's parameters (drive networks)
+      throw InputError("element '" + sid + "' (" + stype + "): parameter '" + name + "' = " +
+                       FormatMessageNumber(value) + " is not finite; in a drive network it is computed from the parameters of the component the element "
+                       "belongs to (its id's prefix): check their values and units");
+    if (!p->valid_range.contains(value))
       throw InputError("element '" + sid + "' (" + stype + "): parameter '" + name + "' = " +
                        FormatMessageNumber(value) + " is outside its valid range [" +
                        FormatMessageNumber(p->valid_range.lo) + ", " + FormatMessageNumber(p->valid_range.hi) + "]");

@@ -453,5 +453,26 @@ TEST(Options, DefaultsAreValid) {
   EXPECT_THROW(o.Validate(), InputError);
 }
 
+// Issue 27 item 19 ("J = -nan"): a non-finite element parameter (in a drive network, computed
+// from its component's parameters) is named as not finite with its element, not as "outside its
+// valid range [0, inf]".
+TEST(NetworkElements, ANonFiniteParameterIsNamedAsNotFinite) {
+  for (double bad : {std::nan(""), -std::nan(""), static_cast<double>(INFINITY)}) {
+    Network net;
+    try {
+      net.AddElement("Inertia", "shaft_3_m1", P({{"J", bad}}));
+      FAIL() << "no error for J = " << bad;
+    } catch (const InputError& e) {
+      const std::string m = e.what();
+      EXPECT_NE(m.find("element 'shaft_3_m1' (Inertia): parameter 'J' = "), std::string::npos) << m;
+      EXPECT_NE(m.find(" is not finite; in a drive network it is computed from the parameters of the component the "
+                       "element belongs to"),
+                std::string::npos)
+          << m;
+      EXPECT_EQ(m.find("valid range"), std::string::npos) << m;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace highlift::sim
