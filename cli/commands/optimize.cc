@@ -35,12 +35,15 @@ class OptimizeCommand : public Command {
     app.add_flag("--no-verify", no_verify_,
                  "accept designs by the interval check alone, without running size and peak on each (faster; the "
                  "design may then fail `highlift size` or `highlift peak`)");
+    app.add_flag("--no-verify-peak", no_verify_peak_,
+                 "do not run peak on each design (size still runs); the design may then fail `highlift peak`");
     app.add_flag("--no-estimate", no_estimate_,
                  "use the project's own domains only: no database, fit or physics estimates (as check --no-estimate)");
   }
 
   int Run() override {
-    options_.verify_size_and_peak = !no_verify_;
+    options_.verify_size = !no_verify_;
+    options_.verify_peak = !no_verify_ && !no_verify_peak_;
     options_.Validate();
     const EstimatedProject loaded = LoadEstimatedProject(common_, !no_estimate_);
     const optimize::Report report = optimize::Optimize(loaded.project, options_);
@@ -71,6 +74,7 @@ class OptimizeCommand : public Command {
   optimize::Options options_;
   std::string write_;
   bool no_verify_ = false;
+  bool no_verify_peak_ = false;
   bool no_estimate_ = false;
 };
 

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <queue>
 #include <set>
 #include <sstream>
@@ -198,6 +199,7 @@ class Optimizer {
   std::vector<double> best_x_;
   Candidate best_candidate_;
   Report counters_;
+  std::map<std::string, int> rejected_;
 };
 
 void Optimizer::ChooseDesignVariables() {
@@ -362,12 +364,11 @@ void Optimizer::ClassifyConstraints() {
 }
 
 void Optimizer::ProbeReducedModels() {
-  if (!options_.verify_size_and_peak) {
-    verification_note_ = "size and peak not verified (verify_size_and_peak off)";
-    return;
-  }
-  verify_size_ = verify_peak_ = true;
-  try {
+  verify_size_ = options_.verify_size;
+  verify_peak_ = options_.verify_peak;
+  if (!verify_size_) verification_note_ += "size not verified (verify_size off); ";
+  if (!verify_peak_) verification_note_ += "peak not verified (verify_peak off); ";
+  if (verify_size_) try {
     reduced_models::SizingOptions so;
     so.intervals = false;
     reduced_models::Size(project_, so);
@@ -375,7 +376,7 @@ void Optimizer::ProbeReducedModels() {
     verify_size_ = false;
     verification_note_ += std::string("size does not apply to this project (") + e.what() + "); ";
   }
-  try {
+  if (verify_peak_) try {
     reduced_models::PeakOptions po;
     po.intervals = false;
     po.rank = false;
@@ -435,7 +436,11 @@ Candidate Optimizer::Evaluate(const std::vector<double>& x, bool verify) {
 }
 
 void Optimizer::Consider(const std::vector<double>& x, const Candidate& c) {
-  if (!c.feasible || !(c.value < best_)) return;
+  if (!c.feasible) {
+    ++rejected_[FailureText(c)];
+    return;
+  }
+  if (!(c.value < best_)) return;
   best_ = c.value;
   best_x_ = x;
   best_candidate_ = c;
@@ -564,9 +569,13 @@ void Optimizer::LocalSearch(const std::vector<Interval>& d) {
   std::vector<double> anchor = mid;
   Candidate c = Evaluate(mid, true);
   if (!c.feasible) {
+    Consider(mid, c);
     if (safe == mid) return;
     c = Evaluate(safe, true);
-    if (!c.feasible) return;
+    if (!c.feasible) {
+      Consider(safe, c);
+      return;
+    }
     anchor = safe;
   }
   Consider(anchor, c);
@@ -579,22 +588,17 @@ void Optimizer::LocalSearch(const std::vector<Interval>& d) {
   {
     const std::vector<double> x = at(1.0);
     const Candidate e = Evaluate(x, true);
-    if (e.feasible) {
-      Consider(x, e);
-      return;
-    }
+    Consider(x, e);
+    if (e.feasible) return;
   }
   double lo = 0.0, hi = 1.0;
   for (int s = 0; s < options_.line_search_steps; ++s) {
     const double t = 0.5 * (lo + hi);
     const std::vector<double> x = at(t);
     const Candidate e = Evaluate(x, true);
-    if (e.feasible) {
-      Consider(x, e);
-      lo = t;
-    } else {
-      hi = t;
-    }
+    Consider(x, e);
+    if (e.feasible) lo = t;
+    else hi = t;
   }
 }
 
@@ -735,6 +739,12 @@ Report Optimizer::Run() {
   r.candidates = counters_.candidates;
   r.reduced_model_checks = counters_.reduced_model_checks;
   r.improvements = counters_.improvements;
+  {
+    std::vector<std::pair<std::string, int>> why(rejected_.begin(), rejected_.end());
+    std::stable_sort(why.begin(), why.end(), [](const auto& a, const auto& b) { return a.second > b.second; });
+    if (why.size() > 5) why.resize(5);
+    r.rejections = why;
+  }
   if (!found_) {
     if (queue.empty() && !unproved && !limit) {
       r.status = Status::kInfeasible;
@@ -907,6 +917,10 @@ std::string Report::FullReport() const {
   if (!found) {
     o << message << "\n";
     if (!infeasibility.empty()) o << "\nWhy:\n" << infeasibility << (infeasibility.back() == '\n' ? "" : "\n");
+    if (!rejections.empty()) {
+      o << "\nCandidate designs were rejected by (first failing check, count):\n";
+      for (const auto& [what, n] : rejections) o << "  " << n << " x " << what << "\n";
+    }
   } else {
     o << "Best design (" << message << "):\n";
     TextTable t({"design variable", "unit", "optimized", "domain", "nominal", "at bound"}, {2, 4});
@@ -970,6 +984,9 @@ nlohmann::json Report::ToJson() const {
                  {"max", std::isfinite(t.upper) ? nlohmann::json(t.upper) : nlohmann::json(nullptr)}});
   j["mass_terms"] = m;
   if (!infeasibility.empty()) j["explanation"] = infeasibility;
+  nlohmann::json rej = nlohmann::json::array();
+  for (const auto& [what, n] : rejections) rej.push_back({{"check", what}, {"candidates", n}});
+  j["rejections"] = rej;
   j["counters"] = {{"boxes", boxes},           {"pruned", pruned},
                    {"infeasible_boxes", infeasible_boxes}, {"candidates", candidates},
                    {"reduced_model_checks", reduced_model_checks}, {"improvements", improvements},

@@ -46,9 +46,9 @@ struct Options {
                                     ///< is one robust feasibility check)
   double propagation_ratio = 0.01;  ///< HC4 agenda ratio of the contractor (docs/icsp.md; 0: exact
                                     ///< fixed point, slower, same certificates)
-  bool verify_size_and_peak = true; ///< an upper bound must also pass reduced_models' Size and
-                                    ///< AnalysePeaks over the remaining domains (`highlift size`
-                                    ///< and `highlift peak` exit 0 for it)
+  bool verify_size = true;          ///< an upper bound must also pass reduced_models' Size over the
+                                    ///< remaining domains (`highlift size` exits 0 for it)
+  bool verify_peak = true;          ///< ... and AnalysePeaks (`highlift peak` exits 0 for it)
   /// Throws InputError naming the bad option and the remedy.
   void Validate() const;
 };
@@ -106,6 +106,9 @@ struct Report {
   std::vector<ActiveConstraint> active;
   std::vector<MassTerm> mass_terms;  ///< objective "mass": where each component's mass comes from
   std::string infeasibility;    ///< kInfeasible: check's explanation of the conflict
+  /// Why candidate designs were rejected: the first failing constraint (label) or size/peak item,
+  /// with how many candidates it rejected, most frequent first (at most 5).
+  std::vector<std::pair<std::string, int>> rejections;
   // Counters.
   int boxes = 0;                ///< boxes processed
   int pruned = 0;               ///< boxes whose lower bound exceeded the best design
