@@ -2,10 +2,11 @@
 // under 60 s on 2 cores, A320-class under 10 s), against a random search with the same number of
 // model evaluations (robust feasibility checks, each through size and peak like the optimizer's).
 //
-// The design problem per example: every torque shaft's outer diameter (the example's value +-10 %)
-// and wall thickness (the example's domain), every station torque limiter's and system torque
-// limiter's extend lock-out setting and every wing-tip brake's static capacity (their domains);
-// objective: mass. Every other parameter keeps its (estimated) domain.
+// The design problem per example: every torque shaft's outer diameter (0.6-1.2 x the example's
+// value) and wall thickness (0.4-2 x), every station torque limiter's and system torque
+// limiter's extend lock-out setting and every wing-tip brake's static capacity (their domains),
+// every station limiter's brake torque (0.5-2 x the example's value); objective: mass. Every other
+// parameter keeps its (estimated) domain. Designs are verified by size, not peak (see below).
 //
 // Counters: best (kg), lower_bound (kg), gap, boxes, candidates; the random search: best_random (kg),
 // feasible_random (how many of its samples were robustly feasible).
@@ -36,12 +37,23 @@ Project DesignProblem(const std::string& name) {
     if (c.type == "torque_shaft") {
       auto it = c.parameters.find("outer_diameter");
       if (it != c.parameters.end() && it->second.nominal) {
-        it->second.domain = {0.9 * *it->second.nominal, 1.1 * *it->second.nominal};
+        it->second.domain = {0.6 * *it->second.nominal, 1.2 * *it->second.nominal};
         it->second.design = true;
       }
-      mark("wall_thickness");
+      auto t = c.parameters.find("wall_thickness");
+      if (t != c.parameters.end() && t->second.nominal) {
+        t->second.domain = {0.4 * *t->second.nominal, 2.0 * *t->second.nominal};
+        t->second.design = true;
+      }
     }
     if (c.type == "station_torque_limiter" || c.type == "system_torque_limiter") mark("lockout_torque_extend");
+    if (c.type == "station_torque_limiter") {  // the examples' brakes are below size's rule: a domain
+      auto it = c.parameters.find("max_brake_torque");
+      if (it != c.parameters.end() && it->second.nominal) {
+        it->second.domain = {0.5 * *it->second.nominal, 2.0 * *it->second.nominal};
+        it->second.design = true;
+      }
+    }
     if (c.type == "wing_tip_brake") mark("static_capacity");
   }
   return project;
@@ -52,6 +64,9 @@ void BM_Optimize(benchmark::State& state, const char* example, double gap, doubl
   optimize::Options o;
   o.relative_gap = gap;
   o.max_seconds = seconds;
+  // peak is not verified: on every bundled example the actuators' jam margins are negative whatever
+  // the design variables (docs/optimize.md); size is.
+  o.verify_peak = false;
   optimize::Report r;
   for (auto _ : state) r = optimize::Optimize(project, o);
   state.counters["design_variables"] = static_cast<double>(r.design_variables.size());
