@@ -386,6 +386,8 @@ void Optimizer::ProbeReducedModels() {
     verify_peak_ = false;
     verification_note_ += std::string("peak does not apply to this project (") + e.what() + ")";
   }
+  while (!verification_note_.empty() && (verification_note_.back() == ' ' || verification_note_.back() == ';'))
+    verification_note_.pop_back();
 }
 
 Candidate Optimizer::Evaluate(const std::vector<double>& x, bool verify) {
