@@ -676,6 +676,56 @@ Report Optimizer::Run() {
                      "no finite lower bound after propagation): give the "
                      "parameters it depends on finite \"min\" and \"max\" in the project, or minimize another objective");
   Sensitivities();
+  {
+    // A constraint that no design variable reaches (not even through the laws that define derived
+    // quantities) and that does not hold for certain over the remaining domains fails for every
+    // design alike: say so at once instead of searching.
+    // Parameters are inputs: only design variables and the quantities derived from them are reached.
+    std::vector<char> reached(net().num_variables(), 0), parameter(net().num_variables(), 0);
+    for (const Component& c : project_.components)
+      for (const auto& entry : c.parameters) {
+        const icsp::VariableId v = net().FindVariable(c.id + "." + entry.first);
+        if (v.value >= 0) parameter[v.value] = 1;
+      }
+    for (int v : design_) reached[v] = 1;
+    for (bool changed = true; changed;) {
+      changed = false;
+      for (int c = 0; c < net().num_constraints(); ++c) {
+        if (!definitions_[c]) continue;
+        const auto scope = net().ScopeOf(icsp::ConstraintId{c});
+        if (std::none_of(scope.begin(), scope.end(), [&](int v) { return reached[v] != 0; })) continue;
+        for (int v : scope)
+          if (!reached[v] && !parameter[v]) reached[v] = changed = true;
+      }
+    }
+    std::vector<double> mid;
+    for (int v : design_) mid.push_back(Mid(initial_[v]));
+    const Candidate probe = Evaluate(mid, false);
+    std::vector<std::string> fixed;
+    for (int k : probe.failed) {
+      if (k < 0) continue;
+      const auto scope = net().ScopeOf(icsp::ConstraintId{k});
+      if (std::any_of(scope.begin(), scope.end(), [&](int v) { return reached[v] != 0; })) continue;
+      const icsp::Constraint& con = net().constraint(icsp::ConstraintId{k});
+      std::string vars;
+      for (int v : scope) vars += (vars.empty() ? "" : ", ") + net().variable(icsp::VariableId{v}).name;
+      fixed.push_back(con.info.label + ": " + (con.info.source.empty() ? con.info.description : con.info.source) +
+                      " (over " + vars + ")");
+    }
+    if (!fixed.empty()) {
+      r.status = Status::kNoDesignFound;
+      r.message = "no design variable reaches " + std::to_string(fixed.size()) +
+                  " constraint(s) that do not hold for every value of their uncertain parameters, so no design can "
+                  "be robustly feasible: make one of their parameters a design variable (\"design\": true or "
+                  "--design) or narrow its domain";
+      r.infeasibility = "Constraints that fail for every design:\n";
+      for (const std::string& f : fixed) r.infeasibility += "  - " + f + "\n";
+      r.lower_bound = icsp::ToDisplay(root[objective_].lower(), objective_unit_);
+      r.candidates = counters_.candidates;
+      r.seconds = Seconds();
+      return r;
+    }
+  }
 
   struct Node {
     std::vector<Interval> d;

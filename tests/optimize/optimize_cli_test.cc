@@ -98,6 +98,18 @@ TEST(OptimizeCli, InfeasibleProblemExits1WithChecksExplanation) {
   EXPECT_NE(r.out.find("brake_margin"), std::string::npos) << r.out;
 }
 
+// The example's system limiter settings are uncertain ([112.5, 137.5] N*m) and a requirement asks
+// >= 116.4 N*m of them: no shaft wall can make that hold for every value. Said at once, with the
+// requirement and the remedy, instead of searching until the limits.
+TEST(OptimizeCli, ConstraintsNoDesignVariableReachesAreNamedAtOnce) {
+  const CliResult r = RunCli({"optimize", "examples/a320_class_flaps.json", "--design", "shaft_l1.wall_thickness"});
+  EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+  EXPECT_NE(r.out.find("no_design_found"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("stl_setting_min_left: stl_left.lockout_torque_extend >= 1.2 * 97 N*m"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("make one of their parameters a design variable"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("0 boxes"), std::string::npos) << r.out;
+}
+
 TEST(OptimizeCli, BadOptionValueExits2) {
   const CliResult r = RunCli({"optimize", "examples/a320_class_flaps.json", "--gap", "-1"});
   EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
