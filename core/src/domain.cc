@@ -19,13 +19,14 @@ double Domain::mid() const {
 Domain Domain::intersect(const Domain& o) const { return {std::max(lo, o.lo), std::min(hi, o.hi)}; }
 
 namespace {
-constexpr std::array<std::pair<Provenance, const char*>, 6> kProvenanceNames = {{
+constexpr std::array<std::pair<Provenance, const char*>, 7> kProvenanceNames = {{
     {Provenance::kUser, "user"},
     {Provenance::kDatabase, "database"},
     {Provenance::kFit, "fit"},
     {Provenance::kEstimated, "estimated"},
     {Provenance::kDefault, "default"},
     {Provenance::kPropagated, "propagated"},
+    {Provenance::kOptimized, "optimized"},
 }};
 }  // namespace
 

@@ -74,6 +74,7 @@ std::string Compare(const Parameter& a, const Parameter& b) {
   if (!(a.domain == b.domain)) return "domain " + Show(a.domain) + " vs " + Show(b.domain);
   if (a.provenance != b.provenance) return "provenance " + ToString(a.provenance) + " vs " + ToString(b.provenance);
   if (a.note != b.note) return "note '" + a.note + "' vs '" + b.note + "'";
+  if (a.design != b.design) return std::string("design ") + (a.design ? "true" : "false") + " vs " + (b.design ? "true" : "false");
   if (a.database_part != b.database_part) return "part '" + a.database_part + "' vs '" + b.database_part + "'";
   return "";
 }

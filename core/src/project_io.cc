@@ -194,11 +194,16 @@ void ReadNoteAndProvenance(const json& v, Parameter& p) {
     const json& pv = v["provenance"];
     if (!pv.is_string()) throw QuantityError{"/provenance", "'provenance' must be a string, got " + TypeName(pv)};
     const auto prov = ProvenanceFromString(pv.get<std::string>());
-    const std::vector<std::string> names = {"user", "database", "fit", "estimated", "default", "propagated"};
+    const std::vector<std::string> names = {"user", "database", "fit", "estimated", "default", "propagated", "optimized"};
     if (!prov)
       throw QuantityError{"/provenance", "unknown provenance '" + pv.get<std::string>() + "'" +
                                              SuggestionHint(pv.get<std::string>(), names, "valid provenances")};
     p.provenance = *prov;
+  }
+  if (v.contains("design")) {
+    if (!v["design"].is_boolean())
+      throw QuantityError{"/design", "'design' must be true or false, got " + TypeName(v["design"])};
+    p.design = v["design"].get<bool>();
   }
 }
 
@@ -231,7 +236,7 @@ Parameter QuantityFromJson(const json& v, const Dimension& expected, const Domai
       p.domain = Domain::Point(*p.nominal);
     }
   } else if (v.is_object()) {
-    CheckObjectKeys(v, {"value", "min", "max", "unit", "note", "provenance", "part"}, "a quantity");
+    CheckObjectKeys(v, {"value", "min", "max", "unit", "note", "provenance", "part", "design"}, "a quantity");
     std::string unit;
     if (v.contains("unit")) {
       if (!v["unit"].is_string()) throw QuantityError{"/unit", "'unit' must be a string, got " + TypeName(v["unit"])};
@@ -926,7 +931,8 @@ bool IsDefault(const Parameter& p, const ParameterSpec& spec) {
 
 json ParameterToJson(const Parameter& p) {
   const bool plain_point = p.nominal && p.domain == Domain::Point(*p.nominal);
-  if (p.provenance == Provenance::kUser && p.note.empty() && p.database_part.empty() && plain_point) return *p.nominal;
+  if (p.provenance == Provenance::kUser && p.note.empty() && p.database_part.empty() && plain_point && !p.design)
+    return *p.nominal;
   json o = json::object();
   if (!p.database_part.empty()) o["part"] = p.database_part;
   if (p.nominal) o["value"] = *p.nominal;
@@ -937,6 +943,7 @@ json ParameterToJson(const Parameter& p) {
   if (!p.note.empty()) o["note"] = p.note;
   const Provenance implied = p.database_part.empty() ? Provenance::kUser : Provenance::kDatabase;
   if (p.provenance != implied) o["provenance"] = ToString(p.provenance);
+  if (p.design) o["design"] = true;
   return o;
 }
 

@@ -22,6 +22,7 @@ using model::Interval;
 int Rank(Provenance p) {
   switch (p) {
     case Provenance::kUser: return 0;
+    case Provenance::kOptimized: return 0;
     case Provenance::kDatabase: return 1;
     case Provenance::kFit: return 2;
     case Provenance::kEstimated: return 3;
@@ -34,6 +35,7 @@ int Rank(Provenance p) {
 std::string SourceName(Provenance p) {
   switch (p) {
     case Provenance::kUser: return "the user value";
+    case Provenance::kOptimized: return "the optimized value";
     case Provenance::kDatabase: return "the database value";
     case Provenance::kFit: return "the fit";
     case Provenance::kEstimated: return "the physics estimate";

@@ -227,7 +227,7 @@ TEST(ProjectIo, ValueOutsideTheValidRangeNamesTheRange) {
   EXPECT_EQ(ErrorOf(Rig("\"value\": 0.85, \"min\": 0.80", "\"value\": 1.2, \"min\": 0.80, \"unused\": 1")),
             "t.json:18:65 at /components/5/parameters/eta_opposing/unused: component 'gra_1' (geared_rotary_actuator): "
             "parameter 'eta_opposing': unknown key 'unused' in a quantity; allowed keys: value, min, max, unit, note, "
-            "provenance, part");
+            "provenance, part, design");
   EXPECT_EQ(ErrorOf(Rig("\"eta_opposing\": {\"value\": 0.85, \"min\": 0.80, \"max\": 0.90, \"provenance\": \"estimated\"}",
                         "\"eta_opposing\": 1.2")),
             "t.json:18:37 at /components/5/parameters/eta_opposing: component 'gra_1' (geared_rotary_actuator): "

@@ -27,9 +27,10 @@ struct Domain {
 };
 
 /// Where a parameter's value came from, in trust order (user first).
-enum class Provenance { kUser, kDatabase, kFit, kEstimated, kDefault, kPropagated };
+enum class Provenance { kUser, kDatabase, kFit, kEstimated, kDefault, kPropagated, kOptimized };
 
-/// "user", "database", "fit", "estimated", "default", "propagated".
+/// "user", "database", "fit", "estimated", "default", "propagated", "optimized" (a value chosen by
+/// `highlift optimize`).
 std::string ToString(Provenance p);
 /// Inverse of ToString; nullopt for an unknown name.
 std::optional<Provenance> ProvenanceFromString(const std::string& s);

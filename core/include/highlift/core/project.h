@@ -21,6 +21,7 @@ struct Parameter {
   Provenance provenance = Provenance::kDefault;
   std::string note;               ///< where it came from, e.g. "domain.md s3 (E)", "db part GRA-200"
   std::string database_part;      ///< designation of a database part this value refers to, if any
+  bool design = false;            ///< a design variable of `highlift optimize` ("design": true)
   SourceLocation where;           ///< where it was given in the project file (empty if not given)
 };
 

@@ -1,0 +1,87 @@
+// `highlift optimize PROJECT.json --minimize mass|inertia|EXPR [--design NAME ...] [--write OUT.json]`:
+// synthesis by interval branch and bound (optimize::Optimize, docs/optimize.md). The answer first:
+// status, best objective, certified lower bound and gap; then the design, the mass by component,
+// what limits the design, and the counters. Exit 0 with a design (optimal or gap still open),
+// 1 when the problem is proved infeasible (with check's explanation) or no design was found, 2 on
+// invalid input (no design variable, unbounded objective, a name that is not a parameter).
+#include <iostream>
+
+#include "command.h"
+#include "estimated_project.h"
+#include "highlift/core/project_io.h"
+#include "highlift/core/validate.h"
+#include "highlift/optimize/optimize.h"
+
+namespace highlift::cli {
+namespace {
+
+class OptimizeCommand : public Command {
+ public:
+  void Setup(CLI::App& app) override {
+    common_.AddTo(app);
+    app.add_option("--minimize", options_.objective,
+                   "the objective: mass (shafts by their tube law, other parts by their estimation laws), inertia "
+                   "(at the PDU speed) or an expression of the constraint language (default mass)");
+    app.add_option("--design", options_.design,
+                   "a design variable COMPONENT.PARAMETER (repeatable), chosen within its domain; in addition to the "
+                   "parameters the project marks \"design\": true")
+        ->delimiter(',');
+    app.add_option("--write", write_, "write the project with the best design fixed (provenance \"optimized\") to this file");
+    app.add_option("--max-boxes", options_.max_boxes, "stop after this many boxes (default 20000)")->check(NumberIn(1, 1e9));
+    app.add_option("--gap", options_.relative_gap, "stop when the relative gap is below this (default 1e-6)")
+        ->check(NumberIn(0.0, 1.0));
+    app.add_option("--time-limit", options_.max_seconds, "stop after this many seconds (default 60)")
+        ->check(NumberIn(0.0, 1e6, true));
+    app.add_flag("--no-verify", no_verify_,
+                 "accept designs by the interval check alone, without running size and peak on each (faster; the "
+                 "design may then fail `highlift size` or `highlift peak`)");
+    app.add_flag("--no-verify-peak", no_verify_peak_,
+                 "do not run peak on each design (size still runs); the design may then fail `highlift peak`");
+    app.add_flag("--no-estimate", no_estimate_,
+                 "use the project's own domains only: no database, fit or physics estimates (as check --no-estimate)");
+  }
+
+  int Run() override {
+    options_.verify_size = !no_verify_;
+    options_.verify_peak = !no_verify_ && !no_verify_peak_;
+    options_.Validate();
+    const EstimatedProject loaded = LoadEstimatedProject(common_, !no_estimate_);
+    const optimize::Report report = optimize::Optimize(loaded.project, options_);
+    if (!write_.empty() && report.found) {
+      // The project as given (not the estimated one) with the design fixed, so that `highlift
+      // size` and `peak` read the same file the engineer wrote, plus the chosen values.
+      std::vector<std::pair<std::string, double>> values;
+      for (const auto& d : report.design) values.push_back({d.name, d.value_si});
+      SaveProject(optimize::FixDesign(LoadValidProject(common_.project), values), write_);
+    }
+    if (common_.json) {
+      nlohmann::json j = report.ToJson();
+      j["project"] = common_.project;
+      if (!write_.empty() && report.found) j["written"] = write_;
+      std::cout << j.dump(2) << "\n";
+    } else {
+      std::cout << report.BriefReport() << "\n\n" << report.FullReport();
+      if (!loaded.estimation_brief.empty()) std::cout << "domains: " << loaded.estimation_brief << "\n";
+      if (!write_.empty() && report.found) std::cout << "wrote " << write_ << "\n";
+    }
+    if (!write_.empty() && !report.found)
+      std::cerr << "highlift optimize: nothing written to " << write_ << ": no design was found\n";
+    return report.found ? kSuccess : kViolated;
+  }
+
+ private:
+  CommonOptions common_;
+  optimize::Options options_;
+  std::string write_;
+  bool no_verify_ = false;
+  bool no_verify_peak_ = false;
+  bool no_estimate_ = false;
+};
+
+}  // namespace
+
+HIGHLIFT_REGISTER_COMMAND(OptimizeCommand, "optimize",
+                          "find the design of least mass, inertia or any expression that meets every requirement and "
+                          "margin, with a certified lower bound (interval branch and bound)")
+
+}  // namespace highlift::cli

@@ -1,0 +1,170 @@
+// Synthesis: the design of least mass (or inertia, or any expression of the constraint language)
+// that meets every requirement, parameter relation, setting rule and margin for every value of the
+// remaining uncertain parameters, found by interval branch and bound with a certified lower bound.
+//
+//   optimize::Options o;
+//   o.objective = "mass";
+//   o.design = {"shaft_l1.wall_thickness", "stl_l1.lockout_torque_extend"};
+//   const optimize::Report r = optimize::Optimize(project, o);
+//   std::cout << r.BriefReport();   // "optimal: mass 41.2 kg in [41.19, 41.2] kg (gap 1e-7) ..."
+//
+// The constraints are the ones `highlift check` propagates (icsp's drive-system network: every
+// component law, relation and requirement), plus every margin of that network >= 0 (limiter and
+// brake settings, shaft capacity against drive torque). A design is accepted as an upper bound
+// only when it is robustly feasible: with the design fixed and every other parameter over its
+// whole domain, the interval evaluation of every constraint holds for certain, and (by default)
+// `highlift size` and `highlift peak` (reduced_models) pass over the remaining domains. The method
+// and its limits are in docs/optimize.md.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "highlift/core/project.h"
+
+namespace highlift::optimize {
+
+struct Options {
+  /// "mass" (the torque shafts by their tube law, other components by their estimation laws),
+  /// "inertia" (the sum of every component's inertia reflected to the PDU speed), or an
+  /// expression of the constraint language over the quantities `check` knows
+  /// ("shaft_l1.mass + 2 * shaft_l2.mass", "peak.jam_l1.torque").
+  std::string objective = "mass";
+  /// Design variables "component.parameter", in addition to the parameters the project marks
+  /// with "design": true. Each needs a finite domain of positive width.
+  std::vector<std::string> design;
+  int max_boxes = 20000;            ///< stop (kStoppedAtLimit) after processing this many boxes
+  double relative_gap = 1e-6;       ///< stop when (best - lower bound) <= relative_gap * |best|
+  double absolute_gap = 1e-12;      ///< ... or when best - lower bound <= absolute_gap (SI units)
+  double max_seconds = 60.0;        ///< stop (kStoppedAtLimit) after this wall time [s]
+  int line_search_steps = 6;        ///< bisection steps of the local search in each box (each step
+                                    ///< is one robust feasibility check)
+  double propagation_ratio = 0.01;  ///< HC4 agenda ratio of the contractor (docs/icsp.md; 0: exact
+                                    ///< fixed point, slower, same certificates)
+  bool verify_size = true;          ///< an upper bound must also pass reduced_models' Size over the
+                                    ///< remaining domains (`highlift size` exits 0 for it)
+  bool verify_peak = true;          ///< ... and AnalysePeaks (`highlift peak` exits 0 for it)
+  /// Throws InputError naming the bad option and the remedy.
+  void Validate() const;
+};
+
+enum class Status : std::uint8_t {
+  kOptimal,          ///< a robustly feasible design within the gap tolerance of the lower bound
+  kStoppedAtLimit,   ///< a robustly feasible design, gap still open (boxes or time ran out)
+  kInfeasible,       ///< proved: no design in the domains meets the constraints
+  kNoDesignFound,    ///< gave up (limit reached) without a robustly feasible design; not a proof
+};
+/// "optimal", "stopped_at_limit", "infeasible", "no_design_found".
+std::string ToString(Status s);
+std::optional<Status> StatusFromString(const std::string& s);
+
+/// One design variable at the optimum.
+struct DesignValue {
+  std::string name;         ///< "component.parameter"
+  std::string unit;         ///< display unit of the numbers below
+  double value = 0.0;       ///< at the best design (display unit)
+  double value_si = 0.0;    ///< the same in SI (what FixDesign takes)
+  double lower = 0.0;       ///< domain in the project (display unit)
+  double upper = 0.0;
+  double nominal = 0.0;     ///< the project's nominal value (NaN when it has none)
+  std::string at_bound;     ///< "lower", "upper" or "" (the domain limits the design)
+};
+
+/// A constraint that limits the design: at the best design it holds, a small step towards a
+/// smaller objective breaks it.
+struct ActiveConstraint {
+  std::string label;        ///< requirement id, "margin:<quantity>", a law's label, "size", "peak"
+  std::string description;  ///< in words
+  std::string text;         ///< the constraint as written (units), or the analysis' message
+};
+
+/// One term of the mass objective.
+struct MassTerm {
+  std::string component;
+  std::string law;          ///< e.g. "tube law m = rho pi (D - t) t L", or why it is not counted
+  double lower = 0.0;       ///< kg over the remaining domains at the best design (NaN: not counted)
+  double upper = 0.0;
+};
+
+struct Report {
+  Status status = Status::kNoDesignFound;
+  std::string message;
+  std::string objective;        ///< as given
+  std::string objective_unit;   ///< display unit of best / lower_bound
+  std::vector<std::string> design_variables;
+  bool found = false;           ///< a robustly feasible design was found
+  double best = 0.0;            ///< objective of the best design: its upper bound over the remaining
+                                ///< uncertain parameters (display unit)
+  double lower_bound = 0.0;     ///< certified: no robustly feasible design has a smaller objective
+  double gap = 0.0;             ///< (best - lower_bound) / |best|
+  std::vector<DesignValue> design;
+  std::vector<ActiveConstraint> active;
+  std::vector<MassTerm> mass_terms;  ///< objective "mass": where each component's mass comes from
+  std::string infeasibility;    ///< kInfeasible: check's explanation of the conflict
+  /// Why candidate designs were rejected: the first failing constraint (label) or size/peak item,
+  /// with how many candidates it rejected, most frequent first (at most 5).
+  std::vector<std::pair<std::string, int>> rejections;
+  // Counters.
+  int boxes = 0;                ///< boxes processed
+  int pruned = 0;               ///< boxes whose lower bound exceeded the best design
+  int infeasible_boxes = 0;     ///< boxes the contractor emptied
+  int candidates = 0;           ///< robust feasibility checks (each one model evaluation)
+  int reduced_model_checks = 0; ///< candidates that went on to Size and AnalysePeaks
+  int improvements = 0;         ///< times the best design improved
+  double seconds = 0.0;
+  /// The project with the design variables fixed at the best design (nominal and domain, provenance
+  /// "optimized"); only when found.
+  std::optional<Project> design_project;
+
+  /// One line: "optimal: mass 41.2 kg, certified >= 41.19 kg (gap 2e-7), 812 boxes in 1.3 s".
+  std::string BriefReport() const;
+  /// The design table, the active constraints, the mass terms and the counters.
+  std::string FullReport() const;
+  nlohmann::json ToJson() const;
+};
+
+/// Minimizes the objective over the design variables. `project` holds the domains (the CLI first
+/// runs the estimator, as `check` does). Throws InputError for bad input: no design variable, a
+/// design variable that is not a parameter or has no finite domain, an objective that does not
+/// parse or is unbounded over the domains. Infeasibility and running out of limits are statuses.
+Report Optimize(const Project& project, const Options& options = {});
+
+namespace detail {
+class Optimizer;
+}
+
+/// One design point checked as Optimize checks its candidates (robust interval check, then size
+/// and peak): for baselines (random search in bench/optimize) and for tools that propose designs.
+struct PointCheck {
+  bool feasible = false;
+  double objective = 0.0;    ///< upper bound over the remaining domains (display unit); +inf if none
+  std::string failure;       ///< the first constraint that does not hold for certain, or size/peak's
+};
+
+class DesignEvaluator {
+ public:
+  /// Builds the network once (the same setup as Optimize; the same InputErrors).
+  DesignEvaluator(const Project& project, const Options& options);
+  ~DesignEvaluator();
+  DesignEvaluator(const DesignEvaluator&) = delete;
+  DesignEvaluator& operator=(const DesignEvaluator&) = delete;
+  /// The design variables ("component.parameter") and their domains (SI), in the order Check takes.
+  const std::vector<std::string>& variables() const;
+  std::vector<std::pair<double, double>> domains() const;
+  /// `x` in SI, one value per variable.
+  PointCheck Check(const std::vector<double>& x);
+
+ private:
+  std::unique_ptr<detail::Optimizer> impl_;
+};
+
+/// `project` with each named parameter fixed at its value (SI): nominal and a point domain,
+/// provenance "optimized". Throws InputError for a name that is not a parameter of the project.
+Project FixDesign(const Project& project, const std::vector<std::pair<std::string, double>>& values);
+
+}  // namespace highlift::optimize

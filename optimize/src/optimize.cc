@@ -1,0 +1,1068 @@
+// Interval branch and bound over the drive-system constraint network (docs/optimize.md).
+#include "highlift/optimize/optimize.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <queue>
+#include <set>
+#include <sstream>
+
+#include "highlift/core/error.h"
+#include "highlift/core/text_table.h"
+#include "highlift/icsp/drive_system.h"
+#include "highlift/icsp/parser.h"
+#include "highlift/icsp/propagator.h"
+#include "highlift/model/component_model.h"
+#include "highlift/model/estimation_laws.h"
+#include "highlift/reduced_models/analyses.h"
+#include "highlift/reduced_models/sizing.h"
+
+namespace highlift::optimize {
+
+using icsp::Box;
+using icsp::Interval;
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+bool EndsWith(const std::string& s, const std::string& suffix) {
+  return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+double Mid(const Interval& x) { return 0.5 * (x.lower() + x.upper()); }
+
+/// Interval evaluation of expression nodes over a box (forward only, outward rounded by the
+/// interval type): the "is it certain?" test of a constraint at a fixed design.
+class Evaluator {
+ public:
+  explicit Evaluator(const icsp::Network& n) : n_(n), memo_(n.num_nodes()), stamp_(n.num_nodes(), 0) {}
+  void Reset(const Box* box) {
+    box_ = box;
+    ++current_;
+  }
+  Interval Eval(int node) {
+    if (stamp_[node] == current_) return memo_[node];
+    const icsp::ExprNode& e = n_.node(icsp::ExprId{node});
+    using icsp::Op;
+    Interval r;
+    switch (e.op) {
+      case Op::kVar: r = (*box_)[e.a]; break;
+      case Op::kConst: r = e.value; break;
+      case Op::kAdd: r = Eval(e.a) + Eval(e.b); break;
+      case Op::kSub: r = Eval(e.a) - Eval(e.b); break;
+      case Op::kMul: r = Eval(e.a) * Eval(e.b); break;
+      case Op::kDiv: r = icsp::Div(Eval(e.a), Eval(e.b)); break;
+      case Op::kNeg: r = -Eval(e.a); break;
+      case Op::kSqr: r = icsp::Sqr(Eval(e.a)); break;
+      case Op::kPowInt: r = icsp::PowInt(Eval(e.a), e.n); break;
+      case Op::kPowReal: r = icsp::PowReal(Eval(e.a), e.p); break;
+      case Op::kSqrt: r = icsp::Sqrt(Eval(e.a)); break;
+      case Op::kExp: r = icsp::Exp(Eval(e.a)); break;
+      case Op::kLog: r = icsp::Log(Eval(e.a)); break;
+      case Op::kAbs: r = icsp::Abs(Eval(e.a)); break;
+      case Op::kMin: r = icsp::Min(Eval(e.a), Eval(e.b)); break;
+      case Op::kMax: r = icsp::Max(Eval(e.a), Eval(e.b)); break;
+      case Op::kSin: r = icsp::Sin(Eval(e.a)); break;
+      case Op::kCos: r = icsp::Cos(Eval(e.a)); break;
+    }
+    memo_[node] = r;
+    stamp_[node] = current_;
+    return r;
+  }
+
+ private:
+  const icsp::Network& n_;
+  const Box* box_ = nullptr;
+  std::vector<Interval> memo_;
+  std::vector<int> stamp_;
+  int current_ = 0;
+};
+
+/// g OP 0 holds for every point of the box g was evaluated on.
+bool Certain(const Interval& g, icsp::Relation r) {
+  if (icsp::IsEmpty(g)) return false;
+  switch (r) {
+    case icsp::Relation::kLessEqual: return g.upper() <= 0.0;
+    case icsp::Relation::kGreaterEqual: return g.lower() >= 0.0;
+    case icsp::Relation::kEqual: return g.lower() == 0.0 && g.upper() == 0.0;
+  }
+  return false;
+}
+
+struct Tolerance {
+  double relative, absolute;
+  bool Closed(double best, double lower) const {
+    return best - lower <= std::max(absolute, relative * std::fabs(best));
+  }
+};
+
+/// The outcome of one robust feasibility check of a design point.
+struct Candidate {
+  bool feasible = false;
+  double value = kInf;                 ///< objective upper bound over the remaining domains (SI)
+  double value_lower = -kInf;
+  std::vector<int> failed;             ///< constraints not certain at the point
+  std::string reduced_failure;         ///< what Size or AnalysePeaks found, when they failed
+  Box box;                             ///< the propagated box (definitions only)
+};
+
+}  // namespace
+namespace detail {
+namespace {
+
+std::string FirstSizeFailure(const reduced_models::SizingReport& r) {
+  for (const auto& s : r.settings)
+    if (!s.ok)
+      return "size: setting " + s.component + "." + s.parameter + " is outside its rule " + s.rule + " (factor " +
+             FormatNumber(s.current_factor, 4) + ")";
+  for (const auto& m : r.margins)
+    if (m.margin < 0.0)
+      return "size: margin of " + m.component + " against its " + m.allowable_name + " is " + FormatNumber(m.margin, 4);
+  return "size failed";
+}
+
+std::string FirstPeakFailure(const reduced_models::PeakReport& r) {
+  for (const auto& w : r.worst)
+    if (w.margin < 0.0)
+      return "peak: " + w.component + " in '" + w.worst_case + "' carries more than its " + w.allowable_name +
+             " (margin " + FormatNumber(w.margin, 4) + ")";
+  return "peak failed";
+}
+
+}  // namespace
+
+class Optimizer {
+ public:
+  Optimizer(const Project& project, const Options& options)
+      : project_(project), options_(options), dsn_(icsp::BuildDriveSystemNetwork(project)) {}
+
+  /// Design variables, margins, objective, constraint classes, the propagator.
+  void Setup();
+  Report Run();
+  Candidate Evaluate(const std::vector<double>& x, bool verify);
+  const std::vector<std::string>& design_names() const { return design_names_; }
+  std::vector<std::pair<double, double>> domains() const {
+    std::vector<std::pair<double, double>> out;
+    for (int v : design_) out.push_back({initial_[v].lower(), initial_[v].upper()});
+    return out;
+  }
+  std::string FailureText(const Candidate& c) const;
+  const std::string& objective_unit() const { return objective_unit_; }
+
+ private:
+  icsp::Network& net() { return dsn_.network; }
+  void ChooseDesignVariables();
+  void AddMargins();
+  void AddObjective();
+  void ClassifyConstraints();
+  void ProbeReducedModels();
+  void Consider(const std::vector<double>& x, const Candidate& c);
+  void LocalSearch(const std::vector<Interval>& d);
+  void Sensitivities();
+  void ChooseScenario();
+  std::vector<double> StepTowardsSmaller(const std::vector<double>& x) const;
+  int ChooseSplit(const std::vector<Interval>& d) const;
+  void Finish(Report& r);
+  double Seconds() const {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  }
+
+  Project project_;
+  Options options_;
+  icsp::DriveSystemNetwork dsn_;
+  std::vector<int> design_;             ///< variable indices
+  std::vector<std::string> design_names_;
+  int objective_ = -1, bound_ = -1, bound_constraint_ = -1;
+  std::string objective_unit_;
+  std::vector<MassTerm> mass_terms_;
+  std::vector<int> mass_vars_;          ///< per mass term: its network variable (-1: a constant)
+  std::vector<Interval> mass_constants_;
+  std::vector<char> definitions_;       ///< enabled mask: the laws that define derived quantities
+  std::vector<int> checks_;             ///< constraints a design must satisfy for certain
+  Box initial_;
+  std::vector<double> sign_, sensitivity_;
+  std::vector<int> uncertain_;          ///< parameter variables with a domain that are not design variables
+  std::vector<double> scenario_;        ///< a point of their domains at which the boxes are contracted
+  bool have_scenario_ = false;
+  std::string scenario_note_;
+  bool verify_size_ = false, verify_peak_ = false;
+  std::string verification_note_;
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+  std::unique_ptr<icsp::Propagator> propagator_;
+  std::unique_ptr<Evaluator> evaluator_;
+  // Incumbent.
+  bool found_ = false;
+  double best_ = kInf;
+  std::vector<double> best_x_;
+  Candidate best_candidate_;
+  Report counters_;
+  std::map<std::string, int> rejected_;
+};
+
+void Optimizer::ChooseDesignVariables() {
+  std::vector<std::string> names = options_.design;
+  for (const Component& c : project_.components)
+    for (const auto& [pname, p] : c.parameters)
+      if (p.design && std::find(names.begin(), names.end(), c.id + "." + pname) == names.end())
+        names.push_back(c.id + "." + pname);
+  if (names.empty())
+    throw InputError("no design variable: mark parameters of the project with \"design\": true, or name them with "
+                     "--design COMPONENT.PARAMETER (e.g. --design shaft_l1.wall_thickness)");
+  for (const std::string& name : names) {
+    const auto dot = name.find('.');
+    const Component* c = dot == std::string::npos ? nullptr : project_.FindComponent(name.substr(0, dot));
+    if (!c)
+      throw InputError("design variable '" + name + "': no component '" + name.substr(0, dot == std::string::npos ? name.size() : dot) +
+                       "' in the project; name it as COMPONENT.PARAMETER with a component id of the project");
+    const std::string pname = name.substr(dot + 1);
+    const auto it = c->parameters.find(pname);
+    const icsp::VariableId v = net().FindVariable(name);
+    if (it == c->parameters.end() || v.value < 0)
+      throw InputError("design variable '" + name + "': component '" + c->id + "' gives no parameter '" + pname +
+                       "'; give it in the project with \"min\" and \"max\", or choose one of its parameters");
+    const Interval dom = net().variable(v).initial;
+    if (!std::isfinite(dom.lower()) || !std::isfinite(dom.upper()) || !(dom.upper() > dom.lower()))
+      throw InputError("design variable '" + name + "' has no domain to choose from (" +
+                       (std::isfinite(dom.lower()) && std::isfinite(dom.upper()) ? "a single value" : "unbounded") +
+                       "): give it finite \"min\" and \"max\" in the project");
+    if (std::find(design_.begin(), design_.end(), v.value) != design_.end()) continue;
+    design_.push_back(v.value);
+    design_names_.push_back(name);
+  }
+}
+
+/// Every margin of the network >= 0: limiter settings against their operating torques, the
+/// limiter brakes, the tip brakes' holding; a shaft's torque capacity against its drive torque.
+void Optimizer::AddMargins() {
+  const int n = net().num_variables();
+  for (int v = 0; v < n; ++v) {
+    const std::string name = net().variable(icsp::VariableId{v}).name;
+    static const char* kSuffixes[] = {".margin", ".margin_retract", ".holding_margin", ".brake_margin"};
+    for (const char* s : kSuffixes) {
+      if (!EndsWith(name, s)) continue;
+      net().AddConstraint(net().Var(icsp::VariableId{v}), icsp::Relation::kGreaterEqual, net().Const(0.0),
+                          {"margin:" + name, "the setting margin '" + name + "' of `highlift size` is not negative",
+                           icsp::ConstraintRole::kRequirement, name + " >= 0"});
+    }
+    if (EndsWith(name, ".torque_capacity")) {
+      const std::string id = name.substr(0, name.size() - std::string(".torque_capacity").size());
+      const icsp::VariableId drive = net().FindVariable(id + ".drive_torque");
+      if (drive.value >= 0)
+        net().AddConstraint(net().Var(icsp::VariableId{v}), icsp::Relation::kGreaterEqual, net().Var(drive),
+                            {"margin:" + id + ".torque_capacity",
+                             "shaft '" + id + "' carries its drive torque within its torque capacity (`highlift size`)",
+                             icsp::ConstraintRole::kRequirement, name + " >= " + id + ".drive_torque"});
+    }
+  }
+}
+
+void Optimizer::AddObjective() {
+  icsp::ExprId expr{-1};
+  const std::string& o = options_.objective;
+  auto add = [&](icsp::ExprId term) { expr = expr.value < 0 ? term : net().Add(expr, term); };
+  if (o == "mass") {
+    objective_unit_ = "kg";
+    for (const Component& c : project_.components) {
+      const icsp::VariableId m = net().FindVariable(c.id + ".mass");
+      if (m.value >= 0) {
+        add(net().Var(m));
+        mass_terms_.push_back({c.id, "tube law m = rho pi (D - t) t L (model::ShaftMass)", 0.0, 0.0});
+        mass_vars_.push_back(m.value);
+        mass_constants_.push_back(Interval(0.0));
+        continue;
+      }
+      const model::ComponentModel* model = model::FindComponentModel(c.type);
+      bool counted = false;
+      if (model) {
+        for (const model::EstimationLaw& law : model->EstimationLaws()) {
+          if (!law.derived || law.output != "mass") continue;
+          std::vector<model::Interval> in;
+          bool ok = true;
+          for (const model::LawInput& input : law.inputs) {
+            if (input.kind == model::LawInput::Kind::kConstant) {
+              in.push_back(input.range);
+            } else if (input.kind == model::LawInput::Kind::kParameter) {
+              const auto it = c.parameters.find(input.name);
+              if (it == c.parameters.end()) { ok = false; break; }
+              const Parameter& p = it->second;
+              if (std::isfinite(p.domain.lo) && std::isfinite(p.domain.hi)) in.push_back(model::Interval(p.domain.lo, p.domain.hi));
+              else if (p.nominal) in.push_back(model::Interval(*p.nominal, *p.nominal));
+              else { ok = false; break; }
+            } else {
+              ok = false;  // a label input (a quantity in a component label): not read here
+              break;
+            }
+          }
+          if (!ok) continue;
+          const model::Interval m = law.enclosure(in);
+          if (!(std::isfinite(m.lo) && std::isfinite(m.hi))) continue;
+          const Interval mi(m.lo, m.hi);
+          add(net().Const(mi));
+          mass_terms_.push_back({c.id, "estimation law: " + law.note + " (over the domains)", m.lo, m.hi});
+          mass_vars_.push_back(-1);
+          mass_constants_.push_back(mi);
+          counted = true;
+          break;
+        }
+      }
+      if (!counted && model && (model->roles().actuator || model->roles().drive_unit || model->roles().tip_brake ||
+                                model->roles().wing_limiter || model->roles().station_limiter)) {
+        mass_terms_.push_back({c.id, "no mass law for type '" + c.type + "' with the project's values: not counted",
+                               std::nan(""), std::nan("")});
+        mass_vars_.push_back(-1);
+        mass_constants_.push_back(Interval(0.0));
+      }
+    }
+    if (expr.value < 0)
+      throw InputError("objective 'mass': the project has no component with a mass law (torque shafts with a tube "
+                       "geometry and density); minimize 'inertia' or an expression instead");
+  } else if (o == "inertia") {
+    objective_unit_ = "kg*m^2";
+    for (const Component& c : project_.components) {
+      const icsp::VariableId j = net().FindVariable(c.id + ".reflected_inertia");
+      if (j.value >= 0) add(net().Var(j));
+    }
+    if (expr.value < 0)
+      throw InputError("objective 'inertia': the project has no component with an inertia at the PDU; minimize "
+                       "'mass' or an expression instead");
+  } else {
+    expr = icsp::ParseExpression(net(), o, "objective '" + o + "'");
+    // The unit of a single quantity is shown; a compound expression is in SI.
+    const icsp::VariableId v = net().FindVariable(o);
+    if (v.value >= 0) objective_unit_ = net().variable(v).unit;
+  }
+  objective_ = net().AddVariable("optimize.objective", icsp::Whole(), "", "optimize").value;
+  net().AddConstraint(net().Var(icsp::VariableId{objective_}), icsp::Relation::kEqual, expr,
+                      {"objective", "the objective '" + o + "'", icsp::ConstraintRole::kPhysics, o});
+  bound_ = net().AddVariable("optimize.upper_bound", icsp::Whole(), "", "optimize").value;
+  bound_constraint_ = net()
+                          .AddConstraint(net().Var(icsp::VariableId{objective_}), icsp::Relation::kLessEqual,
+                                         net().Var(icsp::VariableId{bound_}),
+                                         {"objective_bound", "the objective does not exceed the best design found",
+                                          icsp::ConstraintRole::kPhysics, ""})
+                          .value;
+}
+
+/// Definitions: the physics equalities and monotone black boxes, which give each derived quantity
+/// its law; propagated alone over a box with the design fixed they enclose every derived quantity
+/// over the remaining domains. Everything else (requirements, margins, physics inequalities such
+/// as parameter relations) must hold for certain.
+void Optimizer::ClassifyConstraints() {
+  const int m = net().num_constraints();
+  definitions_.assign(m, 0);
+  for (int c = 0; c < m; ++c) {
+    if (c == bound_constraint_) continue;
+    const icsp::Constraint& k = net().constraint(icsp::ConstraintId{c});
+    const bool definition = k.info.role == icsp::ConstraintRole::kPhysics &&
+                            (k.kind == icsp::Constraint::Kind::kMonotone || k.relation == icsp::Relation::kEqual);
+    if (definition) definitions_[c] = 1;
+    else checks_.push_back(c);
+  }
+}
+
+void Optimizer::ProbeReducedModels() {
+  verify_size_ = options_.verify_size;
+  verify_peak_ = options_.verify_peak;
+  if (!verify_size_) verification_note_ += "size not verified (verify_size off); ";
+  if (!verify_peak_) verification_note_ += "peak not verified (verify_peak off); ";
+  if (verify_size_) try {
+    reduced_models::SizingOptions so;
+    so.intervals = false;
+    reduced_models::Size(project_, so);
+  } catch (const InputError& e) {
+    verify_size_ = false;
+    verification_note_ += std::string("size does not apply to this project (") + e.what() + "); ";
+  }
+  if (verify_peak_) try {
+    reduced_models::PeakOptions po;
+    po.intervals = false;
+    po.rank = false;
+    reduced_models::AnalysePeaks(project_, po);
+  } catch (const InputError& e) {
+    verify_peak_ = false;
+    verification_note_ += std::string("peak does not apply to this project (") + e.what() + ")";
+  }
+  while (!verification_note_.empty() && (verification_note_.back() == ' ' || verification_note_.back() == ';'))
+    verification_note_.pop_back();
+}
+
+Candidate Optimizer::Evaluate(const std::vector<double>& x, bool verify) {
+  ++counters_.candidates;
+  Candidate c;
+  c.box = initial_;
+  for (std::size_t i = 0; i < design_.size(); ++i) c.box[design_[i]] = Interval(x[i]);
+  c.box[bound_] = icsp::Whole();
+  const icsp::PropagationReport rep = propagator_->Propagate(c.box, definitions_);
+  if (rep.status == icsp::Status::kInfeasible) {
+    c.failed.push_back(rep.empty_constraint);
+    return c;
+  }
+  evaluator_->Reset(&c.box);
+  for (int k : checks_) {
+    const icsp::Constraint& con = net().constraint(icsp::ConstraintId{k});
+    if (con.kind != icsp::Constraint::Kind::kExpression) continue;
+    if (!Certain(evaluator_->Eval(con.root), con.relation)) c.failed.push_back(k);
+  }
+  const Interval obj = c.box[objective_];
+  c.value = obj.upper();
+  c.value_lower = obj.lower();
+  if (!c.failed.empty() || !std::isfinite(c.value)) return c;
+  if (verify && (verify_size_ || verify_peak_)) {
+    ++counters_.reduced_model_checks;
+    std::vector<std::pair<std::string, double>> values;
+    for (std::size_t i = 0; i < design_.size(); ++i) values.push_back({design_names_[i], x[i]});
+    const Project p = FixDesign(project_, values);
+    if (verify_size_) {
+      reduced_models::SizingOptions so;
+      const reduced_models::SizingReport sr = reduced_models::Size(p, so);
+      if (!sr.ok()) {
+        c.reduced_failure = FirstSizeFailure(sr);
+        return c;
+      }
+    }
+    if (verify_peak_) {
+      reduced_models::PeakOptions po;
+      po.rank = false;
+      const reduced_models::PeakReport pr = reduced_models::AnalysePeaks(p, po);
+      if (!pr.ok()) {
+        c.reduced_failure = FirstPeakFailure(pr);
+        return c;
+      }
+    }
+  }
+  c.feasible = true;
+  return c;
+}
+
+void Optimizer::Consider(const std::vector<double>& x, const Candidate& c) {
+  if (!c.feasible) {
+    ++rejected_[FailureText(c)];
+    return;
+  }
+  if (!(c.value < best_)) return;
+  best_ = c.value;
+  best_x_ = x;
+  best_candidate_ = c;
+  found_ = true;
+  ++counters_.improvements;
+}
+
+/// The objective's response to each design variable at the middle of the domains (definitions
+/// only): its sign gives the direction of the local search, its size the bisection priority.
+void Optimizer::Sensitivities() {
+  const std::size_t n = design_.size();
+  sign_.assign(n, 0.0);
+  sensitivity_.assign(n, 0.0);
+  std::vector<double> mid(n);
+  for (std::size_t i = 0; i < n; ++i) mid[i] = Mid(initial_[design_[i]]);
+  auto value = [&](const std::vector<double>& x) {
+    Box box = initial_;
+    for (std::size_t i = 0; i < n; ++i) box[design_[i]] = Interval(x[i]);
+    if (propagator_->Propagate(box, definitions_).status == icsp::Status::kInfeasible) return std::nan("");
+    return Mid(box[objective_]);
+  };
+  for (std::size_t i = 0; i < n; ++i) {
+    std::vector<double> lo = mid, hi = mid;
+    lo[i] = initial_[design_[i]].lower();
+    hi[i] = initial_[design_[i]].upper();
+    const double d = value(hi) - value(lo);
+    if (std::isfinite(d) && d != 0.0) {
+      sign_[i] = d > 0 ? 1.0 : -1.0;
+      sensitivity_[i] = std::fabs(d);
+    }
+  }
+}
+
+/// Largest width (relative to the domain) x objective sensitivity; a variable the objective does
+/// not move (a setting) still gets a small weight, so feasibility can split it.
+int Optimizer::ChooseSplit(const std::vector<Interval>& d) const {
+  double smax = 0.0;
+  for (double s : sensitivity_) smax = std::max(smax, s);
+  int best = -1;
+  double score = 0.0;
+  for (std::size_t i = 0; i < d.size(); ++i) {
+    const Interval dom = initial_[design_[i]];
+    const double rel = (d[i].upper() - d[i].lower()) / (dom.upper() - dom.lower());
+    if (!(rel > 1e-13)) continue;
+    const double weight = (smax > 0.0 ? sensitivity_[i] / smax : 0.0) + 0.05;
+    if (rel * weight > score) {
+      score = rel * weight;
+      best = static_cast<int>(i);
+    }
+  }
+  return best;
+}
+
+/// One step of 1e-4 of each domain from x towards a smaller objective.
+std::vector<double> Optimizer::StepTowardsSmaller(const std::vector<double>& x) const {
+  std::vector<double> step = x;
+  for (std::size_t i = 0; i < design_.size(); ++i) {
+    const double w = initial_[design_[i]].upper() - initial_[design_[i]].lower();
+    step[i] = std::clamp(x[i] - sign_[i] * 1e-4 * w, initial_[design_[i]].lower(), initial_[design_[i]].upper());
+  }
+  return step;
+}
+
+/// The worst case of the uncertain parameters for the constraints that limit the incumbent: each
+/// parameter at the end of its domain where those constraints come closest to failing (by a vote
+/// over them), or at its middle when it does not move them. Any point of the domains gives a sound
+/// relaxation (a robustly feasible design is feasible at every point, and its worst-case objective
+/// is at least the objective there), so the boxes are contracted at this point: the worse the
+/// point, the tighter the lower bound.
+void Optimizer::ChooseScenario() {
+  const Candidate probe = Evaluate(StepTowardsSmaller(best_x_), false);
+  std::vector<int> active;
+  for (int k : probe.failed)
+    if (k >= 0 && net().constraint(icsp::ConstraintId{k}).kind == icsp::Constraint::Kind::kExpression) active.push_back(k);
+  if (active.empty())
+    for (int k : checks_)
+      if (net().constraint(icsp::ConstraintId{k}).kind == icsp::Constraint::Kind::kExpression) active.push_back(k);
+  Box base = initial_;
+  for (std::size_t i = 0; i < design_.size(); ++i) base[design_[i]] = Interval(best_x_[i]);
+  base[bound_] = icsp::Whole();
+  auto worst = [&](const Box& box, std::vector<double>& out) {
+    out.assign(active.size(), -kInf);
+    evaluator_->Reset(&box);
+    for (std::size_t a = 0; a < active.size(); ++a) {
+      const icsp::Constraint& con = net().constraint(icsp::ConstraintId{active[a]});
+      const Interval g = evaluator_->Eval(con.root);
+      if (icsp::IsEmpty(g)) continue;
+      out[a] = con.relation == icsp::Relation::kLessEqual      ? g.upper()
+               : con.relation == icsp::Relation::kGreaterEqual ? -g.lower()
+                                                                : std::max(g.upper(), -g.lower());
+    }
+  };
+  scenario_.assign(uncertain_.size(), 0.0);
+  std::vector<double> at_lo, at_hi;
+  for (std::size_t j = 0; j < uncertain_.size(); ++j) {
+    const Interval d = initial_[uncertain_[j]];
+    Box lo = base, hi = base;
+    lo[uncertain_[j]] = Interval(d.lower());
+    hi[uncertain_[j]] = Interval(d.upper());
+    const bool lo_ok = propagator_->Propagate(lo, definitions_).status != icsp::Status::kInfeasible;
+    const bool hi_ok = propagator_->Propagate(hi, definitions_).status != icsp::Status::kInfeasible;
+    int votes = 0;  // > 0: the lower end is worse
+    if (lo_ok && hi_ok) {
+      worst(lo, at_lo);
+      worst(hi, at_hi);
+      for (std::size_t a = 0; a < active.size(); ++a) votes += at_lo[a] > at_hi[a] ? 1 : at_lo[a] < at_hi[a] ? -1 : 0;
+    } else {
+      votes = lo_ok ? -1 : hi_ok ? 1 : 0;
+    }
+    const double inside = 1e-6 * (d.upper() - d.lower());
+    scenario_[j] = votes > 0 ? d.lower() + inside : votes < 0 ? d.upper() - inside : Mid(d);
+  }
+  // A point where the propagation itself fails (a stiffness of exactly 0 gives 1/0) would cut off
+  // designs that are feasible; so the point is taken a hair (1e-6 of the domain) inside the worst
+  // end, and it is used only when the incumbent passes the whole network there.
+  Box check = initial_;
+  for (std::size_t j = 0; j < uncertain_.size(); ++j) check[uncertain_[j]] = Interval(scenario_[j]);
+  for (std::size_t i = 0; i < design_.size(); ++i) check[design_[i]] = Interval(best_x_[i]);
+  check[bound_] = icsp::Whole();
+  have_scenario_ = propagator_->Propagate(check).status != icsp::Status::kInfeasible;
+  if (!have_scenario_) scenario_note_ = "the worst-case point of the uncertain parameters was not used (the network "
+                                        "rejects the best design there); the bound is the existential relaxation's";
+
+}
+
+/// Feasible points inside a contracted box: the middle, else the corner the objective likes
+/// least (the "safe" one); from the feasible one a bisection along the segment towards the
+/// corner the objective likes most, keeping the farthest robustly feasible point.
+void Optimizer::LocalSearch(const std::vector<Interval>& d) {
+  const std::size_t n = d.size();
+  std::vector<double> mid(n), light(n), safe(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    mid[i] = Mid(d[i]);
+    light[i] = sign_[i] > 0 ? d[i].lower() : sign_[i] < 0 ? d[i].upper() : mid[i];
+    safe[i] = sign_[i] > 0 ? d[i].upper() : sign_[i] < 0 ? d[i].lower() : mid[i];
+  }
+  std::vector<double> anchor = mid;
+  Candidate c = Evaluate(mid, true);
+  if (!c.feasible) {
+    Consider(mid, c);
+    if (safe == mid) return;
+    c = Evaluate(safe, true);
+    if (!c.feasible) {
+      Consider(safe, c);
+      return;
+    }
+    anchor = safe;
+  }
+  Consider(anchor, c);
+  if (light == anchor) return;
+  auto at = [&](double t) {
+    std::vector<double> x(n);
+    for (std::size_t i = 0; i < n; ++i) x[i] = std::clamp(anchor[i] + t * (light[i] - anchor[i]), d[i].lower(), d[i].upper());
+    return x;
+  };
+  {
+    const std::vector<double> x = at(1.0);
+    const Candidate e = Evaluate(x, true);
+    Consider(x, e);
+    if (e.feasible) return;
+  }
+  double lo = 0.0, hi = 1.0;
+  for (int s = 0; s < options_.line_search_steps; ++s) {
+    const double t = 0.5 * (lo + hi);
+    const std::vector<double> x = at(t);
+    const Candidate e = Evaluate(x, true);
+    Consider(x, e);
+    if (e.feasible) lo = t;
+    else hi = t;
+  }
+}
+
+void Optimizer::Setup() {
+  options_.Validate();
+  ChooseDesignVariables();
+  AddMargins();
+  AddObjective();
+  ClassifyConstraints();
+  ProbeReducedModels();
+  initial_ = net().InitialBox();
+  for (const Component& c : project_.components)
+    for (const auto& [pname, par] : c.parameters) {
+      (void)par;
+      const icsp::VariableId v = net().FindVariable(c.id + "." + pname);
+      if (v.value < 0 || std::find(design_.begin(), design_.end(), v.value) != design_.end()) continue;
+      const Interval d = initial_[v.value];
+      if (std::isfinite(d.lower()) && std::isfinite(d.upper()) && d.upper() > d.lower()) uncertain_.push_back(v.value);
+    }
+  icsp::PropagationOptions po;
+  po.ratio = options_.propagation_ratio;
+  po.record_reasons = false;
+  po.max_seconds = std::max(1.0, options_.max_seconds);
+  propagator_ = std::make_unique<icsp::Propagator>(net(), po);
+  evaluator_ = std::make_unique<Evaluator>(net());
+}
+
+std::string Optimizer::FailureText(const Candidate& c) const {
+  if (!c.failed.empty()) {
+    const int k = c.failed.front();
+    if (k < 0) return "a law has no value for this design";
+    const icsp::Constraint& con = dsn_.network.constraint(icsp::ConstraintId{k});
+    return con.info.label + ": " + (con.info.source.empty() ? con.info.description : con.info.source);
+  }
+  return c.reduced_failure;
+}
+
+Report Optimizer::Run() {
+  Setup();
+  Report r;
+  r.objective = options_.objective;
+  r.design_variables = design_names_;
+  r.objective_unit = objective_unit_;
+
+  // The root: infeasible for every design? unbounded?
+  Box root = initial_;
+  const icsp::PropagationReport rep = propagator_->Propagate(root);
+  if (rep.status == icsp::Status::kInfeasible) {
+    icsp::PropagationOptions eo;
+    eo.max_seconds = 30.0;
+    const icsp::Explanation ex = icsp::Explain(net(), initial_, eo);
+    r.status = Status::kInfeasible;
+    r.infeasibility = ex.infeasible ? ex.text : rep.message;
+    r.message = "no design within the domains of " + std::to_string(design_.size()) +
+                " design variable(s) meets every requirement and margin (proved by propagation)";
+    r.seconds = Seconds();
+    return r;
+  }
+  if (!std::isfinite(root[objective_].lower()))
+    throw InputError("objective '" + options_.objective + "' is unbounded below over the domains ("
+                     "no finite lower bound after propagation): give the "
+                     "parameters it depends on finite \"min\" and \"max\" in the project, or minimize another objective");
+  Sensitivities();
+  {
+    // A constraint that no design variable reaches (not even through the laws that define derived
+    // quantities) and that does not hold for certain over the remaining domains fails for every
+    // design alike: say so at once instead of searching.
+    // Parameters are inputs: only design variables and the quantities derived from them are reached.
+    std::vector<char> reached(net().num_variables(), 0), parameter(net().num_variables(), 0);
+    for (const Component& c : project_.components)
+      for (const auto& entry : c.parameters) {
+        const icsp::VariableId v = net().FindVariable(c.id + "." + entry.first);
+        if (v.value >= 0) parameter[v.value] = 1;
+      }
+    for (int v : design_) reached[v] = 1;
+    for (bool changed = true; changed;) {
+      changed = false;
+      for (int c = 0; c < net().num_constraints(); ++c) {
+        if (!definitions_[c]) continue;
+        const auto scope = net().ScopeOf(icsp::ConstraintId{c});
+        if (std::none_of(scope.begin(), scope.end(), [&](int v) { return reached[v] != 0; })) continue;
+        for (int v : scope)
+          if (!reached[v] && !parameter[v]) reached[v] = changed = true;
+      }
+    }
+    std::vector<double> mid;
+    for (int v : design_) mid.push_back(Mid(initial_[v]));
+    const Candidate probe = Evaluate(mid, false);
+    std::vector<std::string> fixed;
+    for (int k : probe.failed) {
+      if (k < 0) continue;
+      const auto scope = net().ScopeOf(icsp::ConstraintId{k});
+      if (std::any_of(scope.begin(), scope.end(), [&](int v) { return reached[v] != 0; })) continue;
+      const icsp::Constraint& con = net().constraint(icsp::ConstraintId{k});
+      std::string vars;
+      for (int v : scope) vars += (vars.empty() ? "" : ", ") + net().variable(icsp::VariableId{v}).name;
+      fixed.push_back(con.info.label + ": " + (con.info.source.empty() ? con.info.description : con.info.source) +
+                      " (over " + vars + ")");
+    }
+    if (!fixed.empty()) {
+      r.status = Status::kNoDesignFound;
+      r.message = "no design variable reaches " + std::to_string(fixed.size()) +
+                  " constraint(s) that do not hold for every value of their uncertain parameters, so no design can "
+                  "be robustly feasible: make one of their parameters a design variable (\"design\": true or "
+                  "--design) or narrow its domain";
+      r.infeasibility = "Constraints that fail for every design:\n";
+      for (const std::string& f : fixed) r.infeasibility += "  - " + f + "\n";
+      r.lower_bound = icsp::ToDisplay(root[objective_].lower(), objective_unit_);
+      r.candidates = counters_.candidates;
+      r.seconds = Seconds();
+      return r;
+    }
+  }
+
+  struct Node {
+    std::vector<Interval> d;
+    double lb;
+  };
+  auto worse = [](const Node& a, const Node& b) { return a.lb > b.lb; };
+  std::priority_queue<Node, std::vector<Node>, decltype(worse)> queue(worse);
+  {
+    Node n;
+    for (int v : design_) n.d.push_back(root[v]);
+    n.lb = root[objective_].lower();
+    queue.push(std::move(n));
+  }
+  const Tolerance tol{options_.relative_gap, options_.absolute_gap};
+  double closed_lb = kInf;   // least lower bound of the boxes closed within the tolerance
+  bool unproved = false;     // a box was closed without a proof (tiny, no design found in it)
+  bool limit = false;
+  while (!queue.empty()) {
+    if (found_ && tol.Closed(best_, std::min(closed_lb, queue.top().lb))) break;
+    if (counters_.boxes >= options_.max_boxes || Seconds() > options_.max_seconds) {
+      limit = true;
+      break;
+    }
+    Node node = queue.top();
+    queue.pop();
+    ++counters_.boxes;
+    if (found_ && node.lb > best_) {
+      ++counters_.pruned;
+      continue;
+    }
+    Box box = initial_;
+    if (have_scenario_)
+      for (std::size_t j = 0; j < uncertain_.size(); ++j) box[uncertain_[j]] = Interval(scenario_[j]);
+    for (std::size_t i = 0; i < design_.size(); ++i) box[design_[i]] = node.d[i];
+    box[bound_] = found_ ? Interval(-kInf, best_) : icsp::Whole();
+    const icsp::PropagationReport pr = propagator_->Propagate(box);
+    if (pr.status == icsp::Status::kInfeasible) {
+      if (found_) ++counters_.pruned;
+      else ++counters_.infeasible_boxes;
+      continue;
+    }
+    const double lb = std::max(node.lb, box[objective_].lower());
+    if (found_ && tol.Closed(best_, lb)) {
+      closed_lb = std::min(closed_lb, lb);
+      continue;
+    }
+    std::vector<Interval> d(design_.size());
+    for (std::size_t i = 0; i < design_.size(); ++i) d[i] = box[design_[i]];
+    const int before = counters_.improvements;
+    LocalSearch(d);
+    if (counters_.improvements != before && (counters_.improvements & (counters_.improvements - 1)) == 0) ChooseScenario();
+    if (found_ && tol.Closed(best_, lb)) {
+      closed_lb = std::min(closed_lb, lb);
+      continue;
+    }
+    const int k = ChooseSplit(d);
+    if (k < 0) {  // too small to split further
+      closed_lb = std::min(closed_lb, lb);
+      if (!found_) unproved = true;
+      continue;
+    }
+    const double m = Mid(d[k]);
+    Node a{d, lb}, b{d, lb};
+    a.d[k] = Interval(d[k].lower(), m);
+    b.d[k] = Interval(m, d[k].upper());
+    queue.push(std::move(a));
+    queue.push(std::move(b));
+  }
+  double lower = closed_lb;
+  if (!queue.empty()) lower = std::min(lower, queue.top().lb);
+  if (found_) lower = std::min(lower, best_);
+  r.boxes = counters_.boxes;
+  r.pruned = counters_.pruned;
+  r.infeasible_boxes = counters_.infeasible_boxes;
+  r.candidates = counters_.candidates;
+  r.reduced_model_checks = counters_.reduced_model_checks;
+  r.improvements = counters_.improvements;
+  {
+    std::vector<std::pair<std::string, int>> why(rejected_.begin(), rejected_.end());
+    std::stable_sort(why.begin(), why.end(), [](const auto& a, const auto& b) { return a.second > b.second; });
+    if (why.size() > 5) why.resize(5);
+    r.rejections = why;
+  }
+  if (!found_) {
+    if (queue.empty() && !unproved && !limit) {
+      r.status = Status::kInfeasible;
+      r.message = "no design within the domains meets every requirement and margin: branch and bound emptied every box";
+      const icsp::Explanation ex = icsp::Explain(net(), initial_, {});
+      r.infeasibility = ex.infeasible ? ex.text
+                                      : "the domains together admit values, but no box of design variables does; "
+                                        "widen the design domains or relax the requirements";
+    } else {
+      r.status = Status::kNoDesignFound;
+      r.message = "gave up without a robustly feasible design (" + std::string(limit ? "limit reached" : "boxes too small") +
+                  "); this proves nothing: raise max_boxes / max_seconds or widen the design domains";
+      if (!verification_note_.empty()) r.message += "; " + verification_note_;
+    }
+    r.lower_bound = icsp::ToDisplay(lower, objective_unit_);
+    r.seconds = Seconds();
+    return r;
+  }
+  r.found = true;
+  r.status = tol.Closed(best_, lower) ? Status::kOptimal : Status::kStoppedAtLimit;
+  r.best = icsp::ToDisplay(best_, objective_unit_);
+  r.lower_bound = icsp::ToDisplay(lower, objective_unit_);
+  r.gap = best_ != 0.0 ? (best_ - lower) / std::fabs(best_) : best_ - lower;
+  r.message = r.status == Status::kOptimal ? "the gap closed within the tolerance"
+                                           : "limit reached (" + std::to_string(counters_.boxes) + " boxes, " +
+                                                 FormatNumber(Seconds(), 3) + " s) with the gap open";
+  if (!verification_note_.empty()) r.message += "; " + verification_note_;
+  if (!scenario_note_.empty()) r.message += "; " + scenario_note_;
+  Finish(r);
+  r.seconds = Seconds();
+  return r;
+}
+
+/// The design table, the mass terms, the active constraints and the project of the design.
+void Optimizer::Finish(Report& r) {
+  std::vector<std::pair<std::string, double>> values;
+  for (std::size_t i = 0; i < design_.size(); ++i) {
+    const icsp::VariableInfo& info = net().variable(icsp::VariableId{design_[i]});
+    DesignValue dv;
+    dv.name = design_names_[i];
+    dv.unit = info.unit;
+    dv.value = icsp::ToDisplay(best_x_[i], info.unit);
+    dv.value_si = best_x_[i];
+    dv.lower = icsp::ToDisplay(initial_[design_[i]].lower(), info.unit);
+    dv.upper = icsp::ToDisplay(initial_[design_[i]].upper(), info.unit);
+    dv.nominal = std::nan("");
+    for (const auto& [var, nominal] : dsn_.nominal)
+      if (var == design_[i]) dv.nominal = icsp::ToDisplay(nominal, info.unit);
+    const double w = initial_[design_[i]].upper() - initial_[design_[i]].lower();
+    if (best_x_[i] - initial_[design_[i]].lower() <= 1e-6 * w) dv.at_bound = "lower";
+    if (initial_[design_[i]].upper() - best_x_[i] <= 1e-6 * w) dv.at_bound = "upper";
+    r.design.push_back(dv);
+    values.push_back({design_names_[i], best_x_[i]});
+  }
+  for (std::size_t t = 0; t < mass_terms_.size(); ++t) {
+    MassTerm m = mass_terms_[t];
+    if (mass_vars_[t] >= 0) {
+      m.lower = best_candidate_.box[mass_vars_[t]].lower();
+      m.upper = best_candidate_.box[mass_vars_[t]].upper();
+    }
+    r.mass_terms.push_back(m);
+  }
+  // Active constraints: what breaks one small step (1e-4 of each domain) towards a smaller
+  // objective, and the design variables at a bound of their domains.
+  const Candidate c = Evaluate(StepTowardsSmaller(best_x_), true);
+  std::set<int> seen;
+  for (int k : c.failed) {
+    if (k < 0 || !seen.insert(k).second) continue;
+    const icsp::Constraint& con = net().constraint(icsp::ConstraintId{k});
+    // Skip what already failed at the optimum (cannot happen for a feasible design, kept safe).
+    r.active.push_back({con.info.label, con.info.description,
+                        con.info.source.empty() ? net().ConstraintText(icsp::ConstraintId{k}) : con.info.source});
+  }
+  if (c.failed.empty() && !c.reduced_failure.empty())
+    r.active.push_back({c.reduced_failure.substr(0, c.reduced_failure.find(':')), c.reduced_failure, ""});
+  for (const DesignValue& dv : r.design)
+    if (!dv.at_bound.empty())
+      r.active.push_back({"bound:" + dv.name, dv.name + " at the " + dv.at_bound + " end of its domain",
+                          dv.name + (dv.at_bound == "lower" ? " >= " : " <= ") +
+                              FormatNumber(dv.at_bound == "lower" ? dv.lower : dv.upper, 6) + " " + dv.unit});
+  r.design_project = FixDesign(project_, values);
+}
+
+}  // namespace detail
+
+namespace {
+std::string Number(double v) { return FormatNumber(v, 6); }
+}  // namespace
+
+DesignEvaluator::DesignEvaluator(const Project& project, const Options& options)
+    : impl_(std::make_unique<detail::Optimizer>(project, options)) {
+  impl_->Setup();
+}
+DesignEvaluator::~DesignEvaluator() = default;
+const std::vector<std::string>& DesignEvaluator::variables() const { return impl_->design_names(); }
+std::vector<std::pair<double, double>> DesignEvaluator::domains() const { return impl_->domains(); }
+PointCheck DesignEvaluator::Check(const std::vector<double>& x) {
+  if (x.size() != impl_->design_names().size())
+    throw InputError("DesignEvaluator::Check: " + std::to_string(x.size()) + " values for " +
+                     std::to_string(impl_->design_names().size()) + " design variables; give one per variable");
+  const Candidate c = impl_->Evaluate(x, true);
+  PointCheck out;
+  out.feasible = c.feasible;
+  out.objective = c.feasible ? icsp::ToDisplay(c.value, impl_->objective_unit()) : kInf;
+  if (!c.feasible) out.failure = impl_->FailureText(c);
+  return out;
+}
+
+void Options::Validate() const {
+  if (objective.empty()) throw InputError("optimize: the objective is empty; give 'mass', 'inertia' or an expression");
+  if (max_boxes < 1) throw InputError("optimize: max_boxes = " + std::to_string(max_boxes) + " must be >= 1");
+  if (!(relative_gap >= 0.0) || !std::isfinite(relative_gap))
+    throw InputError("optimize: relative_gap = " + Number(relative_gap) + " must be a finite number >= 0");
+  if (!(absolute_gap >= 0.0) || !std::isfinite(absolute_gap))
+    throw InputError("optimize: absolute_gap = " + Number(absolute_gap) + " must be a finite number >= 0");
+  if (!(max_seconds > 0.0) || !std::isfinite(max_seconds))
+    throw InputError("optimize: max_seconds = " + Number(max_seconds) + " must be a finite number > 0");
+  if (line_search_steps < 0 || line_search_steps > 60)
+    throw InputError("optimize: line_search_steps = " + std::to_string(line_search_steps) + " must be from 0 to 60");
+  if (!(propagation_ratio >= 0.0 && propagation_ratio < 1.0))
+    throw InputError("optimize: propagation_ratio = " + Number(propagation_ratio) + " must be in [0, 1)");
+}
+
+std::string ToString(Status s) {
+  switch (s) {
+    case Status::kOptimal: return "optimal";
+    case Status::kStoppedAtLimit: return "stopped_at_limit";
+    case Status::kInfeasible: return "infeasible";
+    case Status::kNoDesignFound: return "no_design_found";
+  }
+  return "unknown";
+}
+
+std::optional<Status> StatusFromString(const std::string& s) {
+  for (Status v : {Status::kOptimal, Status::kStoppedAtLimit, Status::kInfeasible, Status::kNoDesignFound})
+    if (ToString(v) == s) return v;
+  return std::nullopt;
+}
+
+Project FixDesign(const Project& project, const std::vector<std::pair<std::string, double>>& values) {
+  Project p = project;
+  for (const auto& [name, value] : values) {
+    const auto dot = name.find('.');
+    Component* c = dot == std::string::npos ? nullptr : p.FindComponent(name.substr(0, dot));
+    if (!c) throw InputError("design variable '" + name + "': no such component in the project");
+    Parameter& par = c->parameters[name.substr(dot + 1)];
+    par.nominal = value;
+    par.domain = Domain::Point(value);
+    par.provenance = Provenance::kOptimized;
+    par.note = "highlift optimize";
+    par.design = false;
+  }
+  return p;
+}
+
+std::string Report::BriefReport() const {
+  std::ostringstream o;
+  o << ToString(status) << ": ";
+  if (found) {
+    o << objective << " " << Number(best) << (objective_unit.empty() ? "" : " " + objective_unit) << ", certified >= "
+      << Number(lower_bound) << " (gap " << FormatNumber(gap, 3) << ")";
+  } else {
+    o << message;
+  }
+  o << ", " << boxes << " boxes, " << candidates << " candidate designs in " << FormatNumber(seconds, 3) << " s";
+  return o.str();
+}
+
+std::string Report::FullReport() const {
+  std::ostringstream o;
+  if (!found) {
+    o << message << "\n";
+    if (!infeasibility.empty()) o << "\nWhy:\n" << infeasibility << (infeasibility.back() == '\n' ? "" : "\n");
+    if (!rejections.empty()) {
+      o << "\nCandidate designs were rejected by (first failing check, count):\n";
+      for (const auto& [what, n] : rejections) o << "  " << n << " x " << what << "\n";
+    }
+  } else {
+    o << "Best design (" << message << "):\n";
+    TextTable t({"design variable", "unit", "optimized", "domain", "nominal", "at bound"}, {2, 4});
+    for (const DesignValue& d : design)
+      t.AddRow({d.name, d.unit, Number(d.value), "[" + Number(d.lower) + ", " + Number(d.upper) + "]",
+                std::isfinite(d.nominal) ? Number(d.nominal) : "-", d.at_bound});
+    o << t.ToString();
+    o << "\nObjective " << objective << ": " << Number(best) << " " << objective_unit
+      << " (upper bound over the remaining uncertain parameters); certified lower bound " << Number(lower_bound) << " "
+      << objective_unit << "; relative gap " << FormatNumber(gap, 3) << "\n";
+    if (!mass_terms.empty()) {
+      o << "\nMass by component (kg over the remaining domains, at the best design):\n";
+      TextTable m({"component", "min", "max", "law"}, {1, 2});
+      for (const MassTerm& mt : mass_terms)
+        m.AddRow({mt.component, std::isfinite(mt.lower) ? Number(mt.lower) : "-",
+                  std::isfinite(mt.upper) ? Number(mt.upper) : "-", mt.law});
+      o << m.ToString();
+    }
+    o << "\nWhat limits the design (breaks one step of 1e-4 of the domains towards a smaller " << objective << "):\n";
+    if (active.empty()) o << "  nothing found at that step\n";
+    for (const ActiveConstraint& a : active)
+      o << "  - " << a.label << ": " << a.description << (a.text.empty() ? "" : "\n      " + a.text) << "\n";
+  }
+  o << "\n" << boxes << " boxes (" << pruned << " pruned by the bound, " << infeasible_boxes << " infeasible), "
+    << candidates << " candidate designs checked (" << reduced_model_checks << " through size and peak), "
+    << improvements << " improvements, " << FormatNumber(seconds, 3) << " s\n";
+  return o.str();
+}
+
+nlohmann::json Report::ToJson() const {
+  nlohmann::json j;
+  j["ok"] = found;
+  j["status"] = ToString(status);
+  j["message"] = message;
+  j["objective"] = objective;
+  j["objective_unit"] = objective_unit;
+  j["design_variables"] = design_variables;
+  if (found) {
+    j["best"] = best;
+    j["lower_bound"] = lower_bound;
+    j["gap"] = gap;
+  } else {
+    j["best"] = nullptr;
+    j["lower_bound"] = std::isfinite(lower_bound) ? nlohmann::json(lower_bound) : nlohmann::json(nullptr);
+    j["gap"] = nullptr;
+  }
+  nlohmann::json d = nlohmann::json::array();
+  for (const DesignValue& v : design)
+    d.push_back({{"name", v.name}, {"unit", v.unit}, {"value", v.value}, {"domain", {v.lower, v.upper}},
+                 {"nominal", std::isfinite(v.nominal) ? nlohmann::json(v.nominal) : nlohmann::json(nullptr)},
+                 {"at_bound", v.at_bound}});
+  j["design"] = d;
+  nlohmann::json a = nlohmann::json::array();
+  for (const ActiveConstraint& c : active) a.push_back({{"label", c.label}, {"description", c.description}, {"text", c.text}});
+  j["active_constraints"] = a;
+  nlohmann::json m = nlohmann::json::array();
+  for (const MassTerm& t : mass_terms)
+    m.push_back({{"component", t.component},
+                 {"law", t.law},
+                 {"min", std::isfinite(t.lower) ? nlohmann::json(t.lower) : nlohmann::json(nullptr)},
+                 {"max", std::isfinite(t.upper) ? nlohmann::json(t.upper) : nlohmann::json(nullptr)}});
+  j["mass_terms"] = m;
+  if (!infeasibility.empty()) j["explanation"] = infeasibility;
+  nlohmann::json rej = nlohmann::json::array();
+  for (const auto& [what, n] : rejections) rej.push_back({{"check", what}, {"candidates", n}});
+  j["rejections"] = rej;
+  j["counters"] = {{"boxes", boxes},           {"pruned", pruned},
+                   {"infeasible_boxes", infeasible_boxes}, {"candidates", candidates},
+                   {"reduced_model_checks", reduced_model_checks}, {"improvements", improvements},
+                   {"seconds", seconds}};
+  return j;
+}
+
+Report Optimize(const Project& project, const Options& options) {
+  options.Validate();
+  detail::Optimizer o(project, options);
+  return o.Run();
+}
+
+}  // namespace highlift::optimize

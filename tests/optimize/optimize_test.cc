@@ -1,0 +1,206 @@
+// optimize::Optimize on a small chain with an analytic optimum (a tube of least mass under a
+// torque-capacity and a stiffness requirement), robustness over an uncertain modulus, the
+// options, the statuses and the bad-input messages.
+#include "highlift/optimize/optimize.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "highlift/core/error.h"
+#include "highlift/core/project_io.h"
+
+namespace highlift::optimize {
+namespace {
+
+// PDU -> one titanium tube (2 m) -> wing-tip brake. Design: D in [20, 60] mm, t in [0.5, 4] mm.
+nlohmann::json Chain(const std::string& shear_modulus = "44 GPa") {
+  nlohmann::json j = nlohmann::json::parse(R"json({
+  "format": "highlift-project/1",
+  "name": "one tube",
+  "components": [
+    {"id": "pdu", "type": "pdu", "parameters": {"motor_count": 2, "motor_inertia": "3e-4 kg*m^2",
+      "ratio": 20, "gear_inertia": "0.02 kg*m^2"}},
+    {"id": "shaft_1", "type": "torque_shaft", "labels": {"side": "left"},
+     "parameters": {"length": "2 m",
+                    "outer_diameter": {"value": 40, "min": 20, "max": 60, "unit": "mm", "design": true},
+                    "wall_thickness": {"value": 2, "min": 0.5, "max": 4, "unit": "mm", "design": true},
+                    "density": "4420 kg/m^3", "shear_modulus": "44 GPa", "allowable_shear_stress": "500 MPa"}},
+    {"id": "wtb", "type": "wing_tip_brake", "labels": {"side": "left"}, "parameters": {"inertia": "5e-4 kg*m^2"}}
+  ],
+  "connections": [["pdu.left", "shaft_1.a"], ["shaft_1.b", "wtb.a"]],
+  "requirements": [
+    {"id": "capacity", "expression": "shaft_1.torque_capacity >= 2000 N*m", "description": "ultimate torque"},
+    {"id": "stiffness", "expression": "shaft_1.c >= 5000 N*m/rad", "description": "torsional stiffness"}
+  ]
+})json");
+  j["components"][1]["parameters"]["shear_modulus"] = shear_modulus;
+  return j;
+}
+
+Project Load(const nlohmann::json& j) { return ParseProject(j.dump(), "chain.json"); }
+
+/// The analytic optimum: the mass falls with D for either requirement (thin wall: m ~ 1/D or
+/// 1/D^2), so D is at its upper bound and t the least wall meeting the larger required Ip.
+double AnalyticMass(double G) {
+  const double D = 0.060, L = 2.0, rho = 4420.0, tau = 500e6, T = 2000.0, c = 5000.0;
+  const double Ip = std::max(T * D / (2 * tau), c * L / G);
+  const double d = std::pow(std::pow(D, 4) - 32 * Ip / std::numbers::pi, 0.25);
+  const double t = (D - d) / 2;
+  return rho * std::numbers::pi * (D - t) * t * L;
+}
+
+TEST(Optimize, FindsTheAnalyticLeastMassTubeWithACertifiedGapBelow1e6) {
+  const Report r = Optimize(Load(Chain()));
+  ASSERT_EQ(r.status, Status::kOptimal) << r.BriefReport() << "\n" << r.FullReport();
+  const double m = AnalyticMass(44e9);
+  EXPECT_LE(r.lower_bound, m * (1 + 1e-12)) << r.BriefReport();
+  EXPECT_GE(r.best, m * (1 - 1e-12)) << r.BriefReport();
+  EXPECT_LT(r.gap, 1e-6);
+  ASSERT_EQ(r.design.size(), 2u);
+  EXPECT_EQ(r.design[0].name, "shaft_1.outer_diameter");
+  EXPECT_NEAR(r.design[0].value, 60.0, 1e-3);  // mm
+  EXPECT_EQ(r.design[0].at_bound, "upper");
+  // The stiffness requirement limits the design (the capacity one has slack).
+  bool stiffness = false, capacity = false;
+  for (const ActiveConstraint& a : r.active) {
+    stiffness = stiffness || a.label == "stiffness";
+    capacity = capacity || a.label == "capacity";
+  }
+  EXPECT_TRUE(stiffness) << r.FullReport();
+  EXPECT_FALSE(capacity) << r.FullReport();
+  ASSERT_TRUE(r.design_project);
+  const Parameter& t = r.design_project->FindComponent("shaft_1")->parameters.at("wall_thickness");
+  EXPECT_EQ(t.provenance, Provenance::kOptimized);
+  EXPECT_TRUE(t.domain.is_point());
+}
+
+// The modulus stays an interval: the design must be stiff enough at its least value, 43 GPa.
+TEST(Optimize, IsRobustOverTheRemainingUncertainParameters) {
+  const Report r = Optimize(Load(Chain("[43, 51] GPa")));
+  ASSERT_EQ(r.status, Status::kOptimal) << r.FullReport();
+  const double m = AnalyticMass(43e9);
+  EXPECT_LE(r.lower_bound, m * (1 + 1e-12));
+  EXPECT_GE(r.best, m * (1 - 1e-9));
+  EXPECT_GT(r.best, AnalyticMass(44e9));
+}
+
+TEST(Optimize, DesignOnTheCommandLineAddsToTheMarkedOnes) {
+  nlohmann::json j = Chain();
+  j["components"][1]["parameters"]["outer_diameter"] = "60 mm";  // fixed: t alone
+  Options o;
+  o.design = {"shaft_1.wall_thickness"};  // also marked: counted once
+  const Report r = Optimize(Load(j), o);
+  ASSERT_EQ(r.status, Status::kOptimal);
+  EXPECT_EQ(r.design.size(), 1u);
+  EXPECT_NEAR(r.best, AnalyticMass(44e9), 1e-6 * AnalyticMass(44e9));
+}
+
+TEST(Optimize, ExpressionObjective) {
+  Options o;
+  o.objective = "shaft_1.wall_thickness";
+  const Report r = Optimize(Load(Chain()), o);
+  ASSERT_TRUE(r.found) << r.FullReport();
+  // The thinnest wall: D at its top, the stiffness requirement binding (1.44 mm).
+  const double D = 0.060, d = std::pow(std::pow(D, 4) - 32 * (5000.0 * 2 / 44e9) / std::numbers::pi, 0.25);
+  EXPECT_EQ(r.objective_unit, "mm");
+  EXPECT_NEAR(r.best, 1e3 * (D - d) / 2, 1e-6 * 2);
+}
+
+TEST(Optimize, ProvedInfeasibleWithTheConflictExplained) {
+  nlohmann::json j = Chain();
+  j["requirements"][1]["expression"] = "shaft_1.c >= 1e7 N*m/rad";
+  const Report r = Optimize(Load(j));
+  EXPECT_EQ(r.status, Status::kInfeasible);
+  EXPECT_FALSE(r.found);
+  EXPECT_NE(r.infeasibility.find("stiffness"), std::string::npos) << r.infeasibility;
+}
+
+TEST(Optimize, NoDesignVariableIsAnInputErrorNamingTheRemedy) {
+  nlohmann::json j = Chain();
+  j["components"][1]["parameters"]["outer_diameter"].erase("design");
+  j["components"][1]["parameters"]["wall_thickness"].erase("design");
+  try {
+    Optimize(Load(j));
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("no design variable"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("\"design\": true"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("--design"), std::string::npos) << e.what();
+  }
+}
+
+TEST(Optimize, DesignVariableWithoutDomainOrUnknownIsAnInputError) {
+  Options o;
+  o.design = {"shaft_1.length"};
+  try {
+    Optimize(Load(Chain()), o);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("'shaft_1.length' has no domain"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("\"min\" and \"max\""), std::string::npos) << e.what();
+  }
+  o.design = {"shaft_9.length"};
+  try {
+    Optimize(Load(Chain()), o);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("no component 'shaft_9'"), std::string::npos) << e.what();
+  }
+}
+
+TEST(Optimize, UnboundedObjectiveIsAnInputError) {
+  Options o;
+  o.objective = "1 / (shaft_1.wall_thickness - 2 mm)";
+  try {
+    Optimize(Load(Chain()), o);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("unbounded below"), std::string::npos) << e.what();
+  }
+}
+
+TEST(OptimizeOptions, DefaultsAreValidAndBadOnesNamed) {
+  EXPECT_NO_THROW(Options{}.Validate());
+  Options o;
+  o.relative_gap = -1;
+  try {
+    o.Validate();
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("relative_gap"), std::string::npos);
+  }
+  o = Options{};
+  o.max_boxes = 0;
+  EXPECT_THROW(o.Validate(), InputError);
+}
+
+TEST(OptimizeStatus, RoundTripsToStrings) {
+  for (Status s : {Status::kOptimal, Status::kStoppedAtLimit, Status::kInfeasible, Status::kNoDesignFound})
+    EXPECT_EQ(StatusFromString(ToString(s)), s);
+  EXPECT_FALSE(StatusFromString("nope"));
+}
+
+TEST(Optimize, StopsAtTheBoxLimitWithAnHonestStatus) {
+  Options o;
+  o.max_boxes = 2;
+  const Report r = Optimize(Load(Chain()), o);
+  EXPECT_TRUE(r.status == Status::kStoppedAtLimit || r.status == Status::kNoDesignFound) << r.BriefReport();
+  if (r.found) {
+    EXPECT_LE(r.lower_bound, AnalyticMass(44e9) * (1 + 1e-12));
+  }
+}
+
+TEST(Optimize, DesignFlagRoundTripsThroughTheProjectFile) {
+  const Project p = Load(Chain());
+  EXPECT_TRUE(p.FindComponent("shaft_1")->parameters.at("wall_thickness").design);
+  const Project q = ParseProject(ProjectToJson(p).dump(), "again.json");
+  EXPECT_EQ(DescribeDifference(p, q), "");
+}
+
+}  // namespace
+}  // namespace highlift::optimize
