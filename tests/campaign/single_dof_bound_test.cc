@@ -28,6 +28,7 @@
 #include "highlift/model/component_model.h"
 #include "highlift/reduced_models/analyses.h"
 #include "highlift/reduced_models/sampling.h"
+#include "highlift/sim/simulator.h"
 
 namespace highlift::campaign {
 namespace {
@@ -86,7 +87,7 @@ TEST(SingleDofAgainstTransient, EveryComponentClassOnTheExamplesAtTheNominalAndS
       SCOPED_TRACE(name + (k == 0 ? std::string(" nominal") : " sample " + std::to_string(k)));
       // A sampled point must be a design: the relations the domains cannot express (a brake's
       // static capacity at least its dynamic torque, a lock-out below the end stop) are checked
-      // by building its drive model before any simulation, and a point that breaks one is drawn
+      // by building and assembling its drive model before any simulation, and a point that breaks one is drawn
       // again (counted). The nominal point must be one.
       Project point;
       reduced_models::PeakReport report;
@@ -97,7 +98,8 @@ TEST(SingleDofAgainstTransient, EveryComponentClassOnTheExamplesAtTheNominalAndS
       for (int attempt = 0; attempt < 100 && !design; ++attempt) {
         try {
           point = k == 0 ? base : reduced_models::FixParameters(base, uncertain, sampler.Interior());
-          sim::BuildDriveNetwork(point, sim::DriveNetworkOptions{});
+          const sim::DriveModel model = sim::BuildDriveNetwork(point, sim::DriveNetworkOptions{});
+          const sim::Simulator assembled(model.network);  // the element laws check their relations
           report = reduced_models::AnalysePeaks(point, options);
           design = true;
         } catch (const InputError& e) {
