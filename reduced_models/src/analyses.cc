@@ -678,6 +678,11 @@ std::string PeakReport::FullReport() const {
   out += table.ToString();
   out += "\nWorst case per component (margin: the smallest allowable over the domains against the largest local "
          "torque; no point of the domains has a smaller margin)\n";
+  bool flaps = false;
+  for (const auto& c : cases) flaps = flaps || !c.flap_loads.empty();
+  if (flaps)
+    out += "(an actuator or station limiter whose worst case is a rupture: its back-driven flap stopped on the "
+           "limiter's end stop, w sqrt(c3 J) + back-drive torque, an estimate; docs/reduced_models.md)\n";
   TextTable worst_table({"component", "worst case", "tau_max [N*m]", "upper bound [N*m]", "local torque [N*m]", "allowable",
                          "allowable min [N*m]", "margin"},
                         {2, 3, 4, 6, 7});
