@@ -58,7 +58,7 @@ class CheckCommand : public Command {
       std::cout << JsonText(doc) << "\n";
     } else {
       const report::Verdict verdict = report::DescribeVerdict(doc);
-      std::cout << verdict.headline << "\n\n" << verdict.domains << "\n";
+      std::cout << verdict.headline << "\n" << "scope: " << report::kCheckScope << "\n\n" << verdict.domains << "\n";
       if (!verdict.nominal.empty()) std::cout << verdict.nominal << "\n";
       const std::string explanation = !r.feasible ? r.explanation.text
                                       : r.nominal_checked && !r.nominal_feasible ? r.nominal_explanation.text

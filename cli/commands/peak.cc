@@ -13,6 +13,7 @@
 #include <map>
 
 #include "command.h"
+#include "highlift/campaign/bounds.h"
 #include "highlift/campaign/campaign.h"
 #include "highlift/core/error.h"
 #include "highlift/core/output_file.h"
@@ -47,60 +48,12 @@ struct TransientPeak {
   bool Bound() const;
 };
 
-constexpr double kBoundTolerance = 1e-6;  // relative: simulated torques within this count as at the bound
+bool TransientPeak::Bound() const { return transient <= single_dof * (1.0 + campaign::kBoundTolerance); }
 
-bool TransientPeak::Bound() const { return transient <= single_dof * (1.0 + kBoundTolerance); }
-
-/// A component's single-DOF value beside the largest transient torque of any simulated case, both
-/// at its own speed: the single-DOF value is a bound when the simulation stays at or below it.
-struct ComponentCheck {
-  std::string component;
-  double single_dof = 0;  ///< N*m, nominal, worst over the cases whose load path it is on
-  std::string single_dof_case;
-  double transient = 0;   ///< N*m, largest |torque| over every simulated case
-  std::string transient_case;
-  /// transient / single_dof - 1 when the simulation exceeds the single-DOF value (beyond the
-  /// simulation's torque tolerance), else 0.
-  double exceeded_by = 0;
-  bool bound() const { return exceeded_by <= 0; }
-};
-
-std::vector<ComponentCheck> CompareComponents(const reduced_models::PeakReport& report,
-                                              const std::vector<TransientPeak>& transient) {
-  std::vector<ComponentCheck> out;
-  for (const auto& w : report.worst) {
-    ComponentCheck c;
-    c.component = w.component;
-    c.single_dof = w.local_nominal;
-    c.single_dof_case = w.worst_case;
-    for (const auto& t : transient) {
-      auto it = t.components.find(w.component);
-      if (t.ok && it != t.components.end() && it->second > c.transient) {
-        c.transient = it->second;
-        c.transient_case = t.name;
-      }
-    }
-    if (c.transient > c.single_dof * (1.0 + kBoundTolerance))
-      c.exceeded_by = c.single_dof > 0 ? c.transient / c.single_dof - 1.0 : INFINITY;
-    out.push_back(c);
-  }
+std::vector<campaign::SimulatedCase> Simulated(const std::vector<TransientPeak>& transient) {
+  std::vector<campaign::SimulatedCase> out;
+  for (const auto& t : transient) out.push_back({t.name, t.ok, t.components});
   return out;
-}
-
-/// A gear's element reports the torque at its geared flange (a branch gearbox: the branch); the
-/// single-DOF table gives every component's torque at its input flange: the factor w_geared /
-/// w_input turns the one into the other (power through an ideal gear). 1 for every other
-/// component and for actuators (their element's torque is at their input).
-double InputSideFactor(const Project& project, const std::string& id) {
-  const Component* c = project.FindComponent(id);
-  const ComponentTypeSpec* spec = c ? FindComponentType(c->type) : nullptr;
-  const model::ComponentModel* m = c ? model::FindComponentModel(c->type) : nullptr;
-  if (!spec || !m || m->roles().actuator || !spec->GearedPort() || !spec->FindPort("input")) return 1.0;
-  try {
-    return m->SpeedRatio(*c, "input", spec->GearedPort()->name);
-  } catch (const InputError&) {
-    return 1.0;
-  }
 }
 
 TransientPeak RunCase(const Project& project, const reduced_models::PeakCase& pc, int elements) {
@@ -123,7 +76,7 @@ TransientPeak RunCase(const Project& project, const reduced_models::PeakCase& pc
   t.transient = simulation.load_path_peak.tau;
   t.at = simulation.load_path_peak.element;
   t.time = simulation.load_path_peak.time;
-  for (const auto& p : simulation.components) t.components[p.element] = std::abs(p.tau) * InputSideFactor(project, p.element);
+  t.components = campaign::ComponentTorquesAtInput(project, simulation.components);
   return t;
 }
 
@@ -208,7 +161,7 @@ class PeakCommand : public Command {
                                               " simulations; the transient peaks are incomplete"}};
         }
         nlohmann::json components = nlohmann::json::array();
-        for (const auto& c : CompareComponents(report, transient))
+        for (const auto& c : campaign::CompareWithTransient(report, Simulated(transient)))
           components.push_back({{"component", c.component},
                                  {"single_dof_N_m", c.single_dof},
                                  {"single_dof_case", c.single_dof_case},
@@ -260,14 +213,10 @@ class PeakCommand : public Command {
                      "the single-DOF value:\n";
         TextTable per({"component", "single-DOF", "case", "transient", "case", "single-DOF value"}, {1, 3});
         int exceeded = 0;
-        for (const auto& c : CompareComponents(report, transient)) {
+        for (const auto& c : campaign::CompareWithTransient(report, Simulated(transient))) {
           exceeded += !c.bound();
           per.AddRow({c.component, FormatNumber(c.single_dof, 4), c.single_dof_case, FormatNumber(c.transient, 4),
-                      c.transient_case.empty() ? "-" : c.transient_case,
-                      c.bound() ? "bound"
-                                : "NOT A BOUND: the simulation exceeds it by " +
-                                      (std::isfinite(c.exceeded_by) ? FormatNumber(100.0 * c.exceeded_by, 3) + " %"
-                                                                    : std::string("(no single-DOF load)"))});
+                      c.transient_case.empty() ? "-" : c.transient_case, c.Flag()});
         }
         std::cout << per.ToString();
         if (exceeded) std::cout << exceeded << " component(s) where the single-DOF value is not a bound\n";

@@ -9,6 +9,7 @@
 #include <optional>
 
 #include "graph_model.h"
+#include "laws.h"
 #include "highlift/core/error.h"
 #include "highlift/core/text_table.h"
 #include "highlift/reduced_models/modal.h"
@@ -497,6 +498,29 @@ PeakReport AnalysePeaks(const Project& project, const PeakOptions& options) {
     }
     pc.w_max_bounds = w.ToDomain();
     pc.tau_dynamic.bounds = (w * omega * J).ToDomain();
+    // The back-driven flaps: each actuator beyond the break turns at its station's share of the
+    // rupture speed when the brake stops the shaft; its station limiter, at its end stop with its
+    // brake grounding the input, is the stiffest path to ground (c3 > c1 > c2), so the flap's
+    // kinetic energy 1/2 J_a w_a^2 stored in it gives at most w_a sqrt(c3 J_a) (equation (1) on the
+    // flap's own oscillator), plus the flap's back-drive torque. An estimate: it neglects the energy
+    // the shaft side can feed into the station (docs/reduced_models.md, "Actuators in a rupture").
+    for (int a : part) {
+      const int lim = g.nodes[a].parent;
+      if (!g.IsActuator(a) || lim < 0 || !g.Roles(lim).station_limiter) continue;
+      const Component& limiter = *g.nodes[lim].component;
+      if (!detail::HasValue(limiter, "stiffness_end_stop")) continue;
+      PeakCase::FlapLoad f;
+      f.actuator = g.Id(a);
+      f.limiter = g.Id(lim);
+      const double c3 = detail::NominalValue(limiter, "stiffness_end_stop") * speed_ratio[lim] * speed_ratio[lim];
+      const double back = std::max(0.0, (-(at_nominal.back.tau_in[a] * at_nominal.n[a])).hi);
+      f.torque.nominal = detail::PeakTorque(pc.w_max, c3, at_nominal.J[a].hi) + back;
+      const Interval c3_all = detail::Read<Interval>(limiter, "stiffness_end_stop", bounds.mode) * bounds.n[lim] * bounds.n[lim];
+      const Interval back_all = -(bounds.back.tau_in[a] * bounds.n[a]);
+      const Interval back_pos(std::max(0.0, back_all.lo), std::max(0.0, back_all.hi));
+      f.torque.bounds = (detail::PeakTorque(w, c3_all, bounds.J[a]) + back_pos).ToDomain();
+      pc.flap_loads.push_back(std::move(f));
+    }
     if (options.intervals && options.rank)
       pc.ranking = Rank(g, focus, fm, pc.w_max, singles, [&](const ModeData& one) {
         return rupture_speed(one, true).first.w_max - rupture_speed(one, false).first.w_max;
@@ -533,6 +557,15 @@ PeakReport AnalysePeaks(const Project& project, const PeakOptions& options) {
   // largest local torque.
   std::map<std::string, ComponentPeak> worst;
   for (const auto& pc : report.cases) {
+    for (const auto& f : pc.flap_loads)
+      for (const std::string& id : {f.limiter, f.actuator}) {
+        auto& w = worst[id];
+        if (w.component.empty() || f.torque.bounds.hi > w.torque.bounds.hi) {
+          w.component = id;
+          w.worst_case = pc.name;
+          w.torque = f.torque;
+        }
+      }
     Bounded through = pc.tau_total;  // N*m at the reference speed: what reaches the component
     for (auto id = pc.load_path.rbegin(); id != pc.load_path.rend(); ++id) {
       const int k = g.Find(*id);
@@ -645,6 +678,11 @@ std::string PeakReport::FullReport() const {
   out += table.ToString();
   out += "\nWorst case per component (margin: the smallest allowable over the domains against the largest local "
          "torque; no point of the domains has a smaller margin)\n";
+  bool flaps = false;
+  for (const auto& c : cases) flaps = flaps || !c.flap_loads.empty();
+  if (flaps)
+    out += "(an actuator or station limiter whose worst case is a rupture: its back-driven flap stopped on the "
+           "limiter's end stop, w sqrt(c3 J) + back-drive torque, an estimate; docs/reduced_models.md)\n";
   TextTable worst_table({"component", "worst case", "tau_max [N*m]", "upper bound [N*m]", "local torque [N*m]", "allowable",
                          "allowable min [N*m]", "margin"},
                         {2, 3, 4, 6, 7});
@@ -672,6 +710,12 @@ nlohmann::json PeakReport::ToJson() const {
                           {"stop_limit_N_m", c.stop_limit ? bounded(*c.stop_limit) : nlohmann::json(nullptr)},
                           {"tau_max_N_m", bounded(c.tau_total)}, {"ranking", ranking},
                           {"note", c.note}});
+    if (c.kind != "jam") {
+      nlohmann::json flaps = nlohmann::json::array();
+      for (const auto& f : c.flap_loads)
+        flaps.push_back({{"actuator", f.actuator}, {"limiter", f.limiter}, {"tau_N_m", bounded(f.torque)}});
+      j["cases"].back()["flap_loads"] = flaps;
+    }
   }
   j["worst"] = nlohmann::json::array();
   for (const auto& w : worst)

@@ -42,6 +42,7 @@ nlohmann::json CheckDocument(const Project& project, const icsp::DriveSystemNetw
                         {"physics_constraints", net.physics_constraints},
                         {"requirements", net.requirement_constraints},
                         {"estimation", estimation_brief},
+                        {"scope", kCheckScope},
                         {"parameters", params}};
   if (r.nominal_checked) {
     nlohmann::json nominal = {{"all_requirements_met", r.nominal_feasible}};

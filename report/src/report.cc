@@ -12,6 +12,7 @@
 #include <set>
 #include <thread>
 
+#include "highlift/campaign/bounds.h"
 #include "highlift/campaign/campaign.h"
 #include "highlift/core/catalogue.h"
 #include "highlift/core/error.h"
@@ -458,6 +459,22 @@ DesignReport BuildDesignReport(const Project& project, const Project& estimated,
     cases.push_back(c);
   }
   data["peak_cases"] = cases;
+
+  // Per component: its single-DOF value beside the largest simulated torque of any sizing case,
+  // with the flag of `highlift peak --transient` (campaign::CompareWithTransient, one law).
+  nlohmann::json components = nlohmann::json::array();
+  if (options.transient) {
+    std::vector<campaign::SimulatedCase> simulated;
+    for (const auto& job : jobs)
+      if (job.peak_case)
+        simulated.push_back({job.peak_case->name, job.report.ok() && job.error.empty(),
+                             campaign::ComponentTorquesAtInput(project, job.component_peaks)});
+    for (const auto& c : campaign::CompareWithTransient(peaks, simulated))
+      components.push_back({{"component", c.component}, {"single_dof", Number(c.single_dof)},
+                            {"single_dof_case", c.single_dof_case}, {"transient", Number(c.transient)},
+                            {"transient_case", c.transient_case}, {"bound", c.bound()}, {"flag", c.Flag()}});
+  }
+  data["peak_components"] = components;
 
   // The campaign: envelope over the samples, per case the largest peak over the samples.
   data["campaign"] = nullptr;

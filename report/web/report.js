@@ -368,6 +368,25 @@
       }), [3, 6, 8, 9, 10]));
   }
 
+  // Per component: the single-DOF value beside the largest simulated torque of any sizing case, and
+  // whether the single-DOF value bounds it (`highlift peak --transient`, "transient_components").
+  function renderPeakComponents() {
+    const rows = data.peak_components || [];
+    const box = document.getElementById("peaks-components");
+    if (!rows.length) {
+      box.append(el("p", { class: "hint", text: "No transient simulations in this report: the per-component bound check needs them." }));
+      return;
+    }
+    const exceeded = rows.filter((r) => !r.bound).length;
+    box.append(el("h3", { text: "Single-DOF value against the simulation, per component" }));
+    box.append(el("p", { class: exceeded ? "bad" : "hint", text: exceeded
+      ? exceeded + " component(s) where the simulation exceeds the single-DOF value: there it is NOT A BOUND."
+      : "The single-DOF value bounds the simulated torque of every component." }));
+    box.append(table(["component", "single-DOF [N*m]", "its case", "transient [N*m]", "its case", "single-DOF value"],
+      rows.map((r) => [componentLink(r.component), fmt(r.single_dof), r.single_dof_case, fmt(r.transient), r.transient_case || "\u2013",
+        r.bound ? "bound" : el("span", { class: "bad", text: r.flag })]), [1, 3]));
+  }
+
   // ---------------------------------------------------------------------------------------- campaign
   // The envelope of a design-load campaign (`highlift report --campaign DIR`): per component the
   // largest |torque| of any case and sample beside its capacity, at the component's own speed.
@@ -451,7 +470,7 @@
       "Plots: uPlot (MIT licence), inlined; this file refers to nothing outside itself.";
   }
 
-  const sections = [renderSummary, renderArchitecture, renderComponents, renderSizing, renderModes, renderPeaks, renderCampaign, renderScenarios, renderFooter];
+  const sections = [renderSummary, renderArchitecture, renderComponents, renderSizing, renderModes, renderPeaks, renderPeakComponents, renderCampaign, renderScenarios, renderFooter];
   for (const render of sections) {
     try { render(); } catch (e) { state.errors.push(render.name + ": " + e.message); console.error(render.name, e); }
   }

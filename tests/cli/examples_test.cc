@@ -6,6 +6,7 @@
 #include <map>
 #include <regex>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -263,8 +264,9 @@ namespace {
 // ground (docs/reduced_models.md, "The station torque limiter in a jam"), `size` and `peak` find
 // that the examples' limiter brakes (2 x the lock-out torque) cannot ground what the drive puts
 // into a jammed station: `size` flags max_brake_torque, `peak` the actuators' margins (the
-// simulation agrees: 563-730 N*m at the A380-class actuator inputs against 278 N*m). Pinned here
-// until the examples are re-sized (README's table).
+// simulation agrees: 563-730 N*m at the A380-class actuator inputs against 278 N*m), and the flaps
+// back-driven in a rupture load the actuators beyond any allowable in domain.md's ranges (README's
+// table: a physical conflict of back-drivable actuators, not a setting). check states its scope.
 TEST(Examples, CheckPassesButSizeAndPeakFlagTheStationLimitersThatCannotGroundAJam) {
   struct Expected {
     std::string file;
@@ -290,6 +292,10 @@ TEST(Examples, CheckPassesButSizeAndPeakFlagTheStationLimitersThatCannotGroundAJ
     if (e.check == 0) {
       EXPECT_NE(check.out.find("the nominal design meets all"), std::string::npos) << check.out;
     }
+    // Its verdict is on the project's requirements, and it says so: the margins are size's and peak's.
+    EXPECT_NE(check.out.find("scope: the project's requirements over the parameter domains; component margins"),
+              std::string::npos)
+        << check.out;
     const auto peak = RunCli({"peak", e.file, "--json"});
     EXPECT_EQ(peak.exit_code, e.peak) << peak.err;
     const nlohmann::json j = nlohmann::json::parse(peak.out);
@@ -323,9 +329,21 @@ namespace {
 // which carries both wings) the row says so and by how much; and `peak` gives the actuators the
 // verdict the simulation gives them against the same allowable. (The hydraulic example shares the
 // A380-class transmission; the 16 sampled points per example are not run here: see the report.)
+// Each example's peak --transient: every actuator and station limiter row is a bound of the
+// simulation (jams at the end-stop law of the limiter, ruptures at the flap stopped on the
+// limiter's end stop: docs/reduced_models.md), every row's flag matches its numbers, and peak and
+// the simulation give the same verdict on the actuators. The sampled points are
+// campaign.single_dof_against_transient (tests/campaign/single_dof_bound_test.cc). Under
+// AddressSanitizer the smallest example only (the 36 simulations of the A380-class example took
+// 333 s there; the same code path).
 TEST(Examples, PeakBoundsTheSimulatedActuatorAndLimiterLoadsAndSaysWhereItIsNoBound) {
-  for (const char* file : {"examples/a380_class_flaps.json", "examples/a320_class_flaps.json",
-                           "examples/a320_class_slats.json"}) {
+#if defined(__SANITIZE_ADDRESS__)
+  const std::vector<const char*> files = {"examples/a320_class_flaps.json"};
+#else
+  const std::vector<const char*> files = {"examples/a380_class_flaps.json", "examples/a320_class_flaps.json",
+                                          "examples/a320_class_slats.json"};
+#endif
+  for (const char* file : files) {
     SCOPED_TRACE(file);
     const auto peak = RunCli({"peak", file, "--transient", "--json", "--tightness", "0"});
     ASSERT_EQ(peak.exit_code, 1) << peak.err;  // the actuators' margins (README)
@@ -343,15 +361,10 @@ TEST(Examples, PeakBoundsTheSimulatedActuatorAndLimiterLoadsAndSaysWhereItIsNoBo
         ++not_bound;
         EXPECT_NEAR(c.at("exceeded_by").get<double>(), transient / single_dof - 1.0, 1e-9);
       }
-      // Measured: bounded on both flap examples; on the slats the simulated actuator torque in a
-      // jam (about 1017 N*m at every station) exceeds the single-DOF value (290-442 N*m), and the
-      // row says so (open: issue 26 item 3).
-      const bool slats = std::string(file) == "examples/a320_class_slats.json";
       if (id.rfind("gra_", 0) == 0) {
         ++actuators;
-        if (!slats) {
-          EXPECT_TRUE(bound) << single_dof << " < " << transient;
-        }
+        // Before the slats' load inertia reached the simulation, 1017 N*m here against 290-442.
+        EXPECT_TRUE(bound) << single_dof << " < " << transient;
         EXPECT_GT(transient, 0.0);
         // The same verdict: the simulated torque against the allowable the margin uses.
         const double allowable = worst.at(id).at("allowable_N_m").get<double>();
@@ -359,16 +372,18 @@ TEST(Examples, PeakBoundsTheSimulatedActuatorAndLimiterLoadsAndSaysWhereItIsNoBo
         EXPECT_EQ(margin < 0, transient > allowable) << "peak margin " << margin << ", simulated " << transient
                                                      << " against " << allowable;
       }
-      if (id.rfind("stl_", 0) == 0 && worst.at(id).at("worst_case").get<std::string>().rfind("jam_", 0) == 0 &&
-          id != "stl_left" && id != "stl_right") {
+      if (id.rfind("stl_", 0) == 0 && id != "stl_left" && id != "stl_right") {
         ++limiters;
-        if (!slats) {
-          EXPECT_TRUE(bound) << single_dof << " < " << transient;
-        }
+        EXPECT_TRUE(bound) << single_dof << " < " << transient;
       }
     }
     EXPECT_GT(actuators, 0);
     EXPECT_GT(limiters, 0);
+    // Every rupture case loads the actuators beyond its break.
+    for (const auto& c : j.at("cases"))
+      if (c.at("kind") == "rupture") {
+        EXPECT_FALSE(c.at("flap_loads").empty()) << c.at("name");
+      }
     // Each case row says whether its single-DOF value bounds its simulation.
     int cases_not_bound = 0;
     for (const auto& t : j.at("transient")) {

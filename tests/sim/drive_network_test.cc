@@ -149,6 +149,28 @@ TEST(DriveNetwork, ScenarioPartsRuptureAndJam) {
   EXPECT_EQ(jam.network.Find("gra_l1.jam"), nullptr);
 }
 
+// Regression (issue 26, item 3): the A320-class slats give each actuator's load_inertia only as
+// an interval, [1e-4, 2e-3] kg*m^2. The reduced models (peak) count such a parameter at the
+// middle of its domain; the drive model dropped it (J_load = 0), so a jammed slat actuator
+// stopped its input inertia alone on the jam's damper and reported 1017 N*m at its input against
+// 290-442 N*m of peak. Both now read the same value.
+TEST(DriveNetwork, AnActuatorLoadInertiaGivenAsAnIntervalCountsAtItsMiddleAsInThePeakAnalysis) {
+  const Project slats = LoadProject(std::string(HIGHLIFT_SOURCE_DIR) + "/examples/a320_class_slats.json");
+  const Parameter& given = slats.FindComponent("gra_l1")->parameters.at("load_inertia");
+  ASSERT_FALSE(given.nominal.has_value());
+  ASSERT_DOUBLE_EQ(given.domain.lo, 1e-4);
+  ASSERT_DOUBLE_EQ(given.domain.hi, 2e-3);
+  for (const char* scenario : {"extension", "jam_l1"}) {
+    const DriveModel m = BuildDriveNetwork(slats, {.scenario = scenario});
+    const NetworkElement* gra = m.network.Find("gra_l1");
+    ASSERT_NE(gra, nullptr);
+    EXPECT_DOUBLE_EQ(gra->parameters.scalars.at("J_load"), 0.5 * (1e-4 + 2e-3)) << scenario;
+  }
+  // A catalogue default domain is no value: the A380-class actuators give their own.
+  const DriveModel a380 = BuildDriveNetwork(Example(), {.scenario = "extension"});
+  EXPECT_DOUBLE_EQ(a380.network.Find("gra_l1")->parameters.scalars.at("J_load"), 0.0388);
+}
+
 TEST(DriveNetwork, ReducedModelLumpsChainsBetweenGearboxes) {
   const DriveModel full = BuildDriveNetwork(Example(), {.scenario = "extension"});
   const DriveModel reduced =

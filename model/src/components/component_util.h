@@ -13,11 +13,19 @@ namespace highlift::model::components {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
-/// The nominal value of a parameter, when it has one.
+/// The value of an optional parameter for the drive model: its nominal value, else the middle of
+/// a domain the project gives (not a catalogue default), the rule of the reduced models
+/// (reduced_models NominalValue) and of the reports, so that the simulation and `peak` read the
+/// same value: an A320-class slat's load_inertia given only as [1e-4, 2e-3] kg*m^2 counts as
+/// 1.05e-3 in both (it was 0 in the simulation, which then stopped the jammed actuator's input
+/// alone). A required parameter still needs a value (Require).
 inline std::optional<double> Value(const Component& c, const std::string& name) {
   auto it = c.parameters.find(name);
   if (it == c.parameters.end()) return std::nullopt;
-  return it->second.nominal;
+  const Parameter& p = it->second;
+  if (p.nominal) return p.nominal;
+  if (p.provenance != Provenance::kDefault && p.domain.bounded() && !p.domain.empty()) return p.domain.mid();
+  return std::nullopt;
 }
 
 inline double ValueOr(const Component& c, const std::string& name, double fallback) {

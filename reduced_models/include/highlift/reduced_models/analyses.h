@@ -80,6 +80,16 @@ struct PeakCase {
   Bounded tau_total;       ///< N*m, tau_dynamic + tau_static, at most stop_limit
   std::vector<ParameterShare> ranking;  ///< by share of the tau_dynamic width, largest first
   std::string note;
+  /// A rupture: each back-driven actuator beyond the break, stopped through its station torque
+  /// limiter (docs/reduced_models.md, "Actuators in a rupture"): the flap's kinetic energy at the
+  /// rupture speed into the limiter's end-stop stiffness plus its back-drive torque, N*m at the
+  /// reference (shaft) speed, nominal and over the domains. The actuator and its limiter carry it.
+  struct FlapLoad {
+    std::string actuator;
+    std::string limiter;
+    Bounded torque;
+  };
+  std::vector<FlapLoad> flap_loads;
 };
 
 struct ComponentPeak {

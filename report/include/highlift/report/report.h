@@ -107,6 +107,14 @@ struct Verdict {
 };
 Verdict DescribeVerdict(const nlohmann::json& check_document);
 
+/// What `highlift check` decides, printed with its verdict and in its JSON ("scope"): the
+/// project's requirements over the parameter domains. The component margins (allowables against
+/// the steady and peak loads, the station limiter's setting rules) are `size` and `peak`, which
+/// may exit 1 where check exits 0.
+inline constexpr const char* kCheckScope =
+    "the project's requirements over the parameter domains; component margins against their allowables and the "
+    "setting rules are `highlift size` and `highlift peak` (they may fail where check passes)";
+
 /// Requirement labels of the constraints of an explanation's conflict.
 std::vector<std::string> ConflictLabels(const icsp::DriveSystemNetwork& net, const icsp::Explanation& explanation);
 
