@@ -185,7 +185,7 @@ std::string CampaignSummary::BriefReport() const {
                     std::to_string(runs_total - runs_done) + " run(s) left to do; run the same command again to resume)"
               : complete() ? "" : " (incomplete: run the same command again to resume)")
       << ", " << failures << " failed, "
-      << rejected_draws << " sampled draw(s) rejected for breaking a parameter relation";
+      << rejected_draws << " sampled draw(s) rejected (a parameter relation or, with --feasible, a requirement broken)";
   if (not_passive != 0)
     out << ", " << (not_passive < 0 ? std::string("negative dissipation not recorded")
                                     : std::to_string(not_passive) + " with negative dissipation");

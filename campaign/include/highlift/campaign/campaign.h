@@ -334,7 +334,7 @@ struct CampaignSummary {
   /// Runs in which an element's dissipated power fell below zero (the simulator's passivity
   /// monitor); -1 when the file predates the monitor.
   int not_passive = 0;
-  int rejected_draws = 0;      ///< sampled draws rejected for breaking a parameter relation
+  int rejected_draws = 0;      ///< sampled draws rejected for breaking a parameter relation or (--feasible) a requirement
   int cases = 0;
   int samples_per_case = 0;
   std::vector<std::string> parameters;
