@@ -13,8 +13,10 @@
 #include "highlift/campaign/campaign.h"
 #include "highlift/core/catalogue.h"
 #include "highlift/core/error.h"
+#include "highlift/core/message_number.h"
 #include "highlift/core/project_io.h"
 #include "highlift/core/text_table.h"
+#include "highlift/icsp/drive_system.h"
 #include "highlift/reduced_models/analyses.h"
 #include "internal.h"
 
@@ -88,6 +90,10 @@ void CampaignOptions::Validate() const {
   if (max_steps_per_output < 1 || max_events < 1)
     throw InputError("the run limits must be >= 1 (max_steps_per_output " + std::to_string(max_steps_per_output) +
                      ", max_events " + std::to_string(max_events) + ")");
+  if (!(relative_tolerance == 0.0 || (relative_tolerance >= 1e-12 && relative_tolerance < 1)))
+    throw InputError("--rtol " + FormatMessageNumber(relative_tolerance) +
+                     " is out of range: give a relative tolerance from 1e-12 to below 1 (e.g. 1e-6), or leave it out "
+                     "for the project's settings.relative_tolerance");
   for (const auto& p : case_patterns)
     if (p.empty()) throw InputError("--cases holds an empty pattern; give patterns such as 'jam_*,rupture_shaft_l1'");
 }
@@ -232,8 +238,9 @@ std::vector<SampledParameter> UncertainParameters(const Project& project) {
 /// x in [0, 1) from the top 53 bits.
 double Unit(std::uint64_t bits) { return static_cast<double>(bits >> 11) * 0x1.0p-53; }
 
-double FromUnit(const SampledParameter& p, double u) {
-  double v = p.domain.lo + u * (p.domain.hi - p.domain.lo);
+double FromUnit(const SampledParameter& p, double u, const Domain* narrowed = nullptr) {
+  const Domain& d = narrowed ? *narrowed : p.domain;
+  double v = d.lo + u * (d.hi - d.lo);
   if (p.integer) v = std::round(v);
   return std::clamp(v, p.domain.lo, p.domain.hi);
 }
@@ -272,6 +279,80 @@ std::vector<SampleRelation> SampleRelations(const Project& project, const std::v
 
 }  // namespace
 
+/// --feasible: the project's interval constraint network (icsp::BuildDriveSystemNetwork: its
+/// physics and requirements), the variable of every plan parameter, and the box in which every
+/// parameter that is not a plan parameter is fixed at its nominal value (a campaign run keeps
+/// them there), propagated to its fixed point: the sampled parameters' domains narrowed by the
+/// requirements. Propagation never removes a point that satisfies the constraints, so drawing
+/// from the narrowed domains loses no feasible point.
+struct FeasibleSet {
+  icsp::DriveSystemNetwork network;
+  std::vector<int> variable;      ///< per plan parameter: its variable (-1: not in the network)
+  icsp::Box base;                 ///< the others fixed, propagated
+  std::vector<Domain> narrowed;   ///< per plan parameter: its domain within `base`
+};
+
+namespace {
+
+std::shared_ptr<const FeasibleSet> MakeFeasibleSet(const Project& project, const std::vector<SampledParameter>& parameters,
+                                                   int corner_count) {
+  auto set = std::make_shared<FeasibleSet>();
+  set->network = icsp::BuildDriveSystemNetwork(project);
+  const icsp::Network& net = set->network.network;
+  set->base = net.InitialBox();
+  std::set<int> planned;
+  for (const SampledParameter& p : parameters) {
+    const int v = net.FindVariable(p.Name()).value;
+    set->variable.push_back(v);
+    if (v >= 0) planned.insert(v);
+  }
+  for (const auto& [v, value] : set->network.nominal) {
+    icsp::Interval& x = set->base[static_cast<std::size_t>(v)];
+    if (planned.count(v) || icsp::IsEmpty(x) || value < x.lower() || value > x.upper()) continue;
+    x = icsp::Interval(value, value);
+  }
+  // Corner parameters take the corners' values, not draws: their whole domains stay.
+  icsp::PropagationOptions options;
+  options.record_reasons = false;
+  icsp::Propagator propagator(net, options);
+  const icsp::PropagationReport report = propagator.Propagate(set->base);
+  if (report.status == icsp::Status::kInfeasible)
+    throw InputError("--feasible: no point of the sampled parameters' domains can meet the project's requirements with "
+                     "the other parameters at their values (propagation proves it); `highlift check` explains which "
+                     "requirements conflict. Leave out --feasible, or widen the domains");
+  for (std::size_t k = 0; k < parameters.size(); ++k) {
+    Domain d = parameters[k].domain;
+    const int v = set->variable[k];
+    if (v >= 0 && static_cast<int>(k) >= corner_count) {
+      const icsp::Interval& x = set->base[static_cast<std::size_t>(v)];
+      d.lo = std::max(d.lo, x.lower());
+      d.hi = std::min(d.hi, x.upper());
+      if (!(d.lo <= d.hi)) d = parameters[k].domain;  // cannot happen after a non-empty fixed point
+    }
+    set->narrowed.push_back(d);
+  }
+  return set;
+}
+
+}  // namespace
+
+bool Plan::SatisfiesRequirements(const std::vector<double>& values) const {
+  if (!feasible) return true;
+  icsp::Box box = feasible->base;
+  for (std::size_t k = 0; k < values.size(); ++k) {
+    const int v = feasible->variable[k];
+    if (v < 0) continue;
+    icsp::Interval& x = box[static_cast<std::size_t>(v)];
+    // A value outside the narrowed domain is proved infeasible already.
+    if (icsp::IsEmpty(x) || values[k] < x.lower() || values[k] > x.upper()) return false;
+    x = icsp::Interval(values[k], values[k]);
+  }
+  icsp::PropagationOptions options;
+  options.record_reasons = false;
+  icsp::Propagator propagator(feasible->network.network, options);
+  return propagator.Propagate(box).status != icsp::Status::kInfeasible;
+}
+
 Sample Plan::SampleOf(int run) const {
   const CampaignCase& c = cases.at(static_cast<std::size_t>(CaseOf(run)));
   Sample s;
@@ -299,6 +380,7 @@ Sample Plan::SampleOf(int run) const {
   const std::size_t first = static_cast<std::size_t>(corner_count);
   const std::size_t dimension = parameters.size() - first;
   const std::uint64_t case_seed = detail::Hash64(std::to_string(options.seed) + "\n" + c.name);
+  const auto narrowed = [this](std::size_t k) { return feasible ? &feasible->narrowed[k] : nullptr; };
   if (options.sampling == SamplingMethod::kSobol) {
     s.label = "sobol " + std::to_string(n);
     boost::random::sobol sobol(dimension);
@@ -306,7 +388,7 @@ Sample Plan::SampleOf(int run) const {
     for (std::size_t j = 0; j < dimension; ++j) {
       // Digital shift (XOR with per-case random bits) keeps the net property of the sequence.
       const std::uint64_t shift = detail::SplitMix64(case_seed + 0x9e3779b97f4a7c15ULL * (j + 1));
-      s.values[first + j] = FromUnit(parameters[first + j], Unit(sobol() ^ shift));
+      s.values[first + j] = FromUnit(parameters[first + j], Unit(sobol() ^ shift), narrowed(first + j));
     }
   } else {
     s.label = "lhs " + std::to_string(n);
@@ -322,12 +404,15 @@ Sample Plan::SampleOf(int run) const {
       }
       const std::uint64_t jitter = detail::SplitMix64(case_seed ^ detail::SplitMix64((j + 1) * 1000003ULL + static_cast<std::uint64_t>(n)));
       const double u = (order[static_cast<std::size_t>(n)] + Unit(jitter)) / strata;
-      s.values[first + j] = FromUnit(parameters[first + j], u);
+      s.values[first + j] = FromUnit(parameters[first + j], u, narrowed(first + j));
     }
   }
   // Draws that break a parameter relation are rejected: the sampled parameters of the broken
   // relations are drawn again, uniformly, from a stream of (case, point, attempt, parameter)
-  // only; the other coordinates keep their quasi-random values.
+  // only; the other coordinates keep their quasi-random values. With --feasible, a point that
+  // satisfies the relations but whose propagation proves a requirement violated is rejected
+  // whole: every sampled parameter is drawn again, uniformly over its narrowed domain (so the
+  // accepted redraws are uniform over the points the propagation cannot exclude).
   for (int attempt = 1; attempt <= kMaxDraws; ++attempt) {
     std::set<int> redraw;
     for (const SampleRelation& r : relations) {
@@ -335,6 +420,8 @@ Sample Plan::SampleOf(int run) const {
       for (int k : {r.value_index, r.bound_index})
         if (k >= corner_count) redraw.insert(k);
     }
+    if (redraw.empty() && !SatisfiesRequirements(s.values))
+      for (int k = corner_count; k < static_cast<int>(parameters.size()); ++k) redraw.insert(k);
     if (redraw.empty()) break;
     ++s.rejected;
     for (int k : redraw) {
@@ -342,7 +429,8 @@ Sample Plan::SampleOf(int run) const {
           case_seed ^ detail::SplitMix64(0x51afd7ed558ccd1dULL * static_cast<std::uint64_t>(attempt) +
                                          0x9e3779b97f4a7c15ULL * static_cast<std::uint64_t>(k + 1) +
                                          static_cast<std::uint64_t>(n)));
-      s.values[static_cast<std::size_t>(k)] = FromUnit(parameters[static_cast<std::size_t>(k)], Unit(bits));
+      s.values[static_cast<std::size_t>(k)] =
+          FromUnit(parameters[static_cast<std::size_t>(k)], Unit(bits), narrowed(static_cast<std::size_t>(k)));
     }
   }
   if (s.rejected > 0)
@@ -435,12 +523,22 @@ Plan MakePlan(const Project& project, const CampaignOptions& options) {
                      " sample(s) = " + std::to_string(runs) + " runs, beyond the limit of " + std::to_string(CampaignOptions::kMaxRuns) +
                      " runs of a campaign: lower --samples (or name fewer --corners), or select fewer cases with --cases");
   if (options.samples > 0) plan.relations = SampleRelations(project, plan.parameters);
+  if (options.feasible) {
+    if (options.samples == 0)
+      throw InputError("--feasible applies to the quasi-random points of --samples (the nominal point and --corners "
+                       "are the user's choice): give --samples N");
+    plan.feasible = MakeFeasibleSet(project, plan.parameters, plan.corner_count);
+  }
 
   plan.project_hash = ProjectHash(project);
   std::string identity = plan.project_hash + "\nmodel " + sim::ToString(options.model) + "\nelements " +
                          std::to_string(options.shaft_elements) + "\nsamples " + std::to_string(options.samples) +
                          "\nseed " + std::to_string(options.seed) + "\nsampling " + ToString(options.sampling) +
                          "\nlimits " + std::to_string(options.max_steps_per_output) + " " + std::to_string(options.max_events);
+  // Only a tolerance other than the project's enters the identity (campaigns from before --rtol
+  // keep theirs); the project's own tolerance is part of the project hash.
+  if (options.feasible) identity += "\nfeasible";
+  if (options.relative_tolerance > 0) identity += "\nrtol " + nlohmann::json(options.relative_tolerance).dump();
   for (const auto& c : plan.cases) identity += "\ncase " + c.name;
   for (const auto& p : plan.parameters) identity += "\nparameter " + p.Name();
   identity += "\ncorners " + std::to_string(plan.corner_count);

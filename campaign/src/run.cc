@@ -44,6 +44,7 @@ CaseSimulation SimulateCase(const Project& project, const Scenario& scenario, co
     run.output_interval = (run.stop_time - run.start_time) / CampaignOptions::kRowsPerRun;
     run.max_steps_per_output = limits->max_steps_per_output;
     run.max_events = limits->max_events;
+    if (limits->relative_tolerance > 0) run.relative_tolerance = limits->relative_tolerance;
   }
   CaseSimulation out;
   out.build_seconds = Seconds(start);

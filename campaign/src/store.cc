@@ -215,6 +215,17 @@ FileIdentity ReadIdentity(sqlite::Connection& connection) {
   id.project_name = Get(connection, "project_name");
   id.project_hash = Get(connection, "project_hash");
   id.model = Get(connection, "model");
+  {
+    sqlite::Statement s(connection, "SELECT value FROM campaign WHERE key = 'relative_tolerance'");
+    if (s.Step()) {
+      const std::string text = s.Text(0);
+      char* end = nullptr;
+      id.relative_tolerance = std::strtod(text.c_str(), &end);
+      if (end == text.c_str() || *end != '\0' || !(id.relative_tolerance > 0 && id.relative_tolerance < 1))
+        throw InputError("'" + connection.file() + "' is damaged: its 'relative_tolerance' is '" + CleanText(text, 80) +
+                         "', not a number in (0, 1); run the campaign again into a new --out directory");
+    }
+  }
   const int format = GetInteger(connection, "format");
   if (format != kFormat)
     throw InputError("'" + connection.file() + "' has result format " + std::to_string(format) + "; this highlift reads format " +
@@ -267,6 +278,10 @@ ResultStore::ResultStore(const std::filesystem::path& file, const Project& proje
     Put(put, "samples_per_case", std::to_string(plan.samples_per_case));
     Put(put, "seed", std::to_string(plan.options.seed));
     Put(put, "sampling", ToString(plan.options.sampling));
+    Put(put, "relative_tolerance",  // shortest text that reads back exactly
+        nlohmann::json(plan.options.relative_tolerance > 0 ? plan.options.relative_tolerance
+                                                           : project.settings.relative_tolerance)
+            .dump());
     sqlite::Statement add_case(c, "INSERT INTO cases VALUES(?, ?, ?, ?, ?)");
     for (std::size_t i = 0; i < plan.cases.size(); ++i) {
       const CampaignCase& k = plan.cases[i];

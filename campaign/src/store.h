@@ -1,7 +1,8 @@
 // The result file of a campaign (or of one shard): SQLite in WAL mode, one transaction per run.
 //
 //   campaign(key, value)       campaign_id, project_name, project_hash, model, shard_index,
-//                              shard_count, runs_total, samples_per_case, format
+//                              shard_count, runs_total, samples_per_case, format,
+//                              relative_tolerance (absent in files from before --rtol)
 //   cases(case_index, name, kind, component, load_case)
 //   parameters(parameter_index, name, nominal, lo, hi)
 //   capacities(component, name, capacity)            nominal design, from reduced_models
@@ -37,6 +38,7 @@ struct FileIdentity {
   std::string project_name;
   std::string project_hash;
   std::string model;
+  double relative_tolerance = 0.0;  ///< of every run; 0: not recorded (a file from before --rtol)
   Shard shard;
   int runs_total = 0;  ///< of the whole campaign
   int samples_per_case = 0;

@@ -44,6 +44,7 @@ CampaignSummary LoadSummary(const std::filesystem::path& file_or_directory) {
   s.project_name = id.project_name;
   s.project_hash = id.project_hash;
   s.model = id.model;
+  s.relative_tolerance = id.relative_tolerance;
   s.shard = id.shard.ToString();
   s.runs_total = detail::RunsInShard(id.runs_total, id.shard);
   s.samples_per_case = id.samples_per_case;
@@ -191,7 +192,7 @@ std::string CampaignSummary::BriefReport() const {
                     std::to_string(runs_total - runs_done) + " run(s) left to do; run the same command again to resume)"
               : complete() ? "" : " (incomplete: run the same command again to resume)")
       << ", " << failures << " failed, "
-      << rejected_draws << " sampled draw(s) rejected for breaking a parameter relation";
+      << rejected_draws << " sampled draw(s) rejected (a parameter relation or, with --feasible, a requirement broken)";
   if (not_passive != 0)
     out << ", " << (not_passive < 0 ? std::string("negative dissipation not recorded")
                                     : std::to_string(not_passive) + " with negative dissipation");
@@ -209,6 +210,7 @@ std::string CampaignSummary::FullReport() const {
   std::ostringstream out;
   out << "Campaign " << campaign_id << ": project '" << project_name << "' (hash " << project_hash << "), " << model
       << " model, " << cases << " case(s) x " << samples_per_case << " sample(s)";
+  if (relative_tolerance > 0) out << ", rtol " << FormatNumber(relative_tolerance, 3);
   if (shard != "0/1") out << ", shard " << shard;
   out << "\nresult file: " << file.string() << "\n";
   if (!parameters.empty()) {
@@ -250,7 +252,9 @@ std::string CampaignSummary::FullReport() const {
 
 nlohmann::json CampaignSummary::ToJson() const {
   nlohmann::json j = {{"campaign_id", campaign_id}, {"project", project_name}, {"project_hash", project_hash},
-                      {"model", model},            {"shard", shard},          {"file", file.string()},
+                      {"model", model},
+                      {"relative_tolerance", relative_tolerance > 0 ? nlohmann::json(relative_tolerance) : nlohmann::json(nullptr)},
+                      {"shard", shard},          {"file", file.string()},
                       {"runs_total", runs_total},  {"runs_done", runs_done}, {"failures", failures},
                       {"not_passive", not_passive >= 0 ? nlohmann::json(not_passive) : nlohmann::json(nullptr)},
                       {"rejected_draws", rejected_draws},

@@ -1,6 +1,6 @@
 // `highlift campaign PROJECT [--out DIR] [--cases PATTERNS] [--corners PARAMS] [--samples N
-// [--seed S] [--sampling sobol|lhs] [--vary PARAMS]] [--model full|reduced] [--jobs N]
-// [--shard I/N] [--json]`: the design-load campaign (every jam, rupture and scenario of the
+// [--seed S] [--sampling sobol|lhs] [--vary PARAMS] [--feasible]] [--model full|reduced] [--jobs N]
+// [--rtol R] [--shard I/N] [--json]`: the design-load campaign (every jam, rupture and scenario of the
 // project over samples of the parameter domains), results in DIR/campaign.sqlite, committed run
 // by run (the same command resumes a killed campaign).
 // `highlift campaign summary DIR [--json]`: the envelope of a result file.
@@ -15,6 +15,7 @@
 #include "highlift/campaign/campaign.h"
 #include "highlift/core/error.h"
 #include "highlift/core/project_io.h"
+#include "highlift/core/text_table.h"
 #include "highlift/core/validate.h"
 
 namespace highlift::cli {
@@ -49,6 +50,9 @@ class CampaignCommand : public Command {
                    "quasi-random points per case over the parameter domains (default 0; at most " +
                        std::to_string(campaign::CampaignOptions::kMaxSamples) + ")");
     app.add_option("--seed", options_.seed, "seed of the quasi-random points (default 1)");
+    app.add_flag("--feasible", options_.feasible,
+                 "draw only points that the project's requirements allow (the constraint network of check; "
+                 "a point it proves infeasible is drawn again, counted as a rejected draw)");
     app.add_option("--sampling", sampling_, "sobol (default) or lhs (Latin hypercube)");
     app.add_option("--vary", options_.vary,
                    "the parameters --samples varies, comma-separated (default: every parameter with a min and max)")
@@ -58,6 +62,9 @@ class CampaignCommand : public Command {
                    "spring-dampers per torque shaft in the full model (default: the project's, at least 4; 1 to " +
                        std::to_string(sim::DriveNetworkOptions::kMaxShaftElements) + ", as for simulate)")
         ->check(NumberIn(1, sim::DriveNetworkOptions::kMaxShaftElements));
+    app.add_option("--rtol", options_.relative_tolerance,
+                   "relative tolerance of the simulator in every run (default: the project's "
+                   "settings.relative_tolerance; docs/validation.md: envelope against tolerance)");
     app.add_option("--jobs", jobs_, "threads (default: every core)");
     app.add_option("--shard", shard_,
                    "run part I of N (0 <= I < N) into DIR/campaign-shard-I-of-N.sqlite (default inside a Slurm job "
@@ -105,7 +112,11 @@ class CampaignCommand : public Command {
     run.progress = &std::cerr;
     run.progress_is_terminal = isatty(STDERR_FILENO) != 0;
     std::cerr << "highlift campaign: " << plan.cases.size() << " case(s) x " << plan.samples_per_case << " sample(s) = "
-              << plan.runs() << " runs (" << sim::ToString(options_.model) << " model, campaign " << plan.campaign_id
+              << plan.runs() << " runs (" << sim::ToString(options_.model) << " model, rtol "
+              << FormatNumber(options_.relative_tolerance > 0 ? options_.relative_tolerance
+                                                              : project.settings.relative_tolerance,
+                              3)
+              << ", campaign " << plan.campaign_id
               << ")" << (run.shard.whole() ? "" : ", shard " + run.shard.ToString()) << " -> "
               << campaign::ResultFile(run.directory, run.shard).string() << "\n";
     const campaign::CampaignReport report = campaign::RunCampaign(project, plan, run);

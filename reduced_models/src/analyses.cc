@@ -7,6 +7,7 @@
 #include <iterator>
 #include <numbers>
 #include <optional>
+#include <set>
 
 #include "graph_model.h"
 #include "laws.h"
@@ -485,7 +486,10 @@ PeakReport AnalysePeaks(const Project& project, const PeakOptions& options) {
     pc.first_mode_share = fm.oscillator.first_mode_share;
     pc.tau_dynamic.nominal = PeakTorque(pc.w_max, fm.oscillator);
     pc.note = "static part: airload back-drive torque through the aiding efficiencies, friction neglected; the brake "
-              "stops the part as a rigid stop until the shaft torque reaches what it can pass, where it slips";
+              "stops the part as a rigid stop until the shaft torque reaches what it can pass, where it slips; "
+              "capped there, tau_max is an estimate, not a bound: the shaft next to the brake also carries the "
+              "inertia torque of the rotor and shaft between it and the friction face (the transient exceeds the "
+              "cap; docs/reduced_models.md, peak --transient)";
     if (const model::ComponentModel* m = detail::ModelOf(wtb)) {
       const auto nominal_limit = m->StopTorqueLimit(detail::ModeReader<double>(wtb, nominal));
       const auto limit_bounds = m->StopTorqueLimit(detail::ModeReader<Interval>(wtb, bounds.mode));
@@ -676,8 +680,20 @@ std::string PeakReport::FullReport() const {
                   "[" + Fmt(c.tau_total.bounds.lo) + ", " + Fmt(c.tau_total.bounds.hi) + "]",
                   c.ranking.empty() ? "-" : c.ranking[0].parameter + " (" + Fmt(100 * c.ranking[0].share, 3) + " %)"});
   out += table.ToString();
+  // A rupture's tau_max capped at the wing-tip brake's slipping torque is an estimate (the
+  // rupture block of AnalysePeaks): say so wherever it is printed.
+  const auto capped = [](const PeakCase& c) { return c.stop_limit && c.tau_total.nominal >= c.stop_limit->nominal; };
+  std::set<std::string> capped_cases;
+  for (const auto& c : cases)
+    if (capped(c)) capped_cases.insert(c.name);
+  if (!capped_cases.empty())
+    out += "ESTIMATE, not a bound: tau_max of " + std::to_string(capped_cases.size()) +
+           " rupture case(s) is capped where the wing-tip brake slips; the shaft next to the brake also carries the "
+           "inertia torque between it and the friction face, and the transient exceeds the cap (peak --transient "
+           "says by how much)\n";
   out += "\nWorst case per component (margin: the smallest allowable over the domains against the largest local "
-         "torque; no point of the domains has a smaller margin)\n";
+         "torque; no point of the domains has a smaller margin, except where the worst case is a capped rupture "
+         "estimate)\n";
   bool flaps = false;
   for (const auto& c : cases) flaps = flaps || !c.flap_loads.empty();
   if (flaps)
@@ -708,7 +724,10 @@ nlohmann::json PeakReport::ToJson() const {
                           {"tau_static_N_m", c.tau_static},
                           {"tau_static_bounds_N_m", {c.tau_static_bounds.lo, c.tau_static_bounds.hi}},
                           {"stop_limit_N_m", c.stop_limit ? bounded(*c.stop_limit) : nlohmann::json(nullptr)},
-                          {"tau_max_N_m", bounded(c.tau_total)}, {"ranking", ranking},
+                          {"tau_max_N_m", bounded(c.tau_total)},
+                          // capped at the wing-tip brake's slipping torque: an estimate, not a bound
+                          {"tau_max_is_estimate", c.stop_limit.has_value() && c.tau_total.nominal >= c.stop_limit->nominal},
+                          {"ranking", ranking},
                           {"note", c.note}});
     if (c.kind != "jam") {
       nlohmann::json flaps = nlohmann::json::array();

@@ -84,6 +84,35 @@ TEST(Peak, RuptureIsCappedWhereTheBrakeSlips) {
   EXPECT_DOUBLE_EQ(weak.tau_dynamic.nominal, strong.tau_dynamic.nominal);
 }
 
+// Issue 26 item 4: the cap is no bound (the shaft next to the brake also decelerates the rotor
+// and shaft between it and the friction face, and the transient exceeds the cap), so a capped
+// rupture says it is an estimate in the table and the JSON; an uncapped one does not.
+TEST(Peak, ACappedRuptureIsLabelledAnEstimateInTheTableAndTheJson) {
+  auto report = [](double dynamic, double holding) {
+    Project p = test_projects::OneWingProject();
+    for (Component& c : p.components) {
+      if (c.id != "wtb") continue;
+      c.parameters["max_dynamic_torque"].nominal = dynamic;
+      c.parameters["max_dynamic_torque"].domain = Domain::Point(dynamic);
+      c.parameters["static_capacity"].nominal = holding;
+      c.parameters["static_capacity"].domain = Domain::Point(holding);
+    }
+    PeakOptions options;
+    options.only_case = "rupture_shaft_1";
+    options.rank = false;
+    return AnalysePeaks(p, options);
+  };
+  const PeakReport strong = report(1e6, 1.2e6);
+  const double rigid = strong.cases.at(0).tau_total.nominal;
+  const PeakReport weak = report(0.2 * rigid, 0.3 * rigid);
+  ASSERT_DOUBLE_EQ(weak.cases.at(0).tau_total.nominal, 0.3 * rigid);
+  EXPECT_EQ(strong.FullReport().find("ESTIMATE, not a bound"), std::string::npos);
+  EXPECT_NE(weak.FullReport().find("ESTIMATE, not a bound: tau_max of 1 rupture case(s) is capped"), std::string::npos);
+  EXPECT_EQ(strong.ToJson()["cases"][0]["tau_max_is_estimate"], false);
+  EXPECT_EQ(weak.ToJson()["cases"][0]["tau_max_is_estimate"], true);
+  EXPECT_NE(weak.cases.at(0).note.find("an estimate, not a bound"), std::string::npos);
+}
+
 TEST(Peak, EnclosureContainsSampledPointResults) {
   const Project base = test_projects::OneWingProject();
   PeakOptions options;

@@ -24,6 +24,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <iosfwd>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -78,6 +79,16 @@ struct CampaignOptions {
   /// Spring-dampers per torque shaft in the full model; 0: the project's setting (at least 4);
   /// otherwise 1 to sim::DriveNetworkOptions::kMaxShaftElements, as for `simulate`.
   int shaft_elements = 0;
+  /// --feasible: sampled points also satisfy the project's requirements, as far as the interval
+  /// constraint network (icsp, what `check` propagates) can tell: the quasi-random points are
+  /// drawn over the domains narrowed by the requirements (the parameters not sampled at their
+  /// values), and a point whose propagation proves a requirement violated is rejected and drawn
+  /// again (Sample::rejected). Corners and the nominal point are not redrawn.
+  bool feasible = false;
+  /// Relative tolerance of the simulator in every run (--rtol); 0: the project's
+  /// settings.relative_tolerance (1e-5 in the bundled examples). docs/validation.md, "Envelope
+  /// against tolerance", measures how far the envelope at a tolerance is from the converged one.
+  double relative_tolerance = 0.0;
   /// Guards of every run, so that a sample that makes the model chatter or stiff becomes a failed
   /// run instead of a run that never ends. A sizing case of the A380-class example takes 4000 to
   /// 6000 steps and a few hundred events in all. The rows of a campaign run are kRowsPerRun
@@ -132,6 +143,9 @@ struct SampleRelation {
   bool Holds(const std::vector<double>& values) const;
 };
 
+/// The interval constraint network of the project for --feasible (defined in plan.cc).
+struct FeasibleSet;
+
 /// One point: the value of every plan parameter.
 struct Sample {
   int index = 0;
@@ -154,6 +168,12 @@ struct Plan {
   /// rejected and the parameters of the broken relations are drawn again (Sample::rejected).
   std::vector<SampleRelation> relations;
   static constexpr int kMaxDraws = 1000;     ///< per point; then the point is kept as drawn
+  /// --feasible: the project's constraint network, the box of the parameters not sampled (at their
+  /// values) and the sampled domains narrowed by propagation; null otherwise.
+  std::shared_ptr<const FeasibleSet> feasible;
+  /// --feasible: whether the propagation of the network with every plan parameter at its value in
+  /// `values` (the others at their nominal values) does not prove a requirement violated.
+  bool SatisfiesRequirements(const std::vector<double>& values) const;
 
   int runs() const { return static_cast<int>(cases.size()) * samples_per_case; }
   int CaseOf(int run) const { return run / samples_per_case; }
@@ -305,6 +325,8 @@ struct CampaignSummary {
   std::string project_name;
   std::string project_hash;
   std::string model;
+  /// The simulator's relative tolerance of every run (0: a file from before it was recorded).
+  double relative_tolerance = 0.0;
   std::string shard;           ///< "0/1" for a whole or merged campaign
   int runs_total = 0;          ///< in this file's shard
   int runs_done = 0;
@@ -312,7 +334,7 @@ struct CampaignSummary {
   /// Runs in which an element's dissipated power fell below zero (the simulator's passivity
   /// monitor); -1 when the file predates the monitor.
   int not_passive = 0;
-  int rejected_draws = 0;      ///< sampled draws rejected for breaking a parameter relation
+  int rejected_draws = 0;      ///< sampled draws rejected for breaking a parameter relation or (--feasible) a requirement
   int cases = 0;
   int samples_per_case = 0;
   std::vector<std::string> parameters;
