@@ -587,8 +587,18 @@ class Friction : public Element {
       // Released on the located capacity root but driven the other way once sliding: the
       // torque sits at the capacity within the root tolerance. The element stays stuck for this
       // event (the relaxed threshold of the fired root no longer applies), else the iteration
-      // would alternate between the two modes.
-      if (!fired.empty()) fired[1] = 0;
+      // would alternate between the two modes. Its capacity root is re-armed as for a settled
+      // element (Settle): a holding torque that keeps rising towards the capacity crosses the
+      // 1e-10 margin again within ~1e-13 s, the event's projection pulls it back below the
+      // capacity by roundoff, and the run crawls from one such event to the next at the same
+      // instant (the A320-class slats' station limiter brakes after a shaft rupture, with the
+      // actuators' load inertia). With the allowance the next event finds the torque clearly
+      // above the capacity and the element breaks away, or no event follows. A stuck element
+      // does no work: the allowance creates no energy.
+      if (Fired(1)) {
+        fired[1] = 0;
+        settled_allowance = kSettledAllowance * std::abs(Tau0Max(e));
+      }
     }
   }
   void AfterEventRow() override {
