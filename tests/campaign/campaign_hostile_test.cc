@@ -54,6 +54,20 @@ class InterruptOnFirstLine : public std::streambuf {
   }
 };
 
+/// Runs `plan` into `dir` on `jobs` threads, interrupted (SIGINT requested) when the first run
+/// is reported; the interruption request is cleared again before it returns.
+CampaignReport RunInterruptedAtFirstRun(const Plan& plan, const fs::path& dir, int jobs) {
+  InterruptOnFirstLine buffer;
+  std::ostream progress(&buffer);
+  ExecutionOptions e;
+  e.directory = dir;
+  e.jobs = jobs;
+  e.progress = &progress;
+  const CampaignReport stopped = RunCampaign(A380(), plan, e);
+  ClearInterrupt();
+  return stopped;
+}
+
 int Count(const fs::path& file, const std::string& sql) {
   componentdb::sqlite::Connection c(file, componentdb::sqlite::Connection::Mode::kReadOnly);
   return static_cast<int>(c.QueryInteger(sql));
@@ -82,14 +96,7 @@ TEST(CampaignInterruption, RunsStoppedByASignalStayToDoAndTheNextSessionDoesThem
   const Plan plan = SmallPlan();
   ASSERT_EQ(plan.runs(), 9);
   const fs::path dir = Scratch("interrupted");
-  InterruptOnFirstLine buffer;
-  std::ostream progress(&buffer);
-  ExecutionOptions e;
-  e.directory = dir;
-  e.jobs = 2;
-  e.progress = &progress;
-  const CampaignReport stopped = RunCampaign(A380(), plan, e);
-  ClearInterrupt();
+  const CampaignReport stopped = RunInterruptedAtFirstRun(plan, dir, 2);
   EXPECT_EQ(stopped.interrupted_signal, SIGINT);
   EXPECT_GE(stopped.runs_done_now, 1);
   EXPECT_LT(stopped.runs_done_now, 9) << "no run was stopped";
@@ -111,7 +118,9 @@ TEST(CampaignInterruption, RunsStoppedByASignalStayToDoAndTheNextSessionDoesThem
   EXPECT_EQ(summary.ToJson()["interrupted"], true);
   EXPECT_NE(summary.BriefReport().find("(interrupted by signal 2 at "), std::string::npos) << summary.BriefReport();
 
-  e.progress = nullptr;
+  ExecutionOptions e;
+  e.directory = dir;
+  e.jobs = 2;
   const CampaignReport resumed = RunCampaign(A380(), plan, e);
   EXPECT_EQ(resumed.interrupted_signal, 0);
   EXPECT_EQ(resumed.runs_done_before, stopped.runs_done_now);
@@ -452,14 +461,7 @@ TEST(CampaignInterruption, TheFileRecordsTheInterruptionSoALaterSummarySaysIt) {
   // Was: a later `campaign summary` said only "incomplete" (the signal lived in the session).
   const Plan plan = SmallPlan();
   const fs::path dir = Scratch("interrupted-stored");
-  InterruptOnFirstLine buffer;
-  std::ostream progress(&buffer);
-  ExecutionOptions e;
-  e.directory = dir;
-  e.jobs = 1;
-  e.progress = &progress;
-  const CampaignReport stopped = RunCampaign(A380(), plan, e);
-  ClearInterrupt();
+  const CampaignReport stopped = RunInterruptedAtFirstRun(plan, dir, 1);
   ASSERT_EQ(stopped.interrupted_signal, SIGINT);
   ASSERT_GT(stopped.runs_left, 0);
 
@@ -487,7 +489,9 @@ TEST(CampaignInterruption, TheFileRecordsTheInterruptionSoALaterSummarySaysIt) {
       << before.BriefReport();
 
   // The resumed campaign completes: no longer interrupted.
-  e.progress = nullptr;
+  ExecutionOptions e;
+  e.directory = dir;
+  e.jobs = 1;
   RunCampaign(A380(), plan, e);
   const CampaignSummary done = LoadSummary(dir);
   EXPECT_TRUE(done.complete());
