@@ -87,15 +87,25 @@ void CampaignOptions::Validate() const {
     throw InputError("--elements " + std::to_string(shaft_elements) + " is out of range; give 1 to " +
                      std::to_string(sim::DriveNetworkOptions::kMaxShaftElements) +
                      " spring-dampers per shaft (as for simulate), or leave it out for the project's setting");
-  if (max_steps_per_output < 1 || max_events < 1)
-    throw InputError("the run limits must be >= 1 (max_steps_per_output " + std::to_string(max_steps_per_output) +
-                     ", max_events " + std::to_string(max_events) + ")");
+  if (max_steps_per_output < 0)
+    throw InputError("--max-steps " + std::to_string(max_steps_per_output) +
+                     ": give 1 or more solver steps per 1/" + std::to_string(kRowsPerRun) +
+                     " of a run, or leave it out for the default of the tolerance (10000 at rtol 1e-5)");
+  if (max_events < 1)
+    throw InputError("the run limit max_events must be >= 1 (" + std::to_string(max_events) + ")");
   if (!(relative_tolerance == 0.0 || (relative_tolerance >= 1e-12 && relative_tolerance < 1)))
     throw InputError("--rtol " + FormatMessageNumber(relative_tolerance) +
                      " is out of range: give a relative tolerance from 1e-12 to below 1 (e.g. 1e-6), or leave it out "
                      "for the project's settings.relative_tolerance");
   for (const auto& p : case_patterns)
     if (p.empty()) throw InputError("--cases holds an empty pattern; give patterns such as 'jam_*,rupture_shaft_l1'");
+}
+
+long CampaignOptions::DefaultMaxStepsPerOutput(double relative_tolerance) {
+  constexpr double kDefaultTolerance = 1e-5;
+  if (!(relative_tolerance > 0) || relative_tolerance >= kDefaultTolerance) return kMaxStepsPerOutputAtDefaultTolerance;
+  return std::lround(static_cast<double>(kMaxStepsPerOutputAtDefaultTolerance) *
+                     std::pow(kDefaultTolerance / relative_tolerance, 0.2));
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -469,6 +479,9 @@ Plan MakePlan(const Project& project, const CampaignOptions& options) {
                      "\"components\" and \"connections\"");
   Plan plan;
   plan.options = options;
+  if (plan.options.max_steps_per_output == 0)
+    plan.options.max_steps_per_output = CampaignOptions::DefaultMaxStepsPerOutput(
+        options.relative_tolerance > 0 ? options.relative_tolerance : project.settings.relative_tolerance);
   plan.project_name = project.name;
   const std::vector<CampaignCase> all = AllCases(project);
   if (options.case_patterns.empty()) {
@@ -534,7 +547,7 @@ Plan MakePlan(const Project& project, const CampaignOptions& options) {
   std::string identity = plan.project_hash + "\nmodel " + sim::ToString(options.model) + "\nelements " +
                          std::to_string(options.shaft_elements) + "\nsamples " + std::to_string(options.samples) +
                          "\nseed " + std::to_string(options.seed) + "\nsampling " + ToString(options.sampling) +
-                         "\nlimits " + std::to_string(options.max_steps_per_output) + " " + std::to_string(options.max_events);
+                         "\nlimits " + std::to_string(plan.options.max_steps_per_output) + " " + std::to_string(options.max_events);
   // Only a tolerance other than the project's enters the identity (campaigns from before --rtol
   // keep theirs); the project's own tolerance is part of the project hash.
   if (options.feasible) identity += "\nfeasible";

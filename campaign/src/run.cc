@@ -129,6 +129,8 @@ RunResult ExecuteRun(const Project& project, const Plan& plan, int run) {
       r.ok = false;
       r.interrupted = report.status == sim::SimulationStatus::kInterrupted;
       r.message = ToString(report.status) + " at t = " + FormatMessageNumber(report.time) + " s: " + report.message;
+      if (report.sundials_flag == "CV_TOO_MUCH_WORK")
+        r.message += " (campaign --max-steps, " + std::to_string(plan.options.max_steps_per_output) + " in this campaign)";
       return r;
     }
     r.components = std::move(simulation.components);

@@ -1,6 +1,6 @@
 // `highlift campaign PROJECT [--out DIR] [--cases PATTERNS] [--corners PARAMS] [--samples N
 // [--seed S] [--sampling sobol|lhs] [--vary PARAMS] [--feasible]] [--model full|reduced] [--jobs N]
-// [--rtol R] [--shard I/N] [--json]`: the design-load campaign (every jam, rupture and scenario of the
+// [--rtol R] [--max-steps N] [--shard I/N] [--json]`: the design-load campaign (every jam, rupture and scenario of the
 // project over samples of the parameter domains), results in DIR/campaign.sqlite, committed run
 // by run (the same command resumes a killed campaign).
 // `highlift campaign summary DIR [--json]`: the envelope of a result file.
@@ -65,6 +65,10 @@ class CampaignCommand : public Command {
     app.add_option("--rtol", options_.relative_tolerance,
                    "relative tolerance of the simulator in every run (default: the project's "
                    "settings.relative_tolerance; docs/validation.md: envelope against tolerance)");
+    app.add_option("--max-steps", options_.max_steps_per_output,
+                   "solver steps a run may take per 1/" + std::to_string(campaign::CampaignOptions::kRowsPerRun) +
+                       " of its simulated time before it fails as stiff or chattering (default: 10000 at rtol "
+                       "1e-5 and above, more at a tighter --rtol, 39811 at 1e-8; docs/campaign.md)");
     app.add_option("--jobs", jobs_, "threads (default: every core)");
     app.add_option("--shard", shard_,
                    "run part I of N (0 <= I < N) into DIR/campaign-shard-I-of-N.sqlite (default inside a Slurm job "
@@ -116,7 +120,8 @@ class CampaignCommand : public Command {
               << FormatNumber(options_.relative_tolerance > 0 ? options_.relative_tolerance
                                                               : project.settings.relative_tolerance,
                               3)
-              << ", campaign " << plan.campaign_id
+              << ", at most " << plan.options.max_steps_per_output << " steps per 1/"
+              << campaign::CampaignOptions::kRowsPerRun << " of a run, campaign " << plan.campaign_id
               << ")" << (run.shard.whole() ? "" : ", shard " + run.shard.ToString()) << " -> "
               << campaign::ResultFile(run.directory, run.shard).string() << "\n";
     const campaign::CampaignReport report = campaign::RunCampaign(project, plan, run);

@@ -42,6 +42,7 @@ TEST(CampaignCli, BadInputIsExit2WithAMessageAndWritesNothing) {
       {{"--model", "coarse"}, "coarse"},
       {{"--sampling", "random"}, "--sampling 'random' is unknown; choose 'sobol' or 'lhs'"},
       {{"--jobs", "-2"}, "--jobs -2: give 1 or more threads"},
+      {{"--max-steps", "-5"}, "--max-steps -5: give 1 or more solver steps"},
   };
   for (const auto& c : cases) {
     std::vector<std::string> args = {"campaign", kExample, "--out", out.string()};

@@ -95,5 +95,24 @@ TEST(EnvelopeTolerance, FullModelJamThatStoppedTheSolverRunsAtTheDefaultToleranc
   EXPECT_NEAR(r.peak, converged.peak, kEnvelopeTolerance * converged.peak) << r.peak_component;
 }
 
+// At rtol 1e-8, 24 full-model ruptures stopped at the step guard of rtol 1e-5 (10 000 steps per
+// 1/20 of the run) while the wing-tip brake engaged; rupture_shaft_l3a at Sobol point 9 needs
+// 10 000 to 12 000 there. The guard of the tolerance (--max-steps' default) lets it finish.
+TEST(EnvelopeTolerance, StepGuardOfATightToleranceLetsAFullModelRuptureFinish) {
+  CampaignOptions o;
+  o.case_patterns = {"rupture_shaft_l3a"};
+  o.samples = 16;
+  o.relative_tolerance = kConvergedRtol;
+  constexpr int kRun = 10;  // Sobol point 9
+  const Plan tight = MakePlan(Example(), o);
+  const RunResult r = ExecuteRun(Example(), tight, kRun);
+  EXPECT_TRUE(r.ok) << r.message;
+  o.max_steps_per_output = CampaignOptions::kMaxStepsPerOutputAtDefaultTolerance;
+  const RunResult guarded = ExecuteRun(Example(), MakePlan(Example(), o), kRun);
+  EXPECT_FALSE(guarded.ok);
+  EXPECT_NE(guarded.message.find("CV_TOO_MUCH_WORK"), std::string::npos) << guarded.message;
+  EXPECT_NE(guarded.message.find("(campaign --max-steps, 10000 in this campaign)"), std::string::npos) << guarded.message;
+}
+
 }  // namespace
 }  // namespace highlift::campaign

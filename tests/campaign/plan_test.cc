@@ -273,6 +273,31 @@ TEST(CampaignOptions, RelativeToleranceIsTheProjectsOrOneInRange) {
   EXPECT_NE(MakePlan(A380(), a).campaign_id, MakePlan(A380(), b).campaign_id);
 }
 
+TEST(CampaignOptions, StepGuardIsTheToleranceDefaultOrTheGivenOne) {
+  EXPECT_EQ(CampaignOptions::DefaultMaxStepsPerOutput(1e-4), 10000);
+  EXPECT_EQ(CampaignOptions::DefaultMaxStepsPerOutput(1e-5), 10000);
+  EXPECT_EQ(CampaignOptions::DefaultMaxStepsPerOutput(1e-8), 39811);  // 10000 * 1000^(1/5)
+  EXPECT_GT(CampaignOptions::DefaultMaxStepsPerOutput(1e-10), CampaignOptions::DefaultMaxStepsPerOutput(1e-8));
+  CampaignOptions o;
+  o.case_patterns = {"jam_l3"};
+  const Plan standard = MakePlan(A380(), o);
+  EXPECT_EQ(standard.options.max_steps_per_output, 10000);  // the example's rtol 1e-5
+  // The derived guard at the default tolerance is the fixed one of before: the same campaign.
+  CampaignOptions fixed = o;
+  fixed.max_steps_per_output = 10000;
+  EXPECT_EQ(MakePlan(A380(), fixed).campaign_id, standard.campaign_id);
+  CampaignOptions tight = o;
+  tight.relative_tolerance = 1e-8;
+  EXPECT_EQ(MakePlan(A380(), tight).options.max_steps_per_output, 39811);
+  CampaignOptions given = o;
+  given.max_steps_per_output = 25000;
+  const Plan larger = MakePlan(A380(), given);
+  EXPECT_EQ(larger.options.max_steps_per_output, 25000);
+  EXPECT_NE(larger.campaign_id, standard.campaign_id);  // another guard, another campaign
+  given.max_steps_per_output = -1;
+  EXPECT_NE(MessageOf([&] { given.Validate(); }).find("--max-steps -1: give 1 or more solver steps"), std::string::npos);
+}
+
 TEST(CampaignPlan, LatinHypercubePutsOnePointInEveryStratumOfEveryParameter) {
   CampaignOptions o;
   o.case_patterns = {"jam_l3"};

@@ -94,9 +94,19 @@ struct CampaignOptions {
   /// 6000 steps and a few hundred events in all. The rows of a campaign run are kRowsPerRun
   /// equidistant points (the peaks follow every step, not the rows), so the step limit is per
   /// 1/kRowsPerRun of the simulated time.
-  long max_steps_per_output = 10000;  ///< solver steps between two rows
+  /// Solver steps between two rows (--max-steps); 0: DefaultMaxStepsPerOutput of the run's
+  /// tolerance, which MakePlan puts into Plan::options (and the campaign's identity).
+  long max_steps_per_output = 0;
   int max_events = 20000;             ///< discrete events of one run
   static constexpr int kRowsPerRun = 20;
+  /// The step guard at the default tolerance 1e-5 and above.
+  static constexpr long kMaxStepsPerOutputAtDefaultTolerance = 10000;
+  /// The step guard of a tolerance: kMaxStepsPerOutputAtDefaultTolerance at rtol >= 1e-5, times
+  /// (1e-5 / rtol)^(1/5) below it (39 811 at 1e-8). A BDF run's step count grows about as
+  /// rtol^(-1/(q+1)) with its order q; the A380-class ruptures take 2.1 times the steps at 1e-8
+  /// that they take at 1e-5 on average, and the worst needed 10 000 to 12 000 steps in one
+  /// 1/20 of its run at 1e-8 (docs/validation.md, "Envelope against tolerance").
+  static long DefaultMaxStepsPerOutput(double relative_tolerance);
 
   static constexpr int kMaxCorners = 12;  ///< 4096 corners per case
   /// Quasi-random points per case (--samples): a Latin hypercube draws a permutation of this
