@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <map>
 #include <thread>
 
 #include "common/run_cli.h"
@@ -92,6 +93,27 @@ TEST(CampaignCli, NominalTransientPeakIsTheOneOfPeakTransient) {
   EXPECT_NEAR(campaign_peak, peak["transient"][0]["transient"].get<double>(), 1e-6 * campaign_peak);
   EXPECT_EQ(campaign["case_peaks"][0]["at"], peak["transient"][0]["at"]);
   EXPECT_EQ(campaign["case_peaks"][0]["single_dof_N_m"].get<double>(), peak["transient"][0]["single_dof"].get<double>());
+  // One allowable of the actuators in both (issue 26 item 3: peak and campaign agree on the
+  // actuators): the campaign's capacity is peak's allowable, and an actuator the campaign finds
+  // overloaded has a negative peak margin (peak's single-DOF value bounds the simulated torque).
+  const auto all = RunCli({"peak", kExample, "--json", "--no-intervals"});
+  ASSERT_LE(all.exit_code, 1) << all.err;
+  std::map<std::string, nlohmann::json> worst;
+  const nlohmann::json peak_all = nlohmann::json::parse(all.out);
+  for (const auto& w : peak_all["worst"]) worst[w["component"].get<std::string>()] = w;
+  int actuators = 0;
+  for (const auto& e : campaign["envelope"]) {
+    const std::string id = e["component"].get<std::string>();
+    if (id.rfind("gra_", 0) != 0) continue;
+    ++actuators;
+    ASSERT_TRUE(worst.count(id)) << id;
+    const double allowable = worst[id]["allowable_N_m"].get<double>();
+    EXPECT_NEAR(e["capacity_N_m"].get<double>(), allowable, 1e-9 * allowable) << id;
+    if (e["margin"].get<double>() < 0) {
+      EXPECT_LT(worst[id]["margin"].get<double>(), 0.0) << id;
+    }
+  }
+  EXPECT_EQ(actuators, 12);
   // summary prints the same JSON again.
   const auto s = RunCli({"campaign", "summary", out.string(), "--json"});
   EXPECT_EQ(s.exit_code, c.exit_code);

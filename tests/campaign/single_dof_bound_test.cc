@@ -130,6 +130,13 @@ TEST(SingleDofAgainstTransient, EveryComponentClassOnTheExamplesAtTheNominalAndS
           st.where = name + (k == 0 ? "" : " #" + std::to_string(k)) + " " + c.component + " (" + c.transient_case + ")";
         }
       }
+      // One line per point: a sweep of the full model runs for half an hour, and its partial
+      // result is worth keeping when it is stopped.
+      std::cout << name << (k == 0 ? " nominal" : " #" + std::to_string(k)) << " done (" << simulations
+                << " simulations so far); largest transient / single-DOF so far:";
+      for (const auto& [cls, st] : stats)
+        std::cout << " " << cls << " " << FormatNumber(st.max_ratio, 4) << " (" << st.not_bound << " not a bound)";
+      std::cout << std::endl;
     }
   }
   TextTable table({"class", "rows", "not a bound", "largest transient / single-DOF", "where"}, {1, 2, 3});
