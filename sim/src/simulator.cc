@@ -573,10 +573,12 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
     last_loss = energy_now.loss_power;
     last_source = energy_now.source_power;
   };
-  // A row of the evaluated state at t (an output point or an event limit).
+  // A row of the evaluated state at t (an output point or an event limit); the values only for
+  // a sink that reads them (the CLI without --out and the campaign count or discard the rows).
+  const bool reads_values = sink.ReadsValues();
   auto write_row = [&](double t) {
-    sys.Outputs(out.data());
-    if (options.energy) {
+    if (reads_values) sys.Outputs(out.data());
+    if (reads_values && options.energy) {
       const System::EnergyState s = sys.Energy();
       double* x = out.data() + n_element_outputs;
       x[0] = s.kinetic;
