@@ -550,8 +550,11 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
     for (std::size_t i = 0; i < tau.size(); ++i) {
       if (std::isnan(tau[i])) continue;
       has_torque[i] = true;
-      if (std::abs(tau[i]) > std::abs(report.peak_torques[i].tau))
-        report.peak_torques[i] = {elements[i]->id, tau[i], t};
+      PeakTorque& peak = report.peak_torques[i];  // its element named once, at the start
+      if (std::abs(tau[i]) > std::abs(peak.tau)) {
+        peak.tau = tau[i];
+        peak.time = t;
+      }
     }
     if (!options.energy) return;
     energy_now = sys.Energy();
