@@ -27,7 +27,6 @@ import json
 import os
 import subprocess
 import sys
-import tempfile
 
 
 def run(binary, project, case, rtol):
@@ -48,7 +47,7 @@ def cases_of(binary, project):
     return [(c["name"], c["kind"], c["component"]) for c in json.loads(out.stdout)["cases"]]
 
 
-def project_with_cases(project, cases, directory):
+def project_with_cases(project, cases):
     """A copy of the project with one scenario per sizing case (as model::SizingScenario)."""
     with open(project) as f:
         p = json.load(f)
@@ -142,7 +141,7 @@ def main():
     args = ap.parse_args()
 
     cases = cases_of(args.base, args.project)
-    path, names = project_with_cases(args.project, cases, args.keep)
+    path, names = project_with_cases(args.project, cases)
     names = [n for n in names if any(fnmatch.fnmatch(n, g) for g in args.cases.split(","))]
     try:
         jobs = [(b, n, r) for n in names for b in (args.base, args.new) for r in (args.rtol, None)]

@@ -24,8 +24,7 @@ def once(binary, project, scenario, out):
     subprocess.run(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, check=True)
     wall = time.perf_counter() - start
     after = resource.getrusage(resource.RUSAGE_CHILDREN)
-    cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
-    return wall, cpu, after.ru_maxrss / 1024.0  # MiB (the largest child so far)
+    return wall, (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
 
 
 def main():
@@ -50,7 +49,7 @@ def main():
                 # RUSAGE_CHILDREN's maxrss is the largest child so far: measured in a fresh child.
                 code = ("import resource,subprocess,sys;subprocess.run(sys.argv[1:],stdout=subprocess.DEVNULL,"
                         "stderr=subprocess.DEVNULL);print(resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss)")
-                w, c, _ = once(args.base if b == "base" else args.new, args.project, s, out)
+                w, c = once(args.base if b == "base" else args.new, args.project, s, out)
                 t[(b, s)].append((w, c))
                 if r == 0:
                     cmd = [args.base if b == "base" else args.new, "simulate", args.project, "--scenario", s]
