@@ -26,6 +26,7 @@ class NullSink : public sim::OutputSink {
  public:
   void Begin(const std::vector<std::string>&) override {}
   void Row(double, const std::vector<double>&) override {}
+  bool ReadsValues() const override { return false; }  // as the campaign's and the CLI's without --out
 };
 
 const Project& Example(const std::string& file = "a380_class_flaps.json") {

@@ -29,6 +29,7 @@ class NullSink : public sim::OutputSink {
  public:
   void Begin(const std::vector<std::string>&) override {}
   void Row(double, const std::vector<double>&) override {}
+  bool ReadsValues() const override { return false; }
 };
 
 }  // namespace

@@ -45,6 +45,7 @@ class CountingSink : public sim::OutputSink {
   void End() override {
     if (next_) next_->End();
   }
+  bool ReadsValues() const override { return next_ != nullptr && next_->ReadsValues(); }
   long rows() const { return rows_; }
   std::size_t columns() const { return columns_; }
 

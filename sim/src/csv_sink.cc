@@ -1,5 +1,8 @@
 #include <fmt/format.h>
 
+#include <charconv>
+#include <string_view>
+
 #include "highlift/core/catalogue.h"
 #include "highlift/core/error.h"
 #include "highlift/core/output_file.h"
@@ -55,12 +58,21 @@ void CsvSink::Begin(const std::vector<std::string>& columns) {
 
 void CsvSink::Row(double time, const std::vector<double>& values) {
   if (!impl_->out) return;
+  // Each number the shortest text that reads back as the same double (std::to_chars): exact
+  // like 17 significant digits, and several times faster than fmt's "{:.17g}", which takes
+  // the slow arbitrary-precision path for most values (more than half of a run with --out).
+  constexpr std::size_t kWidest = 24;  // "-2.2250738585072014e-308" and a comma
   std::string& line = impl_->line;
-  line.clear();
-  fmt::format_to(std::back_inserter(line), "{:.17g}", time);
-  for (int c : impl_->columns) fmt::format_to(std::back_inserter(line), ",{:.17g}", values[c]);
-  line += '\n';
-  impl_->out->Write(line);  // throws InputError on a failed write (disk full)
+  line.resize((impl_->columns.size() + 1) * (kWidest + 1) + 1);
+  char* p = line.data();
+  char* const end = line.data() + line.size();
+  p = std::to_chars(p, end, time).ptr;
+  for (int c : impl_->columns) {
+    *p++ = ',';
+    p = std::to_chars(p, end, values[c]).ptr;
+  }
+  *p++ = '\n';
+  impl_->out->Write(std::string_view(line.data(), static_cast<std::size_t>(p - line.data())));  // throws InputError on a failed write
   impl_->last_time = time;
   ++impl_->rows;
 }

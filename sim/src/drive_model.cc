@@ -44,7 +44,7 @@ void DerivedColumnSink::Begin(const std::vector<std::string>& columns) {
 }
 
 void DerivedColumnSink::Row(double time, const std::vector<double>& values) {
-  if (sources_.empty()) {
+  if (sources_.empty() || !next_.ReadsValues()) {
     next_.Row(time, values);
     return;
   }

@@ -563,8 +563,11 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
     for (std::size_t i = 0; i < tau.size(); ++i) {
       if (std::isnan(tau[i])) continue;
       has_torque[i] = true;
-      if (std::abs(tau[i]) > std::abs(report.peak_torques[i].tau))
-        report.peak_torques[i] = {elements[i]->id, tau[i], t};
+      PeakTorque& peak = report.peak_torques[i];  // its element named once, at the start
+      if (std::abs(tau[i]) > std::abs(peak.tau)) {
+        peak.tau = tau[i];
+        peak.time = t;
+      }
     }
     if (!options.energy) return;
     energy_now = sys.Energy();
@@ -586,10 +589,12 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
     last_loss = energy_now.loss_power;
     last_source = energy_now.source_power;
   };
-  // A row of the evaluated state at t (an output point or an event limit).
+  // A row of the evaluated state at t (an output point or an event limit); the values only for
+  // a sink that reads them (the CLI without --out and the campaign count or discard the rows).
+  const bool reads_values = sink.ReadsValues();
   auto write_row = [&](double t) {
-    sys.Outputs(out.data());
-    if (options.energy) {
+    if (reads_values) sys.Outputs(out.data());
+    if (reads_values && options.energy) {
       const System::EnergyState s = sys.Energy();
       double* x = out.data() + n_element_outputs;
       x[0] = s.kinetic;

@@ -282,6 +282,7 @@ System::System(const Network& original) {
   for (auto& el : elements_) {
     el->root_offset = n_roots_;
     n_roots_ += el->NumRoots();
+    if (el->NumRoots() > 0) root_elements_.push_back(el.get());
     bool kinematic = false;
     for (int k = 0; k < el->NumRoots(); ++k) {
       const bool from_states = el->RootFromStates(k) && !el->RootRestarts(k);
@@ -1776,8 +1777,7 @@ double System::LossPowers(std::vector<double>& loss) const {
 }
 
 void System::Roots(double* g) const {
-  for (const auto& el : elements_)
-    if (el->NumRoots() > 0) el->Roots(eval_, g + el->root_offset);
+  for (const Element* el : root_elements_) el->Roots(eval_, g + el->root_offset);
 }
 
 void System::RootDirections(int* direction) const {

@@ -180,6 +180,9 @@ class System {
 
   std::vector<std::unique_ptr<Element>> elements_;
   std::vector<Element*> assuming_;  ///< elements with HasAssumptions()
+  /// The elements with root functions (NumRoots() > 0, fixed by their parameters), in order:
+  /// Roots() runs at every step end and output point and needs no pass over the others.
+  std::vector<Element*> root_elements_;
   /// The elements each phase of Evaluate calls (all until PrunePhases has run).
   std::vector<Element*> forces_, constraints_, after_solve_, derivatives_;
   bool phases_pruned_ = false;

@@ -1,10 +1,13 @@
 // Analytic and hand-derived checks of the element laws and of the solver: free vibration,
 // energy balance with friction, power through an ideal gear, a gear with a moving support,
-// IdealPlanetary, OneWayClutch, LossyGear with bearing friction, time events, failure reports.
+// IdealPlanetary, OneWayClutch, LossyGear with bearing friction, time events, failure reports; a
+// sink that does not read the values (OutputSink::ReadsValues) changes nothing but the work.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
+#include <string>
+#include <vector>
 
 #include "highlift/core/error.h"
 #include "highlift/sim/simulator.h"
@@ -60,11 +63,11 @@ TEST(Oscillator, FreeVibrationMatchesCosine) {
   EXPECT_LT(worst, 1e-6) << "largest deviation from 0.1*cos(20 t)";
 }
 
-// Work of the source = kinetic + potential energy + dissipation (damper and friction).
-TEST(EnergyBalance, WorkEqualsStoredPlusDissipatedWithFriction) {
+// A sine torque drives a spring-damper onto an inertia on bearing friction (stick/slip events).
+Network DrivenSpringWithBearingFriction(double amplitude, double f) {
   Network net;
   net.AddElement("Fixed", "fixed");
-  net.AddElement("Sine", "drive", P({{"amplitude", 6}, {"f", 1}}));
+  net.AddElement("Sine", "drive", P({{"amplitude", amplitude}, {"f", f}}));
   net.AddElement("Torque", "torque");
   net.AddElement("Inertia", "inertia1", P({{"J", 1}, {"phi_start", 0}, {"w_start", 0}}));
   net.AddElement("SpringDamper", "spring", P({{"c", 400}, {"d", 2}}));
@@ -77,7 +80,12 @@ TEST(EnergyBalance, WorkEqualsStoredPlusDissipatedWithFriction) {
   net.Connect("inertia2.flange_b", "bearing.flange_a");
   net.Connect("bearing.support", "fixed.flange");
   net.Connect("torque.support", "fixed.flange");
-  const RunResult r = Simulate(net, 2.0, 1e-4);
+  return net;
+}
+
+// Work of the source = kinetic + potential energy + dissipation (damper and friction).
+TEST(EnergyBalance, WorkEqualsStoredPlusDissipatedWithFriction) {
+  const RunResult r = Simulate(DrivenSpringWithBearingFriction(6, 1), 2.0, 1e-4);
   ASSERT_TRUE(r.report.ok()) << r.report.FullReport();
   const auto u = r.Col("torque.tau"), w1 = r.Col("inertia1.w"), w2 = r.Col("inertia2.w");
   const auto phi_rel = r.Col("spring.phi_rel"), w_rel = r.Col("spring.w_rel");
@@ -472,6 +480,48 @@ TEST(NetworkElements, ANonFiniteParameterIsNamedAsNotFinite) {
       EXPECT_EQ(m.find("valid range"), std::string::npos) << m;
     }
   }
+}
+
+/// Counts the rows and their times; does not read the values (OutputSink::ReadsValues).
+class TimesOnlySink : public OutputSink {
+ public:
+  void Begin(const std::vector<std::string>& columns) override { columns_ = columns.size(); }
+  void Row(double time, const std::vector<double>& values) override {
+    times.push_back(time);
+    sizes_match = sizes_match && values.size() == columns_;
+  }
+  bool ReadsValues() const override { return false; }
+  std::vector<double> times;
+  bool sizes_match = true;
+
+ private:
+  std::size_t columns_ = 0;
+};
+
+// The simulator skips the outputs for a sink that does not read them; nothing else changes.
+TEST(OutputSink, ASinkThatDoesNotReadTheValuesGetsTheSameRowsAndResults) {
+  SimulationOptions o;
+  o.stop_time = 2.0;
+  o.output_interval = 1e-2;
+  o.energy = true;
+  MemorySink memory;
+  TimesOnlySink times_only;
+  const SimulationReport full = Simulator(DrivenSpringWithBearingFriction(8, 1.5)).Run(o, memory);
+  const SimulationReport lean = Simulator(DrivenSpringWithBearingFriction(8, 1.5)).Run(o, times_only);
+  ASSERT_TRUE(full.ok()) << full.FullReport();
+  ASSERT_TRUE(lean.ok()) << lean.FullReport();
+  EXPECT_GT(full.events.size(), 2u);  // stick/slip events: rows at their limits too
+  EXPECT_EQ(times_only.times, memory.times());
+  EXPECT_TRUE(times_only.sizes_match);
+  EXPECT_EQ(lean.statistics.steps, full.statistics.steps);
+  EXPECT_EQ(lean.events.size(), full.events.size());
+  ASSERT_EQ(lean.peak_torques.size(), full.peak_torques.size());
+  for (std::size_t i = 0; i < full.peak_torques.size(); ++i) {
+    EXPECT_EQ(lean.peak_torques[i].tau, full.peak_torques[i].tau) << full.peak_torques[i].element;
+    EXPECT_EQ(lean.peak_torques[i].time, full.peak_torques[i].time) << full.peak_torques[i].element;
+  }
+  EXPECT_EQ(lean.energy.dissipated, full.energy.dissipated);
+  EXPECT_EQ(lean.energy.source_work, full.energy.source_work);
 }
 
 }  // namespace

@@ -51,6 +51,7 @@ class DerivedColumnSink : public OutputSink {
   void Begin(const std::vector<std::string>& columns) override;
   void Row(double time, const std::vector<double>& values) override;
   void End() override;
+  bool ReadsValues() const override { return next_.ReadsValues(); }
 
  private:
   std::vector<DerivedColumn> derived_;

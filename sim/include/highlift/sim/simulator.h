@@ -83,6 +83,10 @@ class OutputSink {
   virtual void Begin(const std::vector<std::string>& columns) = 0;  // without "time"
   virtual void Row(double time, const std::vector<double>& values) = 0;
   virtual void End() {}
+  /// False for a sink whose Row() does not read the values (one that counts or discards the
+  /// rows): the simulator then does not compute the outputs, and Row() gets the time and a
+  /// vector of the right size with unspecified values.
+  virtual bool ReadsValues() const { return true; }
 };
 
 /// Keeps every row in memory (tests, small runs).
@@ -107,7 +111,8 @@ class MemorySink : public OutputSink {
   std::vector<std::vector<double>> rows_;
 };
 
-/// Writes CSV ("time" + instance-path columns, 17 significant digits) to a file, row by row.
+/// Writes CSV ("time" + instance-path columns, each number the shortest text that reads back as
+/// the same double) to a file, row by row.
 /// `signals` selects columns (empty: all); an unknown signal is an InputError listing the
 /// closest names. The file is written through highlift::OutputFile: inputs, devices and
 /// directories are refused, every write is checked (InputError on failure) and the old file is
