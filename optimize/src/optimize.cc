@@ -162,6 +162,7 @@ class Optimizer {
   void ProbeReducedModels();
   void Consider(const std::vector<double>& x, const Candidate& c);
   void LocalSearch(const std::vector<Interval>& d);
+  std::string PeakProof(const std::vector<Interval>& d);
   void Sensitivities();
   void ChooseScenario();
   std::vector<double> StepTowardsSmaller(const std::vector<double>& x) const;
@@ -201,6 +202,7 @@ class Optimizer {
   Candidate best_candidate_;
   Report counters_;
   std::map<std::string, int> rejected_;
+  std::map<std::string, int> peak_proofs_;  ///< boxes `peak` proved infeasible, by the failing margin
 };
 
 void Optimizer::ChooseDesignVariables() {
@@ -569,6 +571,32 @@ void Optimizer::ChooseScenario() {
 
 }
 
+/// `highlift peak` over a whole box of designs (AnalysePeaks' enclosures over the box and the
+/// remaining domains): the first component whose load exceeds its allowable at every point of the
+/// box (an upper bound of its margin below 0: PeakReport's margin_max), named with its case and
+/// numbers; "" when no margin fails for certain. A box it names holds no design that passes peak.
+std::string Optimizer::PeakProof(const std::vector<Interval>& d) {
+  if (!verify_peak_) return "";
+  Project p = project_;
+  for (std::size_t i = 0; i < design_.size(); ++i) {
+    const std::string& name = design_names_[i];
+    const auto dot = name.find('.');
+    Parameter& par = p.FindComponent(name.substr(0, dot))->parameters[name.substr(dot + 1)];
+    par.domain = {d[i].lower(), d[i].upper()};
+    par.nominal = Mid(d[i]);
+  }
+  reduced_models::PeakOptions po;
+  po.rank = false;
+  ++counters_.peak_checks;
+  const reduced_models::PeakReport pr = reduced_models::AnalysePeaks(p, po);
+  for (const reduced_models::ComponentPeak& w : pr.worst)
+    if (w.margin_max < 0.0)
+      return "peak: " + w.component + " in '" + w.certain_case + "' carries at least " +
+             FormatNumber(w.local_torque_certain, 4) + " N*m, more than its " + w.allowable_name + " of at most " +
+             FormatNumber(w.allowable_max, 4) + " N*m (margin at most " + FormatNumber(w.margin_max, 3) + ")";
+  return "";
+}
+
 /// Feasible points inside a contracted box: the middle, else the corner the objective likes
 /// least (the "safe" one); from the feasible one a bisection along the segment towards the
 /// corner the objective likes most, keeping the farthest robustly feasible point.
@@ -727,6 +755,27 @@ Report Optimizer::Run() {
     }
   }
 
+  {
+    // `peak` over the whole design domains: a margin that fails at every point proves that no
+    // design passes `highlift peak` (its enclosures are guaranteed), before any search.
+    std::vector<Interval> d;
+    for (int v : design_) d.push_back(root[v]);
+    const std::string proof = PeakProof(d);
+    if (!proof.empty()) {
+      r.status = Status::kInfeasible;
+      r.message = "no design within the domains of " + std::to_string(design_.size()) +
+                  " design variable(s) passes `highlift peak` (proved by peak's enclosures over the whole domains)";
+      r.infeasibility = "  - " + proof +
+                        "\nfor every value of the design variables; give the component a larger allowable "
+                        "(a design variable or a wider domain) or widen the domains that lower its load\n";
+      r.peak_checks = counters_.peak_checks;
+      r.peak_pruned = 1;
+      r.lower_bound = icsp::ToDisplay(root[objective_].lower(), objective_unit_);
+      r.seconds = Seconds();
+      return r;
+    }
+  }
+
   struct Node {
     std::vector<Interval> d;
     double lb;
@@ -774,6 +823,11 @@ Report Optimizer::Run() {
     }
     std::vector<Interval> d(design_.size());
     for (std::size_t i = 0; i < design_.size(); ++i) d[i] = box[design_[i]];
+    if (const std::string proof = PeakProof(d); !proof.empty()) {
+      ++counters_.peak_pruned;
+      ++peak_proofs_[proof.substr(0, proof.find(" carries"))];
+      continue;
+    }
     const int before = counters_.improvements;
     LocalSearch(d);
     if (counters_.improvements != before && (counters_.improvements & (counters_.improvements - 1)) == 0) ChooseScenario();
@@ -803,6 +857,8 @@ Report Optimizer::Run() {
   r.candidates = counters_.candidates;
   r.reduced_model_checks = counters_.reduced_model_checks;
   r.improvements = counters_.improvements;
+  r.peak_checks = counters_.peak_checks;
+  r.peak_pruned = counters_.peak_pruned;
   {
     std::vector<std::pair<std::string, int>> why(rejected_.begin(), rejected_.end());
     std::stable_sort(why.begin(), why.end(), [](const auto& a, const auto& b) { return a.second > b.second; });
@@ -814,9 +870,18 @@ Report Optimizer::Run() {
       r.status = Status::kInfeasible;
       r.message = "no design within the domains meets every requirement and margin: branch and bound emptied every box";
       const icsp::Explanation ex = icsp::Explain(net(), initial_, {});
-      r.infeasibility = ex.infeasible ? ex.text
-                                      : "the domains together admit values, but no box of design variables does; "
-                                        "widen the design domains or relax the requirements";
+      if (ex.infeasible) {
+        r.infeasibility = ex.text;
+      } else {
+        r.infeasibility = "the domains together admit values, but no box of design variables does (" +
+                          std::to_string(counters_.infeasible_boxes) + " emptied by the constraint network, " +
+                          std::to_string(counters_.peak_pruned) + " proved by `peak` to hold no design that passes it";
+        r.infeasibility += peak_proofs_.empty() ? ")" : ":";
+        r.infeasibility += "\n";
+        for (const auto& [what, n] : peak_proofs_)
+          r.infeasibility += "  - " + std::to_string(n) + " x " + what + " exceeds its allowable everywhere\n";
+        r.infeasibility += "widen the design domains or relax the requirements";
+      }
     } else {
       r.status = Status::kNoDesignFound;
       r.message = "gave up without a robustly feasible design (" + std::string(limit ? "limit reached" : "boxes too small") +
@@ -1011,7 +1076,10 @@ std::string Report::FullReport() const {
   }
   o << "\n" << boxes << " boxes (" << pruned << " pruned by the bound, " << infeasible_boxes << " infeasible), "
     << candidates << " candidate designs checked (" << reduced_model_checks << " through size and peak), "
-    << improvements << " improvements, " << FormatNumber(seconds, 3) << " s\n";
+    << improvements << " improvements, ";
+  if (peak_checks > 0)
+    o << peak_checks << " boxes through peak over their extent (" << peak_pruned << " proved to fail it), ";
+  o << FormatNumber(seconds, 3) << " s\n";
   return o.str();
 }
 
@@ -1055,6 +1123,7 @@ nlohmann::json Report::ToJson() const {
   j["counters"] = {{"boxes", boxes},           {"pruned", pruned},
                    {"infeasible_boxes", infeasible_boxes}, {"candidates", candidates},
                    {"reduced_model_checks", reduced_model_checks}, {"improvements", improvements},
+                   {"peak_checks", peak_checks}, {"peak_pruned", peak_pruned},
                    {"seconds", seconds}};
   return j;
 }

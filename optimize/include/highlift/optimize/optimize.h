@@ -116,6 +116,8 @@ struct Report {
   int candidates = 0;           ///< robust feasibility checks (each one model evaluation)
   int reduced_model_checks = 0; ///< candidates that went on to Size and AnalysePeaks
   int improvements = 0;         ///< times the best design improved
+  int peak_checks = 0;          ///< boxes analysed by `peak` over their whole extent
+  int peak_pruned = 0;          ///< ... of which `peak` proved that none of their designs passes it
   double seconds = 0.0;
   /// The project with the design variables fixed at the best design (nominal and domain, provenance
   /// "optimized"); only when found.
