@@ -5,10 +5,15 @@
 // 1 when the problem is proved infeasible (with check's explanation) or no design was found, 2 on
 // invalid input (no design variable, unbounded objective, a name that is not a parameter).
 #include <iostream>
+#include <optional>
+#include <set>
 
 #include "command.h"
 #include "estimated_project.h"
+#include "highlift/core/catalogue.h"
+#include "highlift/core/error.h"
 #include "highlift/core/project_io.h"
+#include "highlift/estimation/estimator.h"
 #include "highlift/core/validate.h"
 #include "highlift/optimize/optimize.h"
 
@@ -25,6 +30,10 @@ class OptimizeCommand : public Command {
     app.add_option("--design", options_.design,
                    "a design variable COMPONENT.PARAMETER (repeatable), chosen within its domain; in addition to the "
                    "parameters the project marks \"design\": true")
+        ->delimiter(',');
+    app.add_option("--choose-part", choose_part_,
+                   "a discrete choice COMPONENT (repeatable): the component is one of the database's parts of its "
+                   "type, each part's values fixed from its row (provenance database); the search branches over them")
         ->delimiter(',');
     app.add_option("--write", write_, "write the project with the best design fixed (provenance \"optimized\") to this file");
     app.add_option("--max-boxes", options_.max_boxes, "stop after this many boxes (default 20000)")->check(NumberIn(1, 1e9));
@@ -45,14 +54,31 @@ class OptimizeCommand : public Command {
     options_.verify_size = !no_verify_;
     options_.verify_peak = !no_verify_ && !no_verify_peak_;
     options_.Validate();
-    const EstimatedProject loaded = LoadEstimatedProject(common_, !no_estimate_);
+    std::optional<componentdb::ComponentDatabase> database;
+    EstimatedProject loaded;
+    if (choose_part_.empty()) {
+      loaded = LoadEstimatedProject(common_, !no_estimate_);
+    } else {
+      // Each part combination is estimated after its parts are applied (what a part implies
+      // follows it), so the project is loaded as given.
+      loaded.project = LoadValidProject(common_.project);
+      database.emplace(OpenEstimationDatabase(common_.db));
+      options_.choose_part = PartChoices(loaded.project, *database);
+      if (!no_estimate_)
+        options_.prepare = [&database](Project& p) { estimation::EstimateProject(p, &*database, {}); };
+    }
     const optimize::Report report = optimize::Optimize(loaded.project, options_);
     if (!write_.empty() && report.found) {
-      // The project as given (not the estimated one) with the design fixed, so that `highlift
-      // size` and `peak` read the same file the engineer wrote, plus the chosen values.
+      // The project as given (not the estimated one) with the chosen parts and the design fixed,
+      // so that `highlift size` and `peak` read the same file the engineer wrote.
+      Project out = LoadValidProject(common_.project);
+      for (const auto& [component, designation] : report.parts)
+        for (const optimize::PartChoice& c : options_.choose_part)
+          for (const optimize::PartOption& part : c.parts)
+            if (c.component == component && part.designation == designation) optimize::ApplyPart(out, component, part);
       std::vector<std::pair<std::string, double>> values;
       for (const auto& d : report.design) values.push_back({d.name, d.value_si});
-      SaveProject(optimize::FixDesign(LoadValidProject(common_.project), values), write_);
+      SaveProject(optimize::FixDesign(out, values), write_);
     }
     if (common_.json) {
       nlohmann::json j = report.ToJson();
@@ -70,9 +96,47 @@ class OptimizeCommand : public Command {
   }
 
  private:
+  /// The database's parts of each --choose-part component's type, as values to fix.
+  std::vector<optimize::PartChoice> PartChoices(const Project& project, const componentdb::ComponentDatabase& db) const {
+    std::vector<optimize::PartChoice> out;
+    for (const std::string& id : choose_part_) {
+      const Component* c = project.FindComponent(id);
+      if (!c) throw InputError("--choose-part " + id + ": no component '" + id + "' in " + common_.project);
+      optimize::PartChoice choice{id, {}};
+      const ComponentTypeSpec* type = FindComponentType(c->type);
+      for (const componentdb::Part& part : db.Parts(c->type)) {
+        optimize::PartOption option{part.designation, {}};
+        for (const componentdb::Quantity& q : part.parameters) {
+          const ParameterSpec* spec = type ? type->FindParameter(q.name) : nullptr;
+          if (!spec || (spec->kind != ParameterKind::kScalar && spec->kind != ParameterKind::kInteger)) continue;
+          Parameter par;
+          par.nominal = q.value_si ? *q.value_si : 0.5 * (q.domain_si.lo + q.domain_si.hi);
+          par.domain = q.domain_si.bounded() ? q.domain_si : Domain::Point(*par.nominal);
+          par.provenance = Provenance::kDatabase;
+          par.note = "database part " + part.designation;
+          par.database_part = part.designation;
+          option.values[q.name] = par;
+        }
+        choice.parts.push_back(std::move(option));
+      }
+      if (choice.parts.empty()) {
+        std::set<std::string> types;
+        for (const componentdb::Part& part : db.Parts()) types.insert(part.type);
+        std::string have;
+        for (const std::string& t : types) have += (have.empty() ? "" : ", ") + t;
+        throw InputError("--choose-part " + id + ": the database " + db.file().string() + " has no part of type '" +
+                         c->type + "' (" + (have.empty() ? "it has no parts" : "it has parts of: " + have) +
+                         "); choose a component of a type it has parts of, or import parts with 'highlift db import'");
+      }
+      out.push_back(std::move(choice));
+    }
+    return out;
+  }
+
   CommonOptions common_;
   optimize::Options options_;
   std::string write_;
+  std::vector<std::string> choose_part_;
   bool no_verify_ = false;
   bool no_verify_peak_ = false;
   bool no_estimate_ = false;

@@ -143,6 +143,13 @@ class Optimizer {
   /// Design variables, margins, objective, constraint classes, the propagator.
   void Setup();
   Report Run();
+  /// A design must beat `value` (SI) to be accepted, and boxes whose bound exceeds it are pruned
+  /// (the best design of other part combinations); a pure part choice may have no design variable.
+  void CutOff(double value) {
+    best_ = value;
+    cut_off_ = std::isfinite(value);
+  }
+  void AllowNoDesignVariable() { allow_no_design_ = true; }
   Candidate Evaluate(const std::vector<double>& x, bool verify);
   const std::vector<std::string>& design_names() const { return design_names_; }
   std::vector<std::pair<double, double>> domains() const {
@@ -198,6 +205,7 @@ class Optimizer {
   // Incumbent.
   bool found_ = false;
   double best_ = kInf;
+  bool cut_off_ = false, allow_no_design_ = false;
   std::vector<double> best_x_;
   Candidate best_candidate_;
   Report counters_;
@@ -211,7 +219,7 @@ void Optimizer::ChooseDesignVariables() {
     for (const auto& [pname, p] : c.parameters)
       if (p.design && std::find(names.begin(), names.end(), c.id + "." + pname) == names.end())
         names.push_back(c.id + "." + pname);
-  if (names.empty())
+  if (names.empty() && !allow_no_design_)
     throw InputError("no design variable: mark parameters of the project with \"design\": true, or name them with "
                      "--design COMPONENT.PARAMETER (e.g. --design shaft_l1.wall_thickness)");
   for (const std::string& name : names) {
@@ -793,7 +801,8 @@ Report Optimizer::Run() {
   bool unproved = false;     // a box was closed without a proof (tiny, no design found in it)
   bool limit = false;
   while (!queue.empty()) {
-    if (found_ && tol.Closed(best_, std::min(closed_lb, queue.top().lb))) break;
+    // With a cut-off (another part combination's best), closing on it means nothing here is better.
+    if ((found_ || cut_off_) && tol.Closed(best_, std::min(closed_lb, queue.top().lb))) break;
     if (counters_.boxes >= options_.max_boxes || Seconds() > options_.max_seconds) {
       limit = true;
       break;
@@ -801,7 +810,7 @@ Report Optimizer::Run() {
     Node node = queue.top();
     queue.pop();
     ++counters_.boxes;
-    if (found_ && node.lb > best_) {
+    if (node.lb > best_) {
       ++counters_.pruned;
       continue;
     }
@@ -809,15 +818,15 @@ Report Optimizer::Run() {
     if (have_scenario_)
       for (std::size_t j = 0; j < uncertain_.size(); ++j) box[uncertain_[j]] = Interval(scenario_[j]);
     for (std::size_t i = 0; i < design_.size(); ++i) box[design_[i]] = node.d[i];
-    box[bound_] = found_ ? Interval(-kInf, best_) : icsp::Whole();
+    box[bound_] = std::isfinite(best_) ? Interval(-kInf, best_) : icsp::Whole();
     const icsp::PropagationReport pr = propagator_->Propagate(box);
     if (pr.status == icsp::Status::kInfeasible) {
-      if (found_) ++counters_.pruned;
+      if (std::isfinite(best_)) ++counters_.pruned;
       else ++counters_.infeasible_boxes;
       continue;
     }
     const double lb = std::max(node.lb, box[objective_].lower());
-    if (found_ && tol.Closed(best_, lb)) {
+    if ((found_ || cut_off_) && tol.Closed(best_, lb)) {
       closed_lb = std::min(closed_lb, lb);
       continue;
     }
@@ -831,7 +840,7 @@ Report Optimizer::Run() {
     const int before = counters_.improvements;
     LocalSearch(d);
     if (counters_.improvements != before && (counters_.improvements & (counters_.improvements - 1)) == 0) ChooseScenario();
-    if (found_ && tol.Closed(best_, lb)) {
+    if ((found_ || cut_off_) && tol.Closed(best_, lb)) {
       closed_lb = std::min(closed_lb, lb);
       continue;
     }
@@ -864,6 +873,14 @@ Report Optimizer::Run() {
     std::stable_sort(why.begin(), why.end(), [](const auto& a, const auto& b) { return a.second > b.second; });
     if (why.size() > 5) why.resize(5);
     r.rejections = why;
+  }
+  if (!found_ && cut_off_ && !unproved && !limit) {
+    r.status = Status::kNoDesignFound;
+    r.message = "cut off: no design better than " + FormatNumber(icsp::ToDisplay(best_, objective_unit_), 6) + " " +
+                objective_unit_ + " (the best of the other part choices)";
+    r.lower_bound = icsp::ToDisplay(std::min(lower, best_), objective_unit_);
+    r.seconds = Seconds();
+    return r;
   }
   if (!found_) {
     if (queue.empty() && !unproved && !limit) {
@@ -993,6 +1010,12 @@ void Options::Validate() const {
     throw InputError("optimize: max_seconds = " + Number(max_seconds) + " must be a finite number > 0");
   if (line_search_steps < 0 || line_search_steps > 60)
     throw InputError("optimize: line_search_steps = " + std::to_string(line_search_steps) + " must be from 0 to 60");
+  if (max_part_combinations < 1)
+    throw InputError("optimize: max_part_combinations = " + std::to_string(max_part_combinations) + " must be >= 1");
+  for (const PartChoice& c : choose_part)
+    if (c.parts.empty())
+      throw InputError("optimize: no part to choose from for component '" + c.component +
+                       "'; give at least one part (the database's parts of its type)");
   if (!(propagation_ratio >= 0.0 && propagation_ratio < 1.0))
     throw InputError("optimize: propagation_ratio = " + Number(propagation_ratio) + " must be in [0, 1)");
 }
@@ -1058,6 +1081,7 @@ std::string Report::FullReport() const {
       t.AddRow({d.name, d.unit, Number(d.value), "[" + Number(d.lower) + ", " + Number(d.upper) + "]",
                 std::isfinite(d.nominal) ? Number(d.nominal) : "-", d.at_bound});
     o << t.ToString();
+    for (const auto& [component, designation] : parts) o << "part of " << component << ": " << designation << "\n";
     o << "\nObjective " << objective << ": " << Number(best) << " " << objective_unit
       << " (upper bound over the remaining uncertain parameters); certified lower bound " << Number(lower_bound) << " "
       << objective_unit << "; relative gap " << FormatNumber(gap, 3) << "\n";
@@ -1073,6 +1097,17 @@ std::string Report::FullReport() const {
     if (active.empty()) o << "  nothing found at that step\n";
     for (const ActiveConstraint& a : active)
       o << "  - " << a.label << ": " << a.description << (a.text.empty() ? "" : "\n      " + a.text) << "\n";
+  }
+  if (!combinations.empty()) {
+    o << "\nPart combinations searched:\n";
+    TextTable c({"parts", "status", "best", "lower bound"}, {2, 3});
+    for (const Combination& k : combinations) {
+      std::string names;
+      for (const std::string& d : k.designations) names += (names.empty() ? "" : ", ") + d;
+      c.AddRow({names, k.status, std::isfinite(k.best) ? Number(k.best) : "-",
+                std::isfinite(k.lower_bound) ? Number(k.lower_bound) : "-"});
+    }
+    o << c.ToString();
   }
   o << "\n" << boxes << " boxes (" << pruned << " pruned by the bound, " << infeasible_boxes << " infeasible), "
     << candidates << " candidate designs checked (" << reduced_model_checks << " through size and peak), "
@@ -1117,6 +1152,18 @@ nlohmann::json Report::ToJson() const {
                  {"max", std::isfinite(t.upper) ? nlohmann::json(t.upper) : nlohmann::json(nullptr)}});
   j["mass_terms"] = m;
   if (!infeasibility.empty()) j["explanation"] = infeasibility;
+  if (!combinations.empty()) {
+    nlohmann::json chosen = nlohmann::json::object();
+    for (const auto& [component, designation] : parts) chosen[component] = designation;
+    j["parts"] = chosen;
+    nlohmann::json all = nlohmann::json::array();
+    for (const Combination& k : combinations)
+      all.push_back({{"parts", k.designations},
+                     {"status", k.status},
+                     {"best", std::isfinite(k.best) ? nlohmann::json(k.best) : nlohmann::json(nullptr)},
+                     {"lower_bound", std::isfinite(k.lower_bound) ? nlohmann::json(k.lower_bound) : nlohmann::json(nullptr)}});
+    j["combinations"] = all;
+  }
   nlohmann::json rej = nlohmann::json::array();
   for (const auto& [what, n] : rejections) rej.push_back({{"check", what}, {"candidates", n}});
   j["rejections"] = rej;
@@ -1128,8 +1175,115 @@ nlohmann::json Report::ToJson() const {
   return j;
 }
 
+namespace {
+
+/// SI from a display unit (the objectives' units are multiplicative: kg, kg*m^2, N*m).
+double FromDisplay(double v, const std::string& unit) { return v / icsp::ToDisplay(1.0, unit); }
+
+/// Branch over the part combinations (mixed radix over Options::choose_part), each combination's
+/// continuous search cut off at the best design so far; the certified bound is the least bound of
+/// the combinations (a combination proved infeasible or cut off bounds nothing below the best).
+Report OptimizeOverParts(const Project& project, const Options& options) {
+  const auto start = std::chrono::steady_clock::now();
+  auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
+  double combinations = 1;
+  for (const PartChoice& c : options.choose_part) combinations *= static_cast<double>(c.parts.size());
+  if (combinations > options.max_part_combinations)
+    throw InputError("optimize: " + FormatNumber(combinations, 6) + " combinations of parts for " +
+                     std::to_string(options.choose_part.size()) + " --choose-part component(s), more than " +
+                     std::to_string(options.max_part_combinations) +
+                     " (max_part_combinations): choose parts for fewer components");
+  Options inner = options;
+  inner.choose_part.clear();
+  Report best;
+  bool have = false;
+  double lower = kInf, best_si = kInf;
+  int boxes = 0, pruned = 0, infeasible_boxes = 0, candidates = 0, checks = 0, improvements = 0, peak_checks = 0,
+      peak_pruned = 0;
+  bool limit = false;
+  std::vector<std::size_t> index(options.choose_part.size(), 0);
+  std::vector<Report::Combination> done;
+  for (int k = 0; k < static_cast<int>(combinations); ++k) {
+    Project p = project;
+    Report::Combination combination;
+    for (std::size_t i = 0; i < index.size(); ++i) {
+      const PartOption& part = options.choose_part[i].parts[index[i]];
+      ApplyPart(p, options.choose_part[i].component, part);
+      combination.designations.push_back(part.designation);
+    }
+    for (std::size_t i = 0; i < index.size() && ++index[i] == options.choose_part[i].parts.size(); ++i) index[i] = 0;
+    // The time left, shared by the combinations left.
+    inner.max_seconds = (options.max_seconds - seconds()) / (combinations - k);
+    if (inner.max_seconds <= 0.0) {  // out of time: this combination bounds nothing
+      limit = true;
+      combination.status = "not searched (time limit)";
+      combination.best = combination.lower_bound = std::nan("");
+      done.push_back(combination);
+      lower = -kInf;
+      continue;
+    }
+    if (options.prepare) options.prepare(p);
+    detail::Optimizer o(p, inner);
+    o.AllowNoDesignVariable();
+    o.CutOff(best_si);
+    Report r = o.Run();
+    boxes += r.boxes, pruned += r.pruned, infeasible_boxes += r.infeasible_boxes, candidates += r.candidates;
+    checks += r.reduced_model_checks, improvements += r.improvements, peak_checks += r.peak_checks;
+    peak_pruned += r.peak_pruned;
+    combination.status = r.message.rfind("cut off", 0) == 0 ? "cut off" : ToString(r.status);
+    combination.best = r.found ? r.best : std::nan("");
+    combination.lower_bound = r.lower_bound;
+    done.push_back(combination);
+    if (r.status == Status::kStoppedAtLimit || (r.status == Status::kNoDesignFound && combination.status != "cut off"))
+      limit = limit || r.status == Status::kStoppedAtLimit || r.message.find("limit") != std::string::npos;
+    if (r.status != Status::kInfeasible) lower = std::min(lower, FromDisplay(r.lower_bound, r.objective_unit));
+    if (r.found) {
+      best_si = FromDisplay(r.best, r.objective_unit);
+      best = std::move(r);
+      best.parts.clear();
+      for (std::size_t i = 0; i < combination.designations.size(); ++i)
+        best.parts.push_back({options.choose_part[i].component, combination.designations[i]});
+      have = true;
+    } else if (!have) {
+      best = std::move(r);
+    }
+  }
+  best.combinations = done;
+  best.boxes = boxes, best.pruned = pruned, best.infeasible_boxes = infeasible_boxes, best.candidates = candidates;
+  best.reduced_model_checks = checks, best.improvements = improvements, best.peak_checks = peak_checks;
+  best.peak_pruned = peak_pruned;
+  best.seconds = seconds();
+  const Tolerance tol{options.relative_gap, options.absolute_gap};
+  if (have) {
+    lower = std::min(lower, best_si);
+    best.lower_bound = icsp::ToDisplay(lower, best.objective_unit);
+    best.gap = best_si != 0.0 ? (best_si - lower) / std::fabs(best_si) : best_si - lower;
+    best.status = tol.Closed(best_si, lower) ? Status::kOptimal : Status::kStoppedAtLimit;
+    best.message = std::to_string(done.size()) + " part combination(s) searched; " +
+                   (best.status == Status::kOptimal ? "the gap closed within the tolerance" : "the gap is open");
+  } else if (!limit && std::all_of(done.begin(), done.end(), [](const auto& c) { return c.status == "infeasible"; })) {
+    best.status = Status::kInfeasible;
+    best.message = "no part combination has a design that meets every requirement and margin (" +
+                   std::to_string(done.size()) + " searched, each proved infeasible); the last one's explanation follows";
+  } else {
+    best.status = Status::kNoDesignFound;
+    best.message = "no design found in " + std::to_string(done.size()) +
+                   " part combination(s); this proves nothing for those not proved infeasible (see the combinations)";
+  }
+  return best;
+}
+
+}  // namespace
+
+void ApplyPart(Project& project, const std::string& component, const PartOption& part) {
+  Component* c = project.FindComponent(component);
+  if (!c) throw InputError("part choice: no component '" + component + "' in the project");
+  for (const auto& [name, value] : part.values) c->parameters[name] = value;
+}
+
 Report Optimize(const Project& project, const Options& options) {
   options.Validate();
+  if (!options.choose_part.empty()) return OptimizeOverParts(project, options);
   detail::Optimizer o(project, options);
   return o.Run();
 }

@@ -186,6 +186,61 @@ INSTANTIATE_TEST_SUITE_P(Examples, OptimizeEveryExample,
                          ::testing::Values("a380_class_flaps", "hydraulic_pdu_flaps", "a320_class_flaps",
                                            "a320_class_slats"));
 
+// --choose-part over the database's torque shaft parts (its tubes, each with its material): the
+// chain's shaft becomes the lightest tube that carries 2 kN*m and is stiff enough; the written
+// project names the part and passes check.
+TEST(OptimizeCli, ChoosePartPicksADatabaseTubeAndWritesIt) {
+  const std::filesystem::path dir = std::filesystem::path(HIGHLIFT_BINARY_DIR) / "optimize-cli-choose-part";
+  std::filesystem::create_directories(dir);
+  const std::filesystem::path problem = dir / "chain.json", best = dir / "best.json";
+  std::ofstream(problem) << R"json({"format": "highlift-project/1", "name": "one tube", "components": [
+    {"id": "pdu", "type": "pdu", "parameters": {"motor_count": 2, "motor_inertia": "3e-4 kg*m^2", "ratio": 20,
+      "gear_inertia": "0.02 kg*m^2"}},
+    {"id": "shaft_1", "type": "torque_shaft", "labels": {"side": "left"},
+     "parameters": {"length": "2 m", "outer_diameter": "40 mm", "wall_thickness": "2 mm", "density": "4420 kg/m^3",
+                    "shear_modulus": "44 GPa", "allowable_shear_stress": "500 MPa"}},
+    {"id": "wtb", "type": "wing_tip_brake", "labels": {"side": "left"}, "parameters": {"inertia": "5e-4 kg*m^2"}}],
+  "connections": [["pdu.left", "shaft_1.a"], ["shaft_1.b", "wtb.a"]],
+  "requirements": [{"id": "capacity", "expression": "shaft_1.torque_capacity >= 2000 N*m"},
+                   {"id": "stiffness", "expression": "shaft_1.c >= 5000 N*m/rad"}]})json";
+  std::filesystem::remove(best);
+  const CliResult r = RunCli({"optimize", problem.string(), "--choose-part", "shaft_1", "--write", best.string(), "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  const nlohmann::json doc = nlohmann::json::parse(r.out);
+  // The parts' walls and moduli are intervals: the mass of a part is its worst case, and the gap
+  // may stay open by that width (docs/optimize.md); the bound is certified either way.
+  EXPECT_TRUE(doc["status"] == "optimal" || doc["status"] == "stopped_at_limit") << doc["status"];
+  const std::string part = doc["parts"]["shaft_1"];
+  EXPECT_EQ(part.rfind("TS-", 0), 0u) << part;
+  EXPECT_GE(doc["combinations"].size(), 8u);  // every torque_shaft part of the shipped database
+  int infeasible = 0;
+  for (const auto& c : doc["combinations"]) infeasible += c["status"] == "infeasible";
+  EXPECT_GE(infeasible, 1) << doc["combinations"].dump();  // the thin tubes cannot be stiff enough
+  EXPECT_LE(doc["lower_bound"].get<double>(), doc["best"].get<double>());
+  std::ifstream in(best);
+  const nlohmann::json written = nlohmann::json::parse(in);
+  EXPECT_EQ(written["components"][1]["parameters"]["wall_thickness"]["part"], part);
+  const CliResult check = RunCli({"check", best.string()});
+  EXPECT_EQ(check.exit_code, 0) << check.out << check.err;
+}
+
+// A database with no part of the component's type: exit 2, naming the type and the database.
+TEST(OptimizeCli, ChoosePartWithoutPartsOfThatTypeExits2) {
+  const std::filesystem::path dir = std::filesystem::path(HIGHLIFT_BINARY_DIR) / "optimize-cli-no-parts";
+  std::filesystem::create_directories(dir);
+  const std::filesystem::path csv = dir / "materials.csv", db = dir / "materials.sqlite";
+  std::filesystem::remove(db);
+  std::ofstream(csv) << "type,designation,program,supplier,note,parameter,value,min,max,unit,tag,source\n"
+                        "material,Ti-6Al-4V,,,,density,4420,,,kg/m^3,P,test\n"
+                        "material,Ti-6Al-4V,,,,shear_modulus,44,,,GPa,P,test\n"
+                        "material,Ti-6Al-4V,,,,allowable_shear_stress,550,,,MPa,E,test\n";
+  ASSERT_EQ(RunCli({"db", "import", csv.string(), "--db", db.string()}).exit_code, 0);
+  const CliResult r = RunCli({"optimize", "examples/a320_class_flaps.json", "--choose-part", "wtb_left", "--db", db.string()});
+  EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
+  EXPECT_NE(r.err.find("no part of type 'wing_tip_brake'"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(db.filename().string()), std::string::npos) << r.err;
+}
+
 TEST(OptimizeCli, BadOptionValueExits2) {
   const CliResult r = RunCli({"optimize", "examples/a320_class_flaps.json", "--gap", "-1"});
   EXPECT_EQ(r.exit_code, 2) << r.out << r.err;

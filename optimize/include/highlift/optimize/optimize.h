@@ -18,6 +18,8 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -28,6 +30,19 @@
 #include "highlift/core/project.h"
 
 namespace highlift::optimize {
+
+/// One part a component may be (a database row): the values it fixes, by parameter name (SI;
+/// nominal and domain as the database gives them).
+struct PartOption {
+  std::string designation;                  ///< the database's designation, e.g. "TS-TI-45x1.8"
+  std::map<std::string, Parameter> values;  ///< provenance database, database_part = designation
+};
+
+/// A discrete choice: `component` is one of `parts`.
+struct PartChoice {
+  std::string component;
+  std::vector<PartOption> parts;
+};
 
 struct Options {
   /// "mass" (the torque shafts by their tube law, other components by their estimation laws),
@@ -49,6 +64,16 @@ struct Options {
   bool verify_size = true;          ///< an upper bound must also pass reduced_models' Size over the
                                     ///< remaining domains (`highlift size` exits 0 for it)
   bool verify_peak = true;          ///< ... and AnalysePeaks (`highlift peak` exits 0 for it)
+  /// Discrete choices (`--choose-part COMPONENT`): each listed component is one of its parts. The
+  /// search branches over the combinations first (each one's project: the parts' values fixed,
+  /// then `prepare`), best root bound first, each combination's continuous branch and bound cut off
+  /// at the best design of the others; the lower bound is the least over the combinations. With
+  /// choices, the design variables may be none (a pure part choice).
+  std::vector<PartChoice> choose_part;
+  int max_part_combinations = 512;  ///< more combinations than this is an InputError
+  /// Applied to each combination's project before its search (the CLI: the estimator, so that
+  /// what a part's values imply, e.g. an inertia from a rating, follows the part). Default: none.
+  std::function<void(Project&)> prepare;
   /// Throws InputError naming the bad option and the remedy.
   void Validate() const;
 };
@@ -106,6 +131,16 @@ struct Report {
   std::vector<ActiveConstraint> active;
   std::vector<MassTerm> mass_terms;  ///< objective "mass": where each component's mass comes from
   std::string infeasibility;    ///< kInfeasible: check's explanation of the conflict
+  /// With part choices: the chosen part per component (of the best design), and every combination
+  /// searched with its outcome ("optimal", "infeasible", "cut off", ...) and bounds.
+  std::vector<std::pair<std::string, std::string>> parts;
+  struct Combination {
+    std::vector<std::string> designations;  ///< in the order of Options::choose_part
+    std::string status;
+    double best = 0.0;                      ///< NaN when no design
+    double lower_bound = 0.0;
+  };
+  std::vector<Combination> combinations;
   /// Why candidate designs were rejected: the first failing constraint (label) or size/peak item,
   /// with how many candidates it rejected, most frequent first (at most 5).
   std::vector<std::pair<std::string, int>> rejections;
@@ -164,6 +199,10 @@ class DesignEvaluator {
  private:
   std::unique_ptr<detail::Optimizer> impl_;
 };
+
+/// `project` with `component`'s parameters set to the part's values (provenance database). Throws
+/// InputError when the project has no such component.
+void ApplyPart(Project& project, const std::string& component, const PartOption& part);
 
 /// `project` with each named parameter fixed at its value (SI): nominal and a point domain,
 /// provenance "optimized". Throws InputError for a name that is not a parameter of the project.
