@@ -182,6 +182,29 @@ TEST_P(OptimizeEveryExample, WithNoBackActuatorsTheDesignPassesCheckSizeAndPeak)
   }
 }
 
+// --verify-transient: the best design's campaign (every jam and rupture of the A320-class flaps,
+// full transient simulations, here at the nominal point only) runs and is reported in the JSON.
+TEST(OptimizeCli, VerifyTransientRunsTheBestDesignsCampaign) {
+  const std::filesystem::path dir = std::filesystem::path(HIGHLIFT_BINARY_DIR) / "optimize-verify-transient";
+  const std::filesystem::path problem = DesignProblem("a320_class_flaps", dir, true), out = dir / "campaign";
+  std::filesystem::remove_all(out);
+  const CliResult r = RunCli({"optimize", problem.string(), "--gap", "0.01", "--verify-transient",
+                              "--transient-samples", "0", "--transient-out", out.string(), "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  const nlohmann::json t = nlohmann::json::parse(r.out)["transient"];
+  EXPECT_EQ(t["runs_done"], t["runs_total"]);
+  EXPECT_GE(t["runs_total"].get<int>(), 20);  // the jams and ruptures of both wings
+  EXPECT_EQ(t["failures"], 0);
+  EXPECT_EQ(t["ok"], true);
+  EXPECT_TRUE(std::filesystem::exists(out / "campaign.sqlite"));
+}
+
+TEST(OptimizeCli, TransientSamplesWithoutVerifyTransientExits2) {
+  const CliResult r = RunCli({"optimize", "examples/a320_class_flaps.json", "--transient-samples", "8"});
+  EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
+  EXPECT_NE(r.err.find("--verify-transient"), std::string::npos) << r.err;
+}
+
 INSTANTIATE_TEST_SUITE_P(Examples, OptimizeEveryExample,
                          ::testing::Values("a380_class_flaps", "hydraulic_pdu_flaps", "a320_class_flaps",
                                            "a320_class_slats"));
