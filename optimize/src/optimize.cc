@@ -1014,6 +1014,8 @@ void Optimizer::Finish(Report& r) {
 
 namespace {
 std::string Number(double v) { return FormatNumber(v, 6); }
+/// The number, or null when it is not finite (NaN: none; infinite: unbounded).
+nlohmann::json FiniteOrNull(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
 }  // namespace
 
 DesignEvaluator::DesignEvaluator(const Project& project, const Options& options)
@@ -1168,13 +1170,13 @@ nlohmann::json Report::ToJson() const {
     j["gap"] = gap;
   } else {
     j["best"] = nullptr;
-    j["lower_bound"] = std::isfinite(lower_bound) ? nlohmann::json(lower_bound) : nlohmann::json(nullptr);
+    j["lower_bound"] = FiniteOrNull(lower_bound);
     j["gap"] = nullptr;
   }
   nlohmann::json d = nlohmann::json::array();
   for (const DesignValue& v : design)
     d.push_back({{"name", v.name}, {"unit", v.unit}, {"value", v.value}, {"domain", {v.lower, v.upper}},
-                 {"nominal", std::isfinite(v.nominal) ? nlohmann::json(v.nominal) : nlohmann::json(nullptr)},
+                 {"nominal", FiniteOrNull(v.nominal)},
                  {"at_bound", v.at_bound}});
   j["design"] = d;
   nlohmann::json a = nlohmann::json::array();
@@ -1184,8 +1186,8 @@ nlohmann::json Report::ToJson() const {
   for (const MassTerm& t : mass_terms)
     m.push_back({{"component", t.component},
                  {"law", t.law},
-                 {"min", std::isfinite(t.lower) ? nlohmann::json(t.lower) : nlohmann::json(nullptr)},
-                 {"max", std::isfinite(t.upper) ? nlohmann::json(t.upper) : nlohmann::json(nullptr)}});
+                 {"min", FiniteOrNull(t.lower)},
+                 {"max", FiniteOrNull(t.upper)}});
   j["mass_terms"] = m;
   if (!infeasibility.empty()) j["explanation"] = infeasibility;
   if (!combinations.empty()) {
@@ -1196,8 +1198,8 @@ nlohmann::json Report::ToJson() const {
     for (const Combination& k : combinations)
       all.push_back({{"parts", k.designations},
                      {"status", k.status},
-                     {"best", std::isfinite(k.best) ? nlohmann::json(k.best) : nlohmann::json(nullptr)},
-                     {"lower_bound", std::isfinite(k.lower_bound) ? nlohmann::json(k.lower_bound) : nlohmann::json(nullptr)}});
+                     {"best", FiniteOrNull(k.best)},
+                     {"lower_bound", FiniteOrNull(k.lower_bound)}});
     j["combinations"] = all;
   }
   nlohmann::json rej = nlohmann::json::array();
