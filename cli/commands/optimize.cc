@@ -33,6 +33,11 @@ class OptimizeCommand : public Command {
                    "a design variable COMPONENT.PARAMETER (repeatable), chosen within its domain; in addition to the "
                    "parameters the project marks \"design\": true")
         ->delimiter(',');
+    app.add_option("--pareto", pareto_,
+                   "OBJ1,OBJ2: the Pareto front of two objectives by epsilon constraints (OBJ1 as --minimize; OBJ2 an "
+                   "expression of the constraint language, e.g. mass,peak.jam_l1.torque)");
+    app.add_option("--pareto-points", options_.pareto_points, "epsilon values of --pareto (default 5)")
+        ->check(NumberIn(2, 50));
     app.add_option("--choose-part", choose_part_,
                    "a discrete choice COMPONENT (repeatable): the component is one of the database's parts of its "
                    "type, each part's values fixed from its row (provenance database); the search branches over them")
@@ -66,6 +71,14 @@ class OptimizeCommand : public Command {
     options_.verify_size = !no_verify_;
     options_.verify_peak = !no_verify_ && !no_verify_peak_;
     options_.Validate();
+    if (!pareto_.empty()) {
+      const auto comma = pareto_.find(',');
+      if (comma == std::string::npos || comma == 0 || comma + 1 == pareto_.size())
+        throw InputError("--pareto '" + pareto_ + "': give two objectives OBJ1,OBJ2 (e.g. mass,peak.jam_l1.torque)");
+      options_.objective = pareto_.substr(0, comma);
+      options_.pareto = pareto_.substr(comma + 1);
+      options_.Validate();
+    }
     if (transient_samples_ != 4 && !verify_transient_)
       throw InputError("--transient-samples needs --verify-transient");
     std::optional<componentdb::ComponentDatabase> database;
@@ -177,6 +190,7 @@ class OptimizeCommand : public Command {
   optimize::Options options_;
   std::string write_;
   std::vector<std::string> choose_part_;
+  std::string pareto_;
   bool verify_transient_ = false;
   int transient_samples_ = 4;
   std::string transient_out_;

@@ -1048,6 +1048,14 @@ void Options::Validate() const {
     throw InputError("optimize: max_seconds = " + Number(max_seconds) + " must be a finite number > 0");
   if (line_search_steps < 0 || line_search_steps > 60)
     throw InputError("optimize: line_search_steps = " + std::to_string(line_search_steps) + " must be from 0 to 60");
+  if (!pareto.empty() && (pareto == "mass" || pareto == "inertia"))
+    throw InputError("optimize: the second objective of --pareto is bounded by a constraint, so it must be an "
+                     "expression of the constraint language, not '" + pareto + "'; give '" + pareto +
+                     "' first (--pareto " + pareto + ",EXPR)");
+  if (!pareto.empty() && (pareto_points < 2 || pareto_points > 50))
+    throw InputError("optimize: pareto_points = " + std::to_string(pareto_points) + " must be from 2 to 50");
+  if (!pareto.empty() && !choose_part.empty())
+    throw InputError("optimize: --pareto and --choose-part together are not supported; give one of them");
   if (max_part_combinations < 1)
     throw InputError("optimize: max_part_combinations = " + std::to_string(max_part_combinations) + " must be >= 1");
   for (const PartChoice& c : choose_part)
@@ -1136,6 +1144,16 @@ std::string Report::FullReport() const {
     for (const ActiveConstraint& a : active)
       o << "  - " << a.label << ": " << a.description << (a.text.empty() ? "" : "\n      " + a.text) << "\n";
   }
+  if (!pareto.empty()) {
+    o << "\nPareto front (" << objective << " against " << pareto_objective << "):\n";
+    TextTable t({pareto_objective + " <= [" + pareto_unit + "]", objective + " [" + objective_unit + "]",
+                 "certified >=", pareto_objective + " at the design", "status"},
+                {0, 1, 2, 3});
+    for (const ParetoPoint& p : pareto)
+      t.AddRow({Number(p.epsilon), Number(p.objective), Number(p.lower_bound),
+                std::isfinite(p.second) ? Number(p.second) : "-", p.status});
+    o << t.ToString();
+  }
   if (!combinations.empty()) {
     o << "\nPart combinations searched:\n";
     TextTable c({"parts", "status", "best", "lower bound"}, {2, 3});
@@ -1195,12 +1213,28 @@ nlohmann::json Report::ToJson() const {
     for (const auto& [component, designation] : parts) chosen[component] = designation;
     j["parts"] = chosen;
     nlohmann::json all = nlohmann::json::array();
-    for (const Combination& k : combinations)
-      all.push_back({{"parts", k.designations},
-                     {"status", k.status},
-                     {"best", FiniteOrNull(k.best)},
-                     {"lower_bound", FiniteOrNull(k.lower_bound)}});
+    for (const Combination& k : combinations) {
+      nlohmann::json row = {{"parts", k.designations}, {"status", k.status}};
+      row["best"] = FiniteOrNull(k.best);
+      row["lower_bound"] = FiniteOrNull(k.lower_bound);
+      all.push_back(row);
+    }
     j["combinations"] = all;
+  }
+  if (!pareto_objective.empty()) {
+    nlohmann::json front = nlohmann::json::array();
+    for (const ParetoPoint& p : pareto) {
+      nlohmann::json d = nlohmann::json::object();
+      for (const DesignValue& v : p.design) d[v.name] = v.value;
+      front.push_back({{"epsilon", p.epsilon},
+                       {"objective", FiniteOrNull(p.objective)},
+                       {"lower_bound", FiniteOrNull(p.lower_bound)},
+                       {"second", FiniteOrNull(p.second)},
+                       {"status", p.status},
+                       {"design", d}});
+    }
+    j["pareto"] = {{"objectives", {objective, pareto_objective}}, {"units", {objective_unit, pareto_unit}},
+                   {"front", front}};
   }
   nlohmann::json rej = nlohmann::json::array();
   for (const auto& [what, n] : rejections) rej.push_back({{"check", what}, {"candidates", n}});
@@ -1311,6 +1345,78 @@ Report OptimizeOverParts(const Project& project, const Options& options) {
   return best;
 }
 
+/// The second objective's upper bound over the remaining domains at a design (the project with the
+/// design fixed, no design variable left); NaN when it has none there.
+double ObjectiveAt(const Project& project, const Options& options, const std::string& objective,
+                   const std::vector<DesignValue>& design, double seconds) {
+  std::vector<std::pair<std::string, double>> values;
+  for (const DesignValue& d : design) values.push_back({d.name, d.value_si});
+  Options o = options;
+  o.objective = objective;
+  o.design.clear();
+  o.max_seconds = std::max(0.1, seconds);
+  detail::Optimizer opt(FixDesign(project, values), o);
+  opt.AllowNoDesignVariable();
+  const Report r = opt.Run();
+  return r.found ? r.best : std::nan("");
+}
+
+/// The front of two objectives by epsilon constraints (Options::pareto): OBJ2 alone, OBJ1 alone,
+/// then OBJ1 under OBJ2 <= epsilon (a requirement added to the project) between the two.
+Report OptimizePareto(const Project& project, const Options& options) {
+  const auto start = std::chrono::steady_clock::now();
+  auto share = [&](int runs_left) {
+    const double left = options.max_seconds - std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return std::max(0.1, left / runs_left);
+  };
+  const int n = options.pareto_points;
+  Options o = options;
+  o.pareto.clear();
+  Options o2 = o;
+  o2.objective = options.pareto;
+  o2.max_seconds = share(n + 2);
+  const Report r2 = Optimize(project, o2);
+  o.max_seconds = share(n + 1);
+  Report out = Optimize(project, o);
+  out.pareto_objective = options.pareto;
+  out.pareto_unit = r2.objective_unit;
+  if (!out.found || !r2.found) {
+    if (!r2.found) out.message += "; the second objective '" + options.pareto + "' found no design: " + r2.message;
+    return out;
+  }
+  const double lo = r2.best;
+  double hi = ObjectiveAt(project, o, options.pareto, out.design, share(n + 1));
+  if (!std::isfinite(hi) || hi < lo) hi = lo;
+  std::vector<Report::ParetoPoint> points;
+  for (int k = 0; k < n; ++k) {
+    const double eps = lo + (hi - lo) * k / (n - 1);
+    const double bound = eps + 1e-9 * std::fabs(eps);  // the written number rounds either way
+    Project p = project;
+    p.requirements.push_back({"pareto_epsilon",
+                              options.pareto + " <= " + FormatNumber(bound, 12) +
+                                  (out.pareto_unit.empty() ? "" : " " + out.pareto_unit),
+                              "Pareto front: the second objective at most epsilon", {}});
+    Options ok = o;
+    ok.max_seconds = share(n - k);
+    const Report r = Optimize(p, ok);
+    Report::ParetoPoint pt;
+    pt.epsilon = eps;
+    pt.status = ToString(r.status);
+    pt.objective = r.found ? r.best : std::nan("");
+    pt.lower_bound = r.lower_bound;
+    pt.second = r.found ? ObjectiveAt(project, o, options.pareto, r.design, share(n - k)) : std::nan("");
+    pt.design = r.design;
+    // By increasing epsilon the objective can only fall: a point no better than the last kept one
+    // is not on the front.
+    if (!r.found || (!points.empty() && !(pt.objective < points.back().objective))) continue;
+    points.push_back(std::move(pt));
+  }
+  out.pareto = points;
+  out.message += "; Pareto front of " + std::to_string(points.size()) + " point(s) over " + options.pareto + " in [" +
+                 FormatNumber(lo, 6) + ", " + FormatNumber(hi, 6) + "] " + out.pareto_unit;
+  return out;
+}
+
 }  // namespace
 
 void ApplyPart(Project& project, const std::string& component, const PartOption& part) {
@@ -1321,6 +1427,7 @@ void ApplyPart(Project& project, const std::string& component, const PartOption&
 
 Report Optimize(const Project& project, const Options& options) {
   options.Validate();
+  if (!options.pareto.empty()) return OptimizePareto(project, options);
   if (!options.choose_part.empty()) return OptimizeOverParts(project, options);
   detail::Optimizer o(project, options);
   return o.Run();

@@ -217,6 +217,43 @@ TEST(Optimize, PartChoiceWithoutPartsOrTooManyCombinationsIsAnInputError) {
   }
 }
 
+// The chain's tube against two objectives: its mass falls with the diameter (the stiffness then
+// needs a thinner wall), and a small diameter is the other objective (the space in the wing). The
+// front runs from the least diameter to the least mass: by increasing epsilon on the diameter the
+// mass falls, every point's diameter is within its epsilon, and each point's mass is certified.
+TEST(Optimize, ParetoFrontOfMassAgainstDiameter) {
+  Options o;
+  o.pareto = "shaft_1.outer_diameter";
+  o.pareto_points = 4;
+  o.relative_gap = 1e-4;
+  const Report r = Optimize(Load(Chain()), o);
+  ASSERT_TRUE(r.found) << r.BriefReport();
+  ASSERT_GE(r.pareto.size(), 3u) << r.FullReport();
+  for (std::size_t i = 0; i < r.pareto.size(); ++i) {
+    const Report::ParetoPoint& p = r.pareto[i];
+    EXPECT_LE(p.lower_bound, p.objective * (1 + 1e-12));
+    EXPECT_LE(p.second, p.epsilon * (1 + 1e-6)) << i;
+    if (i > 0) {
+      EXPECT_LT(p.objective, r.pareto[i - 1].objective) << i;
+      EXPECT_GT(p.epsilon, r.pareto[i - 1].epsilon) << i;
+    }
+  }
+  // The last point is the unconstrained least mass.
+  EXPECT_NEAR(r.pareto.back().objective, r.best, 1e-4 * r.best);
+  EXPECT_EQ(r.ToJson()["pareto"]["front"].size(), r.pareto.size());
+}
+
+TEST(Optimize, ParetoSecondObjectiveMustBeAnExpression) {
+  Options o;
+  o.pareto = "mass";
+  try {
+    o.Validate();
+    FAIL() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("--pareto mass,EXPR"), std::string::npos) << e.what();
+  }
+}
+
 TEST(OptimizeOptions, DefaultsAreValidAndBadOnesNamed) {
   EXPECT_NO_THROW(Options{}.Validate());
   Options o;

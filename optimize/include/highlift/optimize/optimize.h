@@ -74,6 +74,12 @@ struct Options {
   /// Applied to each combination's project before its search (the CLI: the estimator, so that
   /// what a part's values imply, e.g. an inertia from a rating, follows the part). Default: none.
   std::function<void(Project&)> prepare;
+  /// `--pareto OBJ1,OBJ2`: the second objective, an expression of the constraint language (the
+  /// first is `objective`). Optimize then traces the front by epsilon constraints: OBJ2 alone at
+  /// its least, OBJ1 alone (and OBJ2 at its design), then OBJ1 least under OBJ2 <= epsilon for
+  /// pareto_points values of epsilon evenly between the two; max_seconds is shared by the runs.
+  std::string pareto;
+  int pareto_points = 5;  ///< epsilon values (2 to 50), the ends included
   /// Throws InputError naming the bad option and the remedy.
   void Validate() const;
 };
@@ -141,6 +147,18 @@ struct Report {
     double lower_bound = 0.0;
   };
   std::vector<Combination> combinations;
+  /// With Options::pareto: the front, by increasing epsilon; each point the best OBJ1 design
+  /// under OBJ2 <= epsilon (points that were no better than a neighbour are dropped).
+  struct ParetoPoint {
+    double epsilon = 0.0;      ///< the bound on OBJ2 (its display unit)
+    double objective = 0.0;    ///< OBJ1 at the design (upper bound over the remaining domains)
+    double lower_bound = 0.0;  ///< OBJ1's certified bound under OBJ2 <= epsilon
+    double second = 0.0;       ///< OBJ2 at the design (upper bound over the remaining domains)
+    std::string status;
+    std::vector<DesignValue> design;
+  };
+  std::string pareto_objective, pareto_unit;
+  std::vector<ParetoPoint> pareto;
   /// Why candidate designs were rejected: the first failing constraint (label) or size/peak item,
   /// with how many candidates it rejected, most frequent first (at most 5).
   std::vector<std::pair<std::string, int>> rejections;
