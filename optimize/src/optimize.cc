@@ -143,6 +143,13 @@ class Optimizer {
   /// Design variables, margins, objective, constraint classes, the propagator.
   void Setup();
   Report Run();
+  /// A design must beat `value` (SI) to be accepted, and boxes whose bound exceeds it are pruned
+  /// (the best design of other part combinations); a pure part choice may have no design variable.
+  void CutOff(double value) {
+    best_ = value;
+    cut_off_ = std::isfinite(value);
+  }
+  void AllowNoDesignVariable() { allow_no_design_ = true; }
   Candidate Evaluate(const std::vector<double>& x, bool verify);
   const std::vector<std::string>& design_names() const { return design_names_; }
   std::vector<std::pair<double, double>> domains() const {
@@ -162,6 +169,8 @@ class Optimizer {
   void ProbeReducedModels();
   void Consider(const std::vector<double>& x, const Candidate& c);
   void LocalSearch(const std::vector<Interval>& d);
+  std::string PeakProof(const std::vector<Interval>& d);
+  void CoordinateSearch();
   void Sensitivities();
   void ChooseScenario();
   std::vector<double> StepTowardsSmaller(const std::vector<double>& x) const;
@@ -197,10 +206,12 @@ class Optimizer {
   // Incumbent.
   bool found_ = false;
   double best_ = kInf;
+  bool cut_off_ = false, allow_no_design_ = false;
   std::vector<double> best_x_;
   Candidate best_candidate_;
   Report counters_;
   std::map<std::string, int> rejected_;
+  std::map<std::string, int> peak_proofs_;  ///< boxes `peak` proved infeasible, by the failing margin
 };
 
 void Optimizer::ChooseDesignVariables() {
@@ -209,7 +220,7 @@ void Optimizer::ChooseDesignVariables() {
     for (const auto& [pname, p] : c.parameters)
       if (p.design && std::find(names.begin(), names.end(), c.id + "." + pname) == names.end())
         names.push_back(c.id + "." + pname);
-  if (names.empty())
+  if (names.empty() && !allow_no_design_)
     throw InputError("no design variable: mark parameters of the project with \"design\": true, or name them with "
                      "--design COMPONENT.PARAMETER (e.g. --design shaft_l1.wall_thickness)");
   for (const std::string& name : names) {
@@ -569,6 +580,64 @@ void Optimizer::ChooseScenario() {
 
 }
 
+/// `highlift peak` over a whole box of designs (AnalysePeaks' enclosures over the box and the
+/// remaining domains): the first component whose load exceeds its allowable at every point of the
+/// box (an upper bound of its margin below 0: PeakReport's margin_max), named with its case and
+/// numbers; "" when no margin fails for certain. A box it names holds no design that passes peak.
+std::string Optimizer::PeakProof(const std::vector<Interval>& d) {
+  if (!verify_peak_) return "";
+  Project p = project_;
+  for (std::size_t i = 0; i < design_.size(); ++i) {
+    const std::string& name = design_names_[i];
+    const auto dot = name.find('.');
+    Parameter& par = p.FindComponent(name.substr(0, dot))->parameters[name.substr(dot + 1)];
+    par.domain = {d[i].lower(), d[i].upper()};
+    par.nominal = Mid(d[i]);
+  }
+  reduced_models::PeakOptions po;
+  po.rank = false;
+  ++counters_.peak_checks;
+  const reduced_models::PeakReport pr = reduced_models::AnalysePeaks(p, po);
+  for (const reduced_models::ComponentPeak& w : pr.worst)
+    if (w.margin_max < 0.0)
+      return "peak: " + w.component + " in '" + w.certain_case + "' carries at least " +
+             FormatNumber(w.local_torque_certain, 4) + " N*m, more than its " + w.allowable_name + " of at most " +
+             FormatNumber(w.allowable_max, 4) + " N*m (margin at most " + FormatNumber(w.margin_max, 3) + ")";
+  return "";
+}
+
+/// Polishes the incumbent one design variable at a time: a bisection from its value towards the
+/// end of its whole domain the objective likes (the others fixed), keeping the farthest robustly
+/// feasible point; the variables the objective moves most first. The line search inside boxes
+/// moves every variable together, so one binding variable stops all of them; this frees the
+/// others (run after the 1st, 2nd, 4th, ... improvement: n x line_search_steps evaluations).
+void Optimizer::CoordinateSearch() {
+  std::vector<std::size_t> order(design_.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return sensitivity_[a] > sensitivity_[b]; });
+  for (std::size_t i : order) {
+    if (sign_[i] == 0.0 || Seconds() > options_.max_seconds) continue;
+    const Interval dom = initial_[design_[i]];
+    const double from = best_x_[i], to = sign_[i] > 0 ? dom.lower() : dom.upper();
+    if (from == to) continue;
+    double lo = 0.0, hi = 1.0;
+    for (int s = 0; s <= options_.line_search_steps; ++s) {
+      const double t = s == 0 ? 1.0 : 0.5 * (lo + hi);
+      std::vector<double> x = best_x_;
+      const double base = from;  // best_x_[i] may have moved: keep the segment of this variable
+      x[i] = base + t * (to - base);
+      const Candidate c = Evaluate(x, true);
+      Consider(x, c);
+      if (c.feasible) {
+        if (s == 0) break;  // the end itself is feasible
+        lo = t;
+      } else {
+        hi = t;
+      }
+    }
+  }
+}
+
 /// Feasible points inside a contracted box: the middle, else the corner the objective likes
 /// least (the "safe" one); from the feasible one a bisection along the segment towards the
 /// corner the objective likes most, keeping the farthest robustly feasible point.
@@ -727,6 +796,27 @@ Report Optimizer::Run() {
     }
   }
 
+  {
+    // `peak` over the whole design domains: a margin that fails at every point proves that no
+    // design passes `highlift peak` (its enclosures are guaranteed), before any search.
+    std::vector<Interval> d;
+    for (int v : design_) d.push_back(root[v]);
+    const std::string proof = PeakProof(d);
+    if (!proof.empty()) {
+      r.status = Status::kInfeasible;
+      r.message = "no design within the domains of " + std::to_string(design_.size()) +
+                  " design variable(s) passes `highlift peak` (proved by peak's enclosures over the whole domains)";
+      r.infeasibility = "  - " + proof +
+                        "\nfor every value of the design variables; give the component a larger allowable "
+                        "(a design variable or a wider domain) or widen the domains that lower its load\n";
+      r.peak_checks = counters_.peak_checks;
+      r.peak_pruned = 1;
+      r.lower_bound = icsp::ToDisplay(root[objective_].lower(), objective_unit_);
+      r.seconds = Seconds();
+      return r;
+    }
+  }
+
   struct Node {
     std::vector<Interval> d;
     double lb;
@@ -744,7 +834,8 @@ Report Optimizer::Run() {
   bool unproved = false;     // a box was closed without a proof (tiny, no design found in it)
   bool limit = false;
   while (!queue.empty()) {
-    if (found_ && tol.Closed(best_, std::min(closed_lb, queue.top().lb))) break;
+    // With a cut-off (another part combination's best), closing on it means nothing here is better.
+    if ((found_ || cut_off_) && tol.Closed(best_, std::min(closed_lb, queue.top().lb))) break;
     if (counters_.boxes >= options_.max_boxes || Seconds() > options_.max_seconds) {
       limit = true;
       break;
@@ -752,7 +843,7 @@ Report Optimizer::Run() {
     Node node = queue.top();
     queue.pop();
     ++counters_.boxes;
-    if (found_ && node.lb > best_) {
+    if (node.lb > best_) {
       ++counters_.pruned;
       continue;
     }
@@ -760,24 +851,32 @@ Report Optimizer::Run() {
     if (have_scenario_)
       for (std::size_t j = 0; j < uncertain_.size(); ++j) box[uncertain_[j]] = Interval(scenario_[j]);
     for (std::size_t i = 0; i < design_.size(); ++i) box[design_[i]] = node.d[i];
-    box[bound_] = found_ ? Interval(-kInf, best_) : icsp::Whole();
+    box[bound_] = std::isfinite(best_) ? Interval(-kInf, best_) : icsp::Whole();
     const icsp::PropagationReport pr = propagator_->Propagate(box);
     if (pr.status == icsp::Status::kInfeasible) {
-      if (found_) ++counters_.pruned;
+      if (std::isfinite(best_)) ++counters_.pruned;
       else ++counters_.infeasible_boxes;
       continue;
     }
     const double lb = std::max(node.lb, box[objective_].lower());
-    if (found_ && tol.Closed(best_, lb)) {
+    if ((found_ || cut_off_) && tol.Closed(best_, lb)) {
       closed_lb = std::min(closed_lb, lb);
       continue;
     }
     std::vector<Interval> d(design_.size());
     for (std::size_t i = 0; i < design_.size(); ++i) d[i] = box[design_[i]];
+    if (const std::string proof = PeakProof(d); !proof.empty()) {
+      ++counters_.peak_pruned;
+      ++peak_proofs_[proof.substr(0, proof.find(" carries"))];
+      continue;
+    }
     const int before = counters_.improvements;
     LocalSearch(d);
-    if (counters_.improvements != before && (counters_.improvements & (counters_.improvements - 1)) == 0) ChooseScenario();
-    if (found_ && tol.Closed(best_, lb)) {
+    if (counters_.improvements != before && (counters_.improvements & (counters_.improvements - 1)) == 0) {
+      CoordinateSearch();
+      ChooseScenario();
+    }
+    if ((found_ || cut_off_) && tol.Closed(best_, lb)) {
       closed_lb = std::min(closed_lb, lb);
       continue;
     }
@@ -803,20 +902,39 @@ Report Optimizer::Run() {
   r.candidates = counters_.candidates;
   r.reduced_model_checks = counters_.reduced_model_checks;
   r.improvements = counters_.improvements;
+  r.peak_checks = counters_.peak_checks;
+  r.peak_pruned = counters_.peak_pruned;
   {
     std::vector<std::pair<std::string, int>> why(rejected_.begin(), rejected_.end());
     std::stable_sort(why.begin(), why.end(), [](const auto& a, const auto& b) { return a.second > b.second; });
     if (why.size() > 5) why.resize(5);
     r.rejections = why;
   }
+  if (!found_ && cut_off_ && !unproved && !limit) {
+    r.status = Status::kNoDesignFound;
+    r.message = "cut off: no design better than " + FormatNumber(icsp::ToDisplay(best_, objective_unit_), 6) + " " +
+                objective_unit_ + " (the best of the other part choices)";
+    r.lower_bound = icsp::ToDisplay(std::min(lower, best_), objective_unit_);
+    r.seconds = Seconds();
+    return r;
+  }
   if (!found_) {
     if (queue.empty() && !unproved && !limit) {
       r.status = Status::kInfeasible;
       r.message = "no design within the domains meets every requirement and margin: branch and bound emptied every box";
       const icsp::Explanation ex = icsp::Explain(net(), initial_, {});
-      r.infeasibility = ex.infeasible ? ex.text
-                                      : "the domains together admit values, but no box of design variables does; "
-                                        "widen the design domains or relax the requirements";
+      if (ex.infeasible) {
+        r.infeasibility = ex.text;
+      } else {
+        r.infeasibility = "the domains together admit values, but no box of design variables does (" +
+                          std::to_string(counters_.infeasible_boxes) + " emptied by the constraint network, " +
+                          std::to_string(counters_.peak_pruned) + " proved by `peak` to hold no design that passes it";
+        r.infeasibility += peak_proofs_.empty() ? ")" : ":";
+        r.infeasibility += "\n";
+        for (const auto& [what, n] : peak_proofs_)
+          r.infeasibility += "  - " + std::to_string(n) + " x " + what + " exceeds its allowable everywhere\n";
+        r.infeasibility += "widen the design domains or relax the requirements";
+      }
     } else {
       r.status = Status::kNoDesignFound;
       r.message = "gave up without a robustly feasible design (" + std::string(limit ? "limit reached" : "boxes too small") +
@@ -896,6 +1014,8 @@ void Optimizer::Finish(Report& r) {
 
 namespace {
 std::string Number(double v) { return FormatNumber(v, 6); }
+/// The number, or null when it is not finite (NaN: none; infinite: unbounded).
+nlohmann::json FiniteOrNull(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
 }  // namespace
 
 DesignEvaluator::DesignEvaluator(const Project& project, const Options& options)
@@ -928,6 +1048,20 @@ void Options::Validate() const {
     throw InputError("optimize: max_seconds = " + Number(max_seconds) + " must be a finite number > 0");
   if (line_search_steps < 0 || line_search_steps > 60)
     throw InputError("optimize: line_search_steps = " + std::to_string(line_search_steps) + " must be from 0 to 60");
+  if (!pareto.empty() && (pareto == "mass" || pareto == "inertia"))
+    throw InputError("optimize: the second objective of --pareto is bounded by a constraint, so it must be an "
+                     "expression of the constraint language, not '" + pareto + "'; give '" + pareto +
+                     "' first (--pareto " + pareto + ",EXPR)");
+  if (!pareto.empty() && (pareto_points < 2 || pareto_points > 50))
+    throw InputError("optimize: pareto_points = " + std::to_string(pareto_points) + " must be from 2 to 50");
+  if (!pareto.empty() && !choose_part.empty())
+    throw InputError("optimize: --pareto and --choose-part together are not supported; give one of them");
+  if (max_part_combinations < 1)
+    throw InputError("optimize: max_part_combinations = " + std::to_string(max_part_combinations) + " must be >= 1");
+  for (const PartChoice& c : choose_part)
+    if (c.parts.empty())
+      throw InputError("optimize: no part to choose from for component '" + c.component +
+                       "'; give at least one part (the database's parts of its type)");
   if (!(propagation_ratio >= 0.0 && propagation_ratio < 1.0))
     throw InputError("optimize: propagation_ratio = " + Number(propagation_ratio) + " must be in [0, 1)");
 }
@@ -993,6 +1127,7 @@ std::string Report::FullReport() const {
       t.AddRow({d.name, d.unit, Number(d.value), "[" + Number(d.lower) + ", " + Number(d.upper) + "]",
                 std::isfinite(d.nominal) ? Number(d.nominal) : "-", d.at_bound});
     o << t.ToString();
+    for (const auto& [component, designation] : parts) o << "part of " << component << ": " << designation << "\n";
     o << "\nObjective " << objective << ": " << Number(best) << " " << objective_unit
       << " (upper bound over the remaining uncertain parameters); certified lower bound " << Number(lower_bound) << " "
       << objective_unit << "; relative gap " << FormatNumber(gap, 3) << "\n";
@@ -1009,9 +1144,33 @@ std::string Report::FullReport() const {
     for (const ActiveConstraint& a : active)
       o << "  - " << a.label << ": " << a.description << (a.text.empty() ? "" : "\n      " + a.text) << "\n";
   }
+  if (!pareto.empty()) {
+    o << "\nPareto front (" << objective << " against " << pareto_objective << "):\n";
+    TextTable t({pareto_objective + " <= [" + pareto_unit + "]", objective + " [" + objective_unit + "]",
+                 "certified >=", pareto_objective + " at the design", "status"},
+                {0, 1, 2, 3});
+    for (const ParetoPoint& p : pareto)
+      t.AddRow({Number(p.epsilon), Number(p.objective), Number(p.lower_bound),
+                std::isfinite(p.second) ? Number(p.second) : "-", p.status});
+    o << t.ToString();
+  }
+  if (!combinations.empty()) {
+    o << "\nPart combinations searched:\n";
+    TextTable c({"parts", "status", "best", "lower bound"}, {2, 3});
+    for (const Combination& k : combinations) {
+      std::string names;
+      for (const std::string& d : k.designations) names += (names.empty() ? "" : ", ") + d;
+      c.AddRow({names, k.status, std::isfinite(k.best) ? Number(k.best) : "-",
+                std::isfinite(k.lower_bound) ? Number(k.lower_bound) : "-"});
+    }
+    o << c.ToString();
+  }
   o << "\n" << boxes << " boxes (" << pruned << " pruned by the bound, " << infeasible_boxes << " infeasible), "
     << candidates << " candidate designs checked (" << reduced_model_checks << " through size and peak), "
-    << improvements << " improvements, " << FormatNumber(seconds, 3) << " s\n";
+    << improvements << " improvements, ";
+  if (peak_checks > 0)
+    o << peak_checks << " boxes through peak over their extent (" << peak_pruned << " proved to fail it), ";
+  o << FormatNumber(seconds, 3) << " s\n";
   return o.str();
 }
 
@@ -1029,13 +1188,13 @@ nlohmann::json Report::ToJson() const {
     j["gap"] = gap;
   } else {
     j["best"] = nullptr;
-    j["lower_bound"] = std::isfinite(lower_bound) ? nlohmann::json(lower_bound) : nlohmann::json(nullptr);
+    j["lower_bound"] = FiniteOrNull(lower_bound);
     j["gap"] = nullptr;
   }
   nlohmann::json d = nlohmann::json::array();
   for (const DesignValue& v : design)
     d.push_back({{"name", v.name}, {"unit", v.unit}, {"value", v.value}, {"domain", {v.lower, v.upper}},
-                 {"nominal", std::isfinite(v.nominal) ? nlohmann::json(v.nominal) : nlohmann::json(nullptr)},
+                 {"nominal", FiniteOrNull(v.nominal)},
                  {"at_bound", v.at_bound}});
   j["design"] = d;
   nlohmann::json a = nlohmann::json::array();
@@ -1045,22 +1204,231 @@ nlohmann::json Report::ToJson() const {
   for (const MassTerm& t : mass_terms)
     m.push_back({{"component", t.component},
                  {"law", t.law},
-                 {"min", std::isfinite(t.lower) ? nlohmann::json(t.lower) : nlohmann::json(nullptr)},
-                 {"max", std::isfinite(t.upper) ? nlohmann::json(t.upper) : nlohmann::json(nullptr)}});
+                 {"min", FiniteOrNull(t.lower)},
+                 {"max", FiniteOrNull(t.upper)}});
   j["mass_terms"] = m;
   if (!infeasibility.empty()) j["explanation"] = infeasibility;
+  if (!combinations.empty()) {
+    nlohmann::json chosen = nlohmann::json::object();
+    for (const auto& [component, designation] : parts) chosen[component] = designation;
+    j["parts"] = chosen;
+    nlohmann::json all = nlohmann::json::array();
+    for (const Combination& k : combinations) {
+      nlohmann::json row = {{"parts", k.designations}, {"status", k.status}};
+      row["best"] = FiniteOrNull(k.best);
+      row["lower_bound"] = FiniteOrNull(k.lower_bound);
+      all.push_back(row);
+    }
+    j["combinations"] = all;
+  }
+  if (!pareto_objective.empty()) {
+    nlohmann::json front = nlohmann::json::array();
+    for (const ParetoPoint& p : pareto) {
+      nlohmann::json d = nlohmann::json::object();
+      for (const DesignValue& v : p.design) d[v.name] = v.value;
+      front.push_back({{"epsilon", p.epsilon},
+                       {"objective", FiniteOrNull(p.objective)},
+                       {"lower_bound", FiniteOrNull(p.lower_bound)},
+                       {"second", FiniteOrNull(p.second)},
+                       {"status", p.status},
+                       {"design", d}});
+    }
+    j["pareto"] = {{"objectives", {objective, pareto_objective}}, {"units", {objective_unit, pareto_unit}},
+                   {"front", front}};
+  }
   nlohmann::json rej = nlohmann::json::array();
   for (const auto& [what, n] : rejections) rej.push_back({{"check", what}, {"candidates", n}});
   j["rejections"] = rej;
   j["counters"] = {{"boxes", boxes},           {"pruned", pruned},
                    {"infeasible_boxes", infeasible_boxes}, {"candidates", candidates},
                    {"reduced_model_checks", reduced_model_checks}, {"improvements", improvements},
+                   {"peak_checks", peak_checks}, {"peak_pruned", peak_pruned},
                    {"seconds", seconds}};
   return j;
 }
 
+namespace {
+
+/// SI from a display unit (the objectives' units are multiplicative: kg, kg*m^2, N*m).
+double FromDisplay(double v, const std::string& unit) { return v / icsp::ToDisplay(1.0, unit); }
+
+/// Branch over the part combinations (mixed radix over Options::choose_part), each combination's
+/// continuous search cut off at the best design so far; the certified bound is the least bound of
+/// the combinations (a combination proved infeasible or cut off bounds nothing below the best).
+Report OptimizeOverParts(const Project& project, const Options& options) {
+  const auto start = std::chrono::steady_clock::now();
+  auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
+  double combinations = 1;
+  for (const PartChoice& c : options.choose_part) combinations *= static_cast<double>(c.parts.size());
+  if (combinations > options.max_part_combinations)
+    throw InputError("optimize: " + FormatNumber(combinations, 6) + " combinations of parts for " +
+                     std::to_string(options.choose_part.size()) + " --choose-part component(s), more than " +
+                     std::to_string(options.max_part_combinations) +
+                     " (max_part_combinations): choose parts for fewer components");
+  Options inner = options;
+  inner.choose_part.clear();
+  Report best;
+  bool have = false;
+  double lower = kInf, best_si = kInf;
+  int boxes = 0, pruned = 0, infeasible_boxes = 0, candidates = 0, checks = 0, improvements = 0, peak_checks = 0,
+      peak_pruned = 0;
+  bool limit = false;
+  std::vector<std::size_t> index(options.choose_part.size(), 0);
+  std::vector<Report::Combination> done;
+  for (int k = 0; k < static_cast<int>(combinations); ++k) {
+    Project p = project;
+    Report::Combination combination;
+    for (std::size_t i = 0; i < index.size(); ++i) {
+      const PartOption& part = options.choose_part[i].parts[index[i]];
+      ApplyPart(p, options.choose_part[i].component, part);
+      combination.designations.push_back(part.designation);
+    }
+    for (std::size_t i = 0; i < index.size() && ++index[i] == options.choose_part[i].parts.size(); ++i) index[i] = 0;
+    // The time left, shared by the combinations left.
+    inner.max_seconds = (options.max_seconds - seconds()) / (combinations - k);
+    if (inner.max_seconds <= 0.0) {  // out of time: this combination bounds nothing
+      limit = true;
+      combination.status = "not searched (time limit)";
+      combination.best = combination.lower_bound = std::nan("");
+      done.push_back(combination);
+      lower = -kInf;
+      continue;
+    }
+    if (options.prepare) options.prepare(p);
+    detail::Optimizer o(p, inner);
+    o.AllowNoDesignVariable();
+    o.CutOff(best_si);
+    Report r = o.Run();
+    boxes += r.boxes, pruned += r.pruned, infeasible_boxes += r.infeasible_boxes, candidates += r.candidates;
+    checks += r.reduced_model_checks, improvements += r.improvements, peak_checks += r.peak_checks;
+    peak_pruned += r.peak_pruned;
+    combination.status = r.message.rfind("cut off", 0) == 0 ? "cut off" : ToString(r.status);
+    combination.best = r.found ? r.best : std::nan("");
+    combination.lower_bound = r.lower_bound;
+    done.push_back(combination);
+    if (r.status == Status::kStoppedAtLimit || (r.status == Status::kNoDesignFound && combination.status != "cut off"))
+      limit = limit || r.status == Status::kStoppedAtLimit || r.message.find("limit") != std::string::npos;
+    if (r.status != Status::kInfeasible) lower = std::min(lower, FromDisplay(r.lower_bound, r.objective_unit));
+    if (r.found) {
+      best_si = FromDisplay(r.best, r.objective_unit);
+      best = std::move(r);
+      best.parts.clear();
+      for (std::size_t i = 0; i < combination.designations.size(); ++i)
+        best.parts.push_back({options.choose_part[i].component, combination.designations[i]});
+      have = true;
+    } else if (!have) {
+      best = std::move(r);
+    }
+  }
+  best.combinations = done;
+  best.boxes = boxes, best.pruned = pruned, best.infeasible_boxes = infeasible_boxes, best.candidates = candidates;
+  best.reduced_model_checks = checks, best.improvements = improvements, best.peak_checks = peak_checks;
+  best.peak_pruned = peak_pruned;
+  best.seconds = seconds();
+  const Tolerance tol{options.relative_gap, options.absolute_gap};
+  if (have) {
+    lower = std::min(lower, best_si);
+    best.lower_bound = icsp::ToDisplay(lower, best.objective_unit);
+    best.gap = best_si != 0.0 ? (best_si - lower) / std::fabs(best_si) : best_si - lower;
+    best.status = tol.Closed(best_si, lower) ? Status::kOptimal : Status::kStoppedAtLimit;
+    best.message = std::to_string(done.size()) + " part combination(s) searched; " +
+                   (best.status == Status::kOptimal ? "the gap closed within the tolerance" : "the gap is open");
+  } else if (!limit && std::all_of(done.begin(), done.end(), [](const auto& c) { return c.status == "infeasible"; })) {
+    best.status = Status::kInfeasible;
+    best.message = "no part combination has a design that meets every requirement and margin (" +
+                   std::to_string(done.size()) + " searched, each proved infeasible); the last one's explanation follows";
+  } else {
+    best.status = Status::kNoDesignFound;
+    best.message = "no design found in " + std::to_string(done.size()) +
+                   " part combination(s); this proves nothing for those not proved infeasible (see the combinations)";
+  }
+  return best;
+}
+
+/// The second objective's upper bound over the remaining domains at a design (the project with the
+/// design fixed, no design variable left); NaN when it has none there.
+double ObjectiveAt(const Project& project, const Options& options, const std::string& objective,
+                   const std::vector<DesignValue>& design, double seconds) {
+  std::vector<std::pair<std::string, double>> values;
+  for (const DesignValue& d : design) values.push_back({d.name, d.value_si});
+  Options o = options;
+  o.objective = objective;
+  o.design.clear();
+  o.max_seconds = std::max(0.1, seconds);
+  detail::Optimizer opt(FixDesign(project, values), o);
+  opt.AllowNoDesignVariable();
+  const Report r = opt.Run();
+  return r.found ? r.best : std::nan("");
+}
+
+/// The front of two objectives by epsilon constraints (Options::pareto): OBJ2 alone, OBJ1 alone,
+/// then OBJ1 under OBJ2 <= epsilon (a requirement added to the project) between the two.
+Report OptimizePareto(const Project& project, const Options& options) {
+  const auto start = std::chrono::steady_clock::now();
+  auto share = [&](int runs_left) {
+    const double left = options.max_seconds - std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return std::max(0.1, left / runs_left);
+  };
+  const int n = options.pareto_points;
+  Options o = options;
+  o.pareto.clear();
+  Options o2 = o;
+  o2.objective = options.pareto;
+  o2.max_seconds = share(n + 2);
+  const Report r2 = Optimize(project, o2);
+  o.max_seconds = share(n + 1);
+  Report out = Optimize(project, o);
+  out.pareto_objective = options.pareto;
+  out.pareto_unit = r2.objective_unit;
+  if (!out.found || !r2.found) {
+    if (!r2.found) out.message += "; the second objective '" + options.pareto + "' found no design: " + r2.message;
+    return out;
+  }
+  const double lo = r2.best;
+  double hi = ObjectiveAt(project, o, options.pareto, out.design, share(n + 1));
+  if (!std::isfinite(hi) || hi < lo) hi = lo;
+  std::vector<Report::ParetoPoint> points;
+  for (int k = 0; k < n; ++k) {
+    const double eps = lo + (hi - lo) * k / (n - 1);
+    const double bound = eps + 1e-9 * std::fabs(eps);  // the written number rounds either way
+    Project p = project;
+    p.requirements.push_back({"pareto_epsilon",
+                              options.pareto + " <= " + FormatNumber(bound, 12) +
+                                  (out.pareto_unit.empty() ? "" : " " + out.pareto_unit),
+                              "Pareto front: the second objective at most epsilon", {}});
+    Options ok = o;
+    ok.max_seconds = share(n - k);
+    const Report r = Optimize(p, ok);
+    Report::ParetoPoint pt;
+    pt.epsilon = eps;
+    pt.status = ToString(r.status);
+    pt.objective = r.found ? r.best : std::nan("");
+    pt.lower_bound = r.lower_bound;
+    pt.second = r.found ? ObjectiveAt(project, o, options.pareto, r.design, share(n - k)) : std::nan("");
+    pt.design = r.design;
+    // By increasing epsilon the objective can only fall: a point no better than the last kept one
+    // is not on the front.
+    if (!r.found || (!points.empty() && !(pt.objective < points.back().objective))) continue;
+    points.push_back(std::move(pt));
+  }
+  out.pareto = points;
+  out.message += "; Pareto front of " + std::to_string(points.size()) + " point(s) over " + options.pareto + " in [" +
+                 FormatNumber(lo, 6) + ", " + FormatNumber(hi, 6) + "] " + out.pareto_unit;
+  return out;
+}
+
+}  // namespace
+
+void ApplyPart(Project& project, const std::string& component, const PartOption& part) {
+  Component* c = project.FindComponent(component);
+  if (!c) throw InputError("part choice: no component '" + component + "' in the project");
+  for (const auto& [name, value] : part.values) c->parameters[name] = value;
+}
+
 Report Optimize(const Project& project, const Options& options) {
   options.Validate();
+  if (!options.pareto.empty()) return OptimizePareto(project, options);
+  if (!options.choose_part.empty()) return OptimizeOverParts(project, options);
   detail::Optimizer o(project, options);
   return o.Run();
 }

@@ -569,6 +569,10 @@ PeakReport AnalysePeaks(const Project& project, const PeakOptions& options) {
           w.worst_case = pc.name;
           w.torque = f.torque;
         }
+        if (f.torque.bounds.lo > w.torque_certain) {
+          w.torque_certain = f.torque.bounds.lo;
+          w.certain_case = pc.name;
+        }
       }
     Bounded through = pc.tau_total;  // N*m at the reference speed: what reaches the component
     for (auto id = pc.load_path.rbegin(); id != pc.load_path.rend(); ++id) {
@@ -578,6 +582,10 @@ PeakReport AnalysePeaks(const Project& project, const PeakOptions& options) {
         w.component = *id;
         w.worst_case = pc.name;
         w.torque = through;
+      }
+      if (through.bounds.lo > w.torque_certain) {
+        w.torque_certain = through.bounds.lo;
+        w.certain_case = pc.name;
       }
       // A limiter in a down-drive (LimitedPort) limits only when the path goes on through that port.
       const int limited = g.LimitedNode(k);
@@ -616,6 +624,13 @@ PeakReport AnalysePeaks(const Project& project, const PeakOptions& options) {
     w.allowable_min = allowable ? allowable->lo : 0.0;
     // Guaranteed: no point of the domains has a smaller margin (outward rounded).
     w.margin = w.allowable_min > 0.0 ? GuaranteedMargin(w.allowable_min, w.local_torque) : kInf;
+    // Certain: no point of the domains has a larger margin (the least load of the case that loads
+    // it most surely over the largest ratio, against the largest allowable; outward rounded).
+    w.local_torque_certain = w.torque_certain > 0.0 ? (Interval(w.torque_certain) / bounds.n[i]).lo : 0.0;
+    w.allowable_max = allowable ? allowable->hi : 0.0;
+    w.margin_max = allowable && w.local_torque_certain > 0.0 && std::isfinite(w.allowable_max)
+                       ? std::nextafter(std::nextafter(w.allowable_max / w.local_torque_certain, kInf) - 1.0, kInf)
+                       : kInf;
     report.worst.push_back(w);
   }
   if (options.intervals && options.tightness_samples > 0) MeasureTightness(project, options, &report);
@@ -743,7 +758,10 @@ nlohmann::json PeakReport::ToJson() const {
                           {"allowable_name", w.allowable_name},
                           {"allowable_N_m", w.allowable > 0 ? nlohmann::json(w.allowable) : nlohmann::json(nullptr)},
                           {"allowable_min_N_m", w.allowable_min > 0 ? nlohmann::json(w.allowable_min) : nlohmann::json(nullptr)},
-                          {"margin", std::isfinite(w.margin) ? nlohmann::json(w.margin) : nlohmann::json(nullptr)}});
+                          {"margin", std::isfinite(w.margin) ? nlohmann::json(w.margin) : nlohmann::json(nullptr)},
+                          // < 0: the margin fails at every point of the domains (in certain_case)
+                          {"margin_max", std::isfinite(w.margin_max) ? nlohmann::json(w.margin_max) : nlohmann::json(nullptr)},
+                          {"certain_case", w.certain_case}});
   return j;
 }
 

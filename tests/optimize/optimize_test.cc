@@ -164,6 +164,96 @@ TEST(Optimize, UnboundedObjectiveIsAnInputError) {
   }
 }
 
+/// A titanium tube part of the chain's shaft: D x t (mm), its values fixed (provenance database).
+PartOption Tube(const std::string& name, double D_mm, double t_mm) {
+  PartOption part{name, {}};
+  for (const auto& [parameter, value] : {std::pair{"outer_diameter", D_mm * 1e-3}, {"wall_thickness", t_mm * 1e-3}}) {
+    Parameter& p = part.values[parameter];
+    p.nominal = value;
+    p.domain = Domain::Point(value);
+    p.provenance = Provenance::kDatabase;
+    p.database_part = name;
+  }
+  return part;
+}
+
+// Three tubes for the chain's shaft: 40 x 2 mm (2.11 kg) is not stiff enough (1901 < 5000 N*m/rad),
+// 60 x 1.5 mm (2.44 kg) meets both requirements, 60 x 3 mm does at 4.75 kg. The choice is the
+// 60 x 1.5 tube; the first is proved infeasible, the heavy one cut off by the 60 x 1.5 tube's mass
+// (searched in this order), and the bound is certified.
+TEST(Optimize, ChoosesTheLightestPartThatMeetsTheRequirements) {
+  nlohmann::json j = Chain();
+  j["components"][1]["parameters"]["outer_diameter"] = "40 mm";
+  j["components"][1]["parameters"]["wall_thickness"] = "2 mm";
+  Options o;
+  o.choose_part = {{"shaft_1", {Tube("soft-40x2", 40, 2), Tube("ok-60x1.5", 60, 1.5), Tube("heavy-60x3", 60, 3)}}};
+  const Report r = Optimize(Load(j), o);
+  ASSERT_EQ(r.status, Status::kOptimal) << r.BriefReport() << "\n" << r.FullReport();
+  ASSERT_EQ(r.parts.size(), 1u);
+  EXPECT_EQ(r.parts[0].second, "ok-60x1.5");
+  const double m = 4420.0 * std::numbers::pi * (0.060 - 0.0015) * 0.0015 * 2.0;
+  EXPECT_NEAR(r.best, m, 1e-9 * m);
+  EXPECT_LE(r.lower_bound, r.best);
+  ASSERT_EQ(r.combinations.size(), 3u);
+  EXPECT_EQ(r.combinations[0].status, "infeasible");
+  EXPECT_EQ(r.combinations[1].status, "optimal");
+  EXPECT_EQ(r.combinations[2].status, "cut off");
+  EXPECT_TRUE(r.design.empty());  // the part fixes D and t: nothing continuous is left
+  ASSERT_TRUE(r.design_project.has_value());
+  EXPECT_EQ(r.design_project->FindComponent("shaft_1")->parameters.at("wall_thickness").provenance, Provenance::kDatabase);
+}
+
+TEST(Optimize, PartChoiceWithoutPartsOrTooManyCombinationsIsAnInputError) {
+  Options o;
+  o.choose_part = {{"shaft_1", {}}};
+  EXPECT_THROW(o.Validate(), InputError);
+  o.choose_part = {{"shaft_1", {Tube("a", 40, 2), Tube("b", 50, 2)}}};
+  o.max_part_combinations = 1;
+  try {
+    Optimize(Load(Chain()), o);
+    FAIL() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("max_part_combinations"), std::string::npos) << e.what();
+  }
+}
+
+// The chain's tube against two objectives: its mass falls with the diameter (the stiffness then
+// needs a thinner wall), and a small diameter is the other objective (the space in the wing). The
+// front runs from the least diameter to the least mass: by increasing epsilon on the diameter the
+// mass falls, every point's diameter is within its epsilon, and each point's mass is certified.
+TEST(Optimize, ParetoFrontOfMassAgainstDiameter) {
+  Options o;
+  o.pareto = "shaft_1.outer_diameter";
+  o.pareto_points = 4;
+  o.relative_gap = 1e-4;
+  const Report r = Optimize(Load(Chain()), o);
+  ASSERT_TRUE(r.found) << r.BriefReport();
+  ASSERT_GE(r.pareto.size(), 3u) << r.FullReport();
+  for (std::size_t i = 0; i < r.pareto.size(); ++i) {
+    const Report::ParetoPoint& p = r.pareto[i];
+    EXPECT_LE(p.lower_bound, p.objective * (1 + 1e-12));
+    EXPECT_LE(p.second, p.epsilon * (1 + 1e-6)) << i;
+    if (i > 0) {
+      EXPECT_LT(p.objective, r.pareto[i - 1].objective) << i;
+      EXPECT_GT(p.epsilon, r.pareto[i - 1].epsilon) << i;
+    }
+  }
+  // The last point is the unconstrained least mass.
+  EXPECT_NEAR(r.pareto.back().objective, r.best, 1e-4 * r.best);
+  EXPECT_EQ(r.ToJson()["pareto"]["front"].size(), r.pareto.size());
+}
+
+TEST(Optimize, ParetoSecondObjectiveMustBeAnExpression) {
+  Options o;
+  o.pareto = "mass";
+  try {
+    o.Validate();
+    FAIL() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("--pareto mass,EXPR"), std::string::npos) << e.what();
+  }
+}
+
 TEST(OptimizeOptions, DefaultsAreValidAndBadOnesNamed) {
   EXPECT_NO_THROW(Options{}.Validate());
   Options o;

@@ -18,6 +18,8 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -28,6 +30,19 @@
 #include "highlift/core/project.h"
 
 namespace highlift::optimize {
+
+/// One part a component may be (a database row): the values it fixes, by parameter name (SI;
+/// nominal and domain as the database gives them).
+struct PartOption {
+  std::string designation;                  ///< the database's designation, e.g. "TS-TI-45x1.8"
+  std::map<std::string, Parameter> values;  ///< provenance database, database_part = designation
+};
+
+/// A discrete choice: `component` is one of `parts`.
+struct PartChoice {
+  std::string component;
+  std::vector<PartOption> parts;
+};
 
 struct Options {
   /// "mass" (the torque shafts by their tube law, other components by their estimation laws),
@@ -49,6 +64,22 @@ struct Options {
   bool verify_size = true;          ///< an upper bound must also pass reduced_models' Size over the
                                     ///< remaining domains (`highlift size` exits 0 for it)
   bool verify_peak = true;          ///< ... and AnalysePeaks (`highlift peak` exits 0 for it)
+  /// Discrete choices (`--choose-part COMPONENT`): each listed component is one of its parts. The
+  /// search branches over the combinations first (each one's project: the parts' values fixed,
+  /// then `prepare`), best root bound first, each combination's continuous branch and bound cut off
+  /// at the best design of the others; the lower bound is the least over the combinations. With
+  /// choices, the design variables may be none (a pure part choice).
+  std::vector<PartChoice> choose_part;
+  int max_part_combinations = 512;  ///< more combinations than this is an InputError
+  /// Applied to each combination's project before its search (the CLI: the estimator, so that
+  /// what a part's values imply, e.g. an inertia from a rating, follows the part). Default: none.
+  std::function<void(Project&)> prepare;
+  /// `--pareto OBJ1,OBJ2`: the second objective, an expression of the constraint language (the
+  /// first is `objective`). Optimize then traces the front by epsilon constraints: OBJ2 alone at
+  /// its least, OBJ1 alone (and OBJ2 at its design), then OBJ1 least under OBJ2 <= epsilon for
+  /// pareto_points values of epsilon evenly between the two; max_seconds is shared by the runs.
+  std::string pareto;
+  int pareto_points = 5;  ///< epsilon values (2 to 50), the ends included
   /// Throws InputError naming the bad option and the remedy.
   void Validate() const;
 };
@@ -106,6 +137,28 @@ struct Report {
   std::vector<ActiveConstraint> active;
   std::vector<MassTerm> mass_terms;  ///< objective "mass": where each component's mass comes from
   std::string infeasibility;    ///< kInfeasible: check's explanation of the conflict
+  /// With part choices: the chosen part per component (of the best design), and every combination
+  /// searched with its outcome ("optimal", "infeasible", "cut off", ...) and bounds.
+  std::vector<std::pair<std::string, std::string>> parts;
+  struct Combination {
+    std::vector<std::string> designations;  ///< in the order of Options::choose_part
+    std::string status;
+    double best = 0.0;                      ///< NaN when no design
+    double lower_bound = 0.0;
+  };
+  std::vector<Combination> combinations;
+  /// With Options::pareto: the front, by increasing epsilon; each point the best OBJ1 design
+  /// under OBJ2 <= epsilon (points that were no better than a neighbour are dropped).
+  struct ParetoPoint {
+    double epsilon = 0.0;      ///< the bound on OBJ2 (its display unit)
+    double objective = 0.0;    ///< OBJ1 at the design (upper bound over the remaining domains)
+    double lower_bound = 0.0;  ///< OBJ1's certified bound under OBJ2 <= epsilon
+    double second = 0.0;       ///< OBJ2 at the design (upper bound over the remaining domains)
+    std::string status;
+    std::vector<DesignValue> design;
+  };
+  std::string pareto_objective, pareto_unit;
+  std::vector<ParetoPoint> pareto;
   /// Why candidate designs were rejected: the first failing constraint (label) or size/peak item,
   /// with how many candidates it rejected, most frequent first (at most 5).
   std::vector<std::pair<std::string, int>> rejections;
@@ -116,6 +169,8 @@ struct Report {
   int candidates = 0;           ///< robust feasibility checks (each one model evaluation)
   int reduced_model_checks = 0; ///< candidates that went on to Size and AnalysePeaks
   int improvements = 0;         ///< times the best design improved
+  int peak_checks = 0;          ///< boxes analysed by `peak` over their whole extent
+  int peak_pruned = 0;          ///< ... of which `peak` proved that none of their designs passes it
   double seconds = 0.0;
   /// The project with the design variables fixed at the best design (nominal and domain, provenance
   /// "optimized"); only when found.
@@ -162,6 +217,10 @@ class DesignEvaluator {
  private:
   std::unique_ptr<detail::Optimizer> impl_;
 };
+
+/// `project` with `component`'s parameters set to the part's values (provenance database). Throws
+/// InputError when the project has no such component.
+void ApplyPart(Project& project, const std::string& component, const PartOption& part);
 
 /// `project` with each named parameter fixed at its value (SI): nominal and a point domain,
 /// provenance "optimized". Throws InputError for a name that is not a parameter of the project.

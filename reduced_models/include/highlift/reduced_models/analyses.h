@@ -103,6 +103,16 @@ struct ComponentPeak {
   double allowable_min = 0.0;  ///< N*m, lower bound of the allowable over the domains
   double margin = 0.0;     ///< allowable_min / local_torque - 1: guaranteed lower bound of the margin
                            ///< over the domains (infinite without allowable)
+  /// The other side: the largest lower bound of its load over the cases (N*m at the reference
+  /// speed, and at its own speed over the largest ratio), the largest allowable over the domains,
+  /// and allowable_max / local_torque_certain - 1, an upper bound of the margin over the domains:
+  /// negative, no point of the domains meets the allowable (the certain_case's load exceeds it
+  /// everywhere); what `highlift optimize` prunes design boxes with.
+  double torque_certain = 0.0;
+  double local_torque_certain = 0.0;
+  std::string certain_case;
+  double allowable_max = 0.0;
+  double margin_max = 0.0;  ///< infinite without allowable or without a positive certain load
 };
 
 struct PeakReport {
