@@ -483,7 +483,7 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
   std::vector<double> out(sys.OutputNames().size());
   std::vector<double> tau;
   for (const auto& el : elements) report.peak_torques.push_back({el->id, 0.0, options.start_time});
-  std::vector<bool> has_torque(elements.size(), false);
+  std::vector<char> has_torque(elements.size(), 0);  // (not vector<bool>: set at every sample)
 
   auto fail = [&](SimulationStatus status, std::string message, double t) {
     report.status = status;
@@ -560,13 +560,14 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
   auto sample = [&](double t, bool step_end = true) {
     if (step_end) monitor(t);
     sys.PeakTorques(tau);
+    PeakTorque* peaks = report.peak_torques.data();  // each element named once, at the start
     for (std::size_t i = 0; i < tau.size(); ++i) {
-      if (std::isnan(tau[i])) continue;
-      has_torque[i] = true;
-      PeakTorque& peak = report.peak_torques[i];  // its element named once, at the start
-      if (std::abs(tau[i]) > std::abs(peak.tau)) {
-        peak.tau = tau[i];
-        peak.time = t;
+      const double v = tau[i];
+      if (std::isnan(v)) continue;
+      has_torque[i] = 1;
+      if (std::abs(v) > std::abs(peaks[i].tau)) {
+        peaks[i].tau = v;
+        peaks[i].time = t;
       }
     }
     if (!options.energy) return;

@@ -294,6 +294,13 @@ System::System(const Network& original) {
   }
   ClassifyMasslessNodes();
   AssignStates(signal_source, slot_owner);
+  for (std::size_t n = 0; n < nodes_.size(); ++n) {
+    const Node& node = nodes_[n];
+    node_s_phi_.push_back(node.ground ? -1 : node.s_phi);
+    node_s_w_.push_back(node.ground ? -1 : node.s_w);
+    node_phi0_.push_back(node.phi0);
+    if (!node.ground) state_nodes_.push_back({static_cast<int>(n), node.s_phi, node.s_w, node.massless});
+  }
   // Outputs.
   for (const auto& el : elements_) {
     output_offset_.push_back(static_cast<int>(output_names_.size()));
@@ -1304,17 +1311,19 @@ void System::SetKinematics(double t, const double* y) {
   e.t_segment = t_segment_;
   e.y = y;
   e.ydot = nullptr;
-  for (std::size_t n = 0; n < nodes_.size(); ++n) {
-    const Node& node = nodes_[n];
-    if (node.ground) {
-      e.phi[n] = node.phi0;
-      e.w[n] = 0.0;
+  const std::size_t n_nodes = nodes_.size();
+  const int *s_phi = node_s_phi_.data(), *s_w = node_s_w_.data();
+  double *phi = e.phi.data(), *w = e.w.data(), *force = e.force.data(), *acc = e.acc.data();
+  for (std::size_t n = 0; n < n_nodes; ++n) {
+    if (s_phi[n] < 0) {  // ground
+      phi[n] = node_phi0_[n];
+      w[n] = 0.0;
     } else {
-      e.phi[n] = y[node.s_phi];
-      e.w[n] = y[node.s_w];
+      phi[n] = y[s_phi[n]];
+      w[n] = y[s_w[n]];
     }
-    e.force[n] = 0.0;
-    e.acc[n] = 0.0;
+    force[n] = 0.0;
+    acc[n] = 0.0;
   }
   if (!massless_.empty()) SolveMasslessSpeeds();
   for (std::size_t n = 0; n < hnodes_.size(); ++n) {
@@ -1371,12 +1380,10 @@ bool System::Evaluate(double t, const double* y, double* ydot) {
     if (!again) break;
   }
   if (ydot != nullptr) {
-    for (const Node& node : nodes_) {
-      if (node.ground) continue;
-      const std::size_t n = &node - nodes_.data();
+    for (const StateNode& node : state_nodes_) {
       // A massless node's speed is the solved one; its speed state is not used (held).
-      ydot[node.s_phi] = node.massless ? e.w[n] : y[node.s_w];
-      ydot[node.s_w] = node.massless ? 0.0 : e.acc[n];
+      ydot[node.s_phi] = node.massless ? e.w[node.node] : y[node.s_w];
+      ydot[node.s_w] = node.massless ? 0.0 : e.acc[node.node];
     }
     for (Element* el : derivatives_) el->Derivatives(e);
     if (!hnodes_.empty() && !HydraulicDerivatives(ydot)) return false;
