@@ -1505,7 +1505,7 @@ void System::BuildGroups() {
   for (int n = 0; n < n_nodes; ++n) {
     if (nodes_[n].ground) continue;
     if (!in_constraint_[n]) {
-      unconstrained_.push_back(n);
+      if (!nodes_[n].massless) unconstrained_.push_back({n, nodes_[n].J});
       continue;
     }
     groups_[group(find(n))].nodes.push_back(n);
@@ -1627,8 +1627,7 @@ bool System::Solve() {
     ConstraintSignature(signature_);
     BuildGroups();
   }
-  for (int n : unconstrained_)
-    if (!nodes_[n].massless) e.acc[n] = e.force[n] / nodes_[n].J;
+  for (const auto& [n, J] : unconstrained_) e.acc[n] = e.force[n] / J;
   for (int k : grounded_rows_) e.constraints[k].lambda = 0.0;
   for (Group& g : groups_) {
     const int nn = static_cast<int>(g.nodes.size()), m = static_cast<int>(g.rows.size());

@@ -6,6 +6,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "model.h"
@@ -257,7 +258,8 @@ class System {
   bool SignatureMatches() const;  ///< the active constraints have the pattern of signature_
   void BuildGroups();
   std::vector<Group> groups_;
-  std::vector<int> unconstrained_;   ///< free nodes in no constraint: acc = force / J
+  /// The free nodes with inertia in no constraint, with their inertia: acc = force / J.
+  std::vector<std::pair<int, double>> unconstrained_;
   std::vector<int> grounded_rows_;   ///< constraints between ground nodes only
   std::vector<int> signature_;
   std::vector<int> parent_;
