@@ -221,6 +221,11 @@
       " (both values the worst case over the remaining uncertain parameters), joined by a line; small open circles: the certified lower bound of " + o1 +
       " under that \u03b5, at \u03b5 (inside the point\u2019s mark when the gap is closed). Point at a mark for its design, or see the table." }));
     const front = p.front.map((f, i) => Object.assign({ index: i + 1 }, f));
+    if (!front.some((f) => f.objective != null && f.second != null)) {
+      box.append(el("p", { class: "bad", text: "No point of the front has a design (" + (front.length ? front.map((f) => f.status).join(", ") : "no point") +
+        "): nothing to plot." }));
+      return;
+    }
     const xs = [...new Set([...front.filter((f) => f.objective != null && f.second != null).map((f) => f.second),
                             ...front.filter((f) => f.lower_bound != null).map((f) => f.epsilon)])].sort((a, b) => a - b);
     const at = new Map(xs.map((x, i) => [x, i]));

@@ -133,6 +133,29 @@ TEST(ReportSynthesis, ReportCarriesTheSectionAndThePageEscapesIt) {
   EXPECT_TRUE(BuildDesignReport(project, project, "", options).data["synthesis"].is_null());
 }
 
+// A proved-infeasible result is shown (status, explanation) and is not ok: `report` exits 1.
+TEST(ReportSynthesis, ResultWithoutADesignIsShownAndNotOk) {
+  Project project = LoadProject(kProjectFile);
+  project.requirements[0].expression = "shaft_1.torque_capacity >= 1e9 N*m";
+  const optimize::Report r = ParetoRun(project);
+  ASSERT_EQ(r.status, optimize::Status::kInfeasible) << r.BriefReport();
+  const auto file = Dir() / "infeasible.json";
+  std::ofstream(file) << ResultDocument(project, r).dump(2);
+  ReportOptions options;
+  options.transient = false;
+  options.scenarios = false;
+  options.optimize = file;
+  const DesignReport report = BuildDesignReport(project, project, "", options);
+  EXPECT_FALSE(report.synthesis_ok);
+  const nlohmann::json& s = report.data["synthesis"];
+  EXPECT_EQ(s["status"], "infeasible");
+  EXPECT_EQ(s["found"], false);
+  EXPECT_TRUE(s["best"].is_null());
+  EXPECT_NE(s["status_words"].get<std::string>().find("proved infeasible"), std::string::npos);
+  EXPECT_NE(s["explanation"].get<std::string>().find("capacity_1"), std::string::npos) << s["explanation"];
+  EXPECT_TRUE(s["design"].empty());
+}
+
 TEST(ReportSynthesis, ResultOfTheWrittenDesignIsAcceptedForIt) {
   const Project project = LoadProject(kProjectFile);
   const optimize::Report r = optimize::Optimize(project, Options());
