@@ -97,9 +97,12 @@ class OptimizeCommand : public Command {
     const optimize::Report report = optimize::Optimize(loaded.project, options_);
     // The project as given (not the estimated one) with the chosen parts and the design fixed, so
     // that `highlift size` and `peak` read the same file the engineer wrote.
+    // The project as given: its content hash identifies the result (`highlift report --optimize`
+    // shows a result only beside the project it belongs to, or beside the design written from it).
+    const Project given = LoadValidProject(common_.project);
     std::optional<Project> design;
     if (report.found) {
-      Project out = LoadValidProject(common_.project);
+      Project out = given;
       for (const auto& [component, designation] : report.parts)
         for (const optimize::PartChoice& c : options_.choose_part)
           for (const optimize::PartOption& part : c.parts)
@@ -114,6 +117,10 @@ class OptimizeCommand : public Command {
     if (common_.json) {
       nlohmann::json j = report.ToJson();
       j["project"] = common_.project;
+      j["project_name"] = given.name;
+      j["project_hash"] = campaign::ProjectHash(given);
+      // The design as `--write` writes it (and as `highlift report` reads it back).
+      if (design) j["design_hash"] = campaign::ProjectHash(ParseProject(ProjectToJson(*design).dump(), common_.project));
       if (!write_.empty() && report.found) j["written"] = write_;
       if (transient) j["transient"] = transient->ToJson();
       std::cout << j.dump(2) << "\n";

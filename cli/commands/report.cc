@@ -1,13 +1,15 @@
-// `highlift report PROJECT.json [--out report.html] [--campaign DIR] [--no-transient]
+// `highlift report PROJECT.json [--out report.html] [--campaign DIR] [--optimize RESULT.json] [--no-transient]
 // [--no-scenarios] [--elements N] [--threads N] [--json]`: the design report, one self-contained HTML file
 // (report/include/highlift/report/report.h, docs/report.md): the verdict of the interval check
 // first, the architecture along the span, the torque flow, the modes, the peak loads (single-DOF
-// beside transient beside capacity; with --campaign the envelope over a campaign's samples) and the
-// time histories of the scenarios. Prints one headline line (with --json a JSON document: file,
+// beside transient beside capacity; with --campaign the envelope over a campaign's samples), the
+// time histories of the scenarios and, with --optimize, the result of `highlift optimize --json`
+// (the Synthesis section, with the plot of a Pareto front). Prints one headline line (with --json a JSON document: file,
 // size, verdict, timings). Exit 0 when the report was written and the domains can meet the
 // requirements, 1 when the check found them infeasible, a simulation failed, or the campaign is
-// incomplete, has failed runs or a negative margin (the report is written all the same), 2 on
-// invalid input (a campaign of another project among them).
+// incomplete, has failed runs or a negative margin, or the optimize result holds no design (the
+// report is written all the same), 2 on invalid input (a campaign or optimize result of another
+// project among them).
 #include <filesystem>
 #include <iostream>
 
@@ -32,6 +34,10 @@ class ReportCommand : public Command {
     app.add_option("--campaign", report_.campaign,
                    "result folder (or .sqlite file) of `highlift campaign` on this project: adds the envelope over "
                    "its samples to the peak loads");
+    app.add_option("--optimize", report_.optimize,
+                   "a result of `highlift optimize PROJECT --json` (saved with > FILE) of this project, or of the "
+                   "project its --write design came from: adds the Synthesis section (status, certified bound, design, "
+                   "what limits it, mass; the plot of a --pareto front)");
     app.add_flag("--no-transient", no_transient_,
                  "skip the transient simulation of every sizing case (single-DOF peaks and capacities only)");
     app.add_flag("--no-scenarios", no_scenarios_, "skip the simulation of the project's scenarios (no time histories)");
@@ -50,6 +56,7 @@ class ReportCommand : public Command {
     report_.scenarios = !no_scenarios_;
     // The file is checked before the analyses (not an input, a regular file, a writable folder)
     // and replaced only when the report is complete (highlift::OutputFile).
+    if (!report_.optimize.empty()) RegisterInputFile(report_.optimize);  // refused as --out at once
     OutputFile file(out_, "report file");
     report::DesignReport report;
     {
@@ -75,6 +82,7 @@ class ReportCommand : public Command {
                           {"all_requirements_met", report.data["check"]["all_requirements_met"]},
                           {"simulations_ok", report.simulations_ok},
                           {"campaign_ok", report.campaign_ok},
+                          {"synthesis_ok", report.synthesis_ok},
                           {"timings", report.data["timings"]}};
       std::cout << JsonText(j) << "\n";
     } else {
@@ -85,8 +93,10 @@ class ReportCommand : public Command {
                 << FormatNumber(t.simulations, 3) << " s" << (report.simulations_ok ? "" : " (some failed)") << "\n";
       if (!report.data["campaign"].is_null())
         std::cout << "campaign: " << report.data["campaign"].value("brief", std::string()) << "\n";
+      if (!report.data["synthesis"].is_null())
+        std::cout << "synthesis: " << report.data["synthesis"].value("status_words", std::string()) << "\n";
     }
-    return report.feasible && report.simulations_ok && report.campaign_ok ? kSuccess : kViolated;
+    return report.feasible && report.simulations_ok && report.campaign_ok && report.synthesis_ok ? kSuccess : kViolated;
   }
 
  private:

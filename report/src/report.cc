@@ -340,6 +340,12 @@ DesignReport BuildDesignReport(const Project& project, const Project& estimated,
   nlohmann::json& data = out.data;
   data["project"] = {{"name", project.name}, {"description", project.description}, {"file", project.file},
                      {"sources", project.sources}};
+  // The optimize result first: a file of another project is refused before the analyses run.
+  data["synthesis"] = nullptr;
+  if (!options.optimize.empty()) {
+    data["synthesis"] = ReadSynthesis(project, options.optimize);
+    out.synthesis_ok = data["synthesis"]["found"].get<bool>();
+  }
 
   // Summary: the interval check, as `highlift check`.
   Clock::time_point t = Clock::now();
@@ -544,6 +550,8 @@ std::string DesignReport::BriefReport() const {
        FormatNumber(timings.Tool(), 3) + " s";
   if (data.contains("campaign") && !data["campaign"].is_null())
     s += "; campaign: " + data["campaign"].value("brief", std::string());
+  if (data.contains("synthesis") && !data["synthesis"].is_null())
+    s += "; synthesis: " + data["synthesis"].value("status", std::string());
   return s;
 }
 

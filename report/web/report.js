@@ -144,6 +144,131 @@
     return a;
   }
 
+  // ---------------------------------------------------------------------------------------- synthesis
+  // The result of `highlift optimize --json` (`highlift report --optimize FILE`): status, the best
+  // design's worst-case objective beside the certified lower bound, the design, what limits it, the
+  // mass by component and, for a --pareto run, the front (plot and table, each point's design).
+  function renderSynthesis() {
+    const box = document.getElementById("synthesis-body");
+    const s = data.synthesis;
+    if (!s) {
+      box.append(el("p", { class: "hint", text: "No optimisation result in this report: run `highlift optimize PROJECT --json > result.json` " +
+        "(with --pareto OBJ1,OBJ2 for a front of two objectives) and `highlift report PROJECT --optimize result.json` to show it here." }));
+      return;
+    }
+    const withUnit = (v, unit) => fmt(v) + (unit && v != null ? " " + unit : "");
+    // The relative gap as optimize prints it: small ones as numbers (0.0 % would hide them).
+    const gapText = (g) => (g == null ? "\u2013" : g >= 1e-3 ? (g * 100).toFixed(2) + " %" : fmt(g, 3));
+    const bracket = (unit) => (unit ? " [" + unit + "]" : "");
+    const u1 = s.objective_unit;
+    const cls = !s.found ? "infeasible" : s.status === "optimal" ? "feasible" : "feasible_domains_nominal_violates";
+    const headline = s.found
+      ? s.status_words + ". " + s.objective + " " + withUnit(s.best, u1) + " (worst case), certified \u2265 " + withUnit(s.lower_bound, u1) +
+        ", gap " + gapText(s.gap)
+      : s.status_words + (s.message ? ". " + s.message : "");
+    const line = el("p", { class: "verdict " + cls, id: "synthesis-status", text: headline });
+    line.dataset.status = s.status;
+    box.append(line);
+    box.append(el("p", { class: "hint", text: s.relation === "design"
+      ? "From `highlift optimize " + s.project_file + "` (" + s.file + "); this project is the design it wrote (--write), so the sections below analyse the optimised design."
+      : "From `highlift optimize` on this project (" + s.file + "). The sections below analyse the project as given, not the optimised design: " +
+        "write the design with `highlift optimize ... --write best.json` and run `highlift report best.json --optimize " + s.file + "` to see its loads." }));
+    if (s.found) {
+      box.append(el("div", { id: "synthesis-objective" }, table(["objective: " + s.objective, "value" + bracket(u1), "what it is"], [
+        ["best design, worst case", fmt(s.best), "the design's objective over every value of the remaining uncertain parameters (an upper bound for it)"],
+        ["certified lower bound", fmt(s.lower_bound), "proved: no design within the domains that meets every constraint for every value of the uncertain parameters has less"],
+        ["relative gap", gapText(s.gap), "(worst case \u2212 bound) / |worst case|: how far the design can be from the best possible one at most"],
+      ], [1])));
+      box.append(el("h3", { text: "Design" }));
+      box.append(el("div", { id: "synthesis-design" }, table(["design variable", "unit", "optimised", "domain", "nominal", "at bound"],
+        s.design.map((d) => [el("span", {}, componentLink(d.component), d.name.slice(d.component.length)), d.unit, fmt(d.value),
+          "[" + fmt(d.lower) + ", " + fmt(d.upper) + "]", fmt(d.nominal), d.at_bound ? el("strong", { text: d.at_bound }) : ""]), [2, 4])));
+      const parts = Object.entries(s.parts || {});
+      if (parts.length) box.append(el("p", { text: "Parts chosen: " + parts.map(([c, p]) => c + ": " + p).join(", ") }));
+      box.append(el("h3", { text: "What limits the design" }));
+      box.append(el("p", { class: "hint", text: "The constraints that no longer hold for certain one step of 1e-4 of the domains towards a smaller " +
+        s.objective + ", and the design variables at a bound of their domain." }));
+      const ul = el("ul", { class: "violated-list", id: "synthesis-active" });
+      for (const a of s.active_constraints)
+        ul.append(el("li", {}, el("strong", { text: a.label }), ": " + a.description, a.text ? " \u2014 " : "", a.text ? el("code", { text: a.text }) : null));
+      if (!s.active_constraints.length) ul.append(el("li", { text: "nothing found at that step" }));
+      box.append(ul);
+      if (s.mass_terms.length) {
+        box.append(el("h3", { text: "Mass by component" }));
+        box.append(el("p", { class: "hint", text: "At the best design, over the remaining domains; the law is where each mass comes from (its provenance)." }));
+        box.append(el("div", { id: "synthesis-mass" }, table(["component", "min [kg]", "max [kg]", "law"],
+          s.mass_terms.map((m) => [componentLink(m.component), fmt(m.min), fmt(m.max), m.law]), [1, 2])));
+      }
+    }
+    if (s.explanation) {
+      box.append(el("h3", { text: "Why no design" }));
+      box.append(el("pre", { id: "synthesis-explanation", text: s.explanation }));
+    }
+    if (!s.found && s.rejections.length)
+      box.append(el("p", { text: "Candidate designs were rejected by (first failing check): " + s.rejections.map((r) => r.candidates + " \u00d7 " + r.check).join(", ") }));
+    const c = s.counters || {};
+    if (c.boxes != null)
+      box.append(el("p", { class: "hint", text: c.boxes + " boxes (" + c.pruned + " pruned by the bound, " + c.infeasible_boxes + " infeasible), " + c.candidates +
+        " candidate designs (" + c.reduced_model_checks + " through size and peak), " + c.improvements + " improvements, " + fmt(c.seconds, 3) + " s." }));
+    if (s.pareto) renderPareto(box, s);
+  }
+
+  function renderPareto(box, s) {
+    const p = s.pareto, [o1, o2] = p.objectives, [u1, u2] = p.units;
+    const bracket = (unit) => (unit ? " [" + unit + "]" : "");
+    box.append(el("h3", { text: "Pareto front: " + o1 + " against " + o2 }));
+    box.append(el("p", { class: "hint", text: "Each point: the design of least " + o1 + " under " + o2 + " \u2264 \u03b5, at its " + o2 +
+      " (both values the worst case over the remaining uncertain parameters), joined by a line; small open circles: the certified lower bound of " + o1 +
+      " under that \u03b5, at \u03b5 (inside the point\u2019s mark when the gap is closed). Point at a mark for its design, or see the table." }));
+    const front = p.front.map((f, i) => Object.assign({ index: i + 1 }, f));
+    if (!front.some((f) => f.objective != null && f.second != null)) {
+      box.append(el("p", { class: "bad", text: "No point of the front has a design (" + (front.length ? front.map((f) => f.status).join(", ") : "no point") +
+        "): nothing to plot." }));
+      return;
+    }
+    const xs = [...new Set([...front.filter((f) => f.objective != null && f.second != null).map((f) => f.second),
+                            ...front.filter((f) => f.lower_bound != null).map((f) => f.epsilon)])].sort((a, b) => a - b);
+    const at = new Map(xs.map((x, i) => [x, i]));
+    const y1 = xs.map(() => null), y2 = xs.map(() => null), pointAt = xs.map(() => null);
+    // The cursor on either mark of a point (its design, or its bound at epsilon) shows that point;
+    // where two points share an x, the design's mark wins.
+    for (const f of front) if (f.lower_bound != null) { y2[at.get(f.epsilon)] = f.lower_bound; pointAt[at.get(f.epsilon)] = f; }
+    for (const f of front) if (f.objective != null && f.second != null) { y1[at.get(f.second)] = f.objective; pointAt[at.get(f.second)] = f; }
+    const padded = (min, max) => {
+      const d = max > min ? 0.06 * (max - min) : Math.max(Math.abs(max) * 0.05, 1e-9);
+      return [min - d, max + d];
+    };
+    const readout = el("div", { id: "synthesis-pareto-readout", class: "hint", text: "Point at a mark for its design." });
+    const highlight = (f) => {
+      for (const tr of document.querySelectorAll("#synthesis-pareto-table tbody tr")) tr.classList.toggle("highlight", f != null && tr.id === "pareto-point-" + f.index);
+      if (!f) return;
+      readout.textContent = "";
+      readout.append(el("a", { href: "#pareto-point-" + f.index, text: "point " + f.index }), ": " + o1 + " " + fmt(f.objective) + (u1 ? " " + u1 : "") +
+        ", " + o2 + " " + fmt(f.second) + (u2 ? " " + u2 : "") + " (" + o2 + " \u2264 " + fmt(f.epsilon) + ", " + f.status + "); design: " +
+        f.design.map((d) => d.name + " = " + fmt(d.value) + (d.unit ? " " + d.unit : "")).join(", "));
+    };
+    plot(box, "synthesis-pareto", "Pareto front: " + o1 + bracket(u1) + " against " + o2 + bracket(u2), [xs, y1, y2], [
+      { label: o1 + " at the design", stroke: "#0b5cad", width: 1.5, spanGaps: true, points: { show: true, size: 13, fill: "#0b5cad", stroke: "#0b5cad" } },
+      { label: "certified lower bound of " + o1 + " (at \u03b5)", stroke: "#1a7f37", width: 0, paths: () => null, points: { show: true, size: 7, width: 1.5, fill: "#fff", stroke: "#1a7f37" } },
+    ], {
+      height: 340,
+      scales: { x: { time: false, range: (u, min, max) => padded(min, max) }, y: { range: (u, min, max) => padded(min, max) } },
+      axes: [{ label: o2 + bracket(u2) }, { label: o1 + bracket(u1), size: 70 }],
+      hooks: { setCursor: [(u) => { const i = u.cursor.idx; if (i != null && pointAt[i]) highlight(pointAt[i]); }] },
+    });
+    box.append(readout);
+    const names = s.design.map((d) => d.name);
+    const unitOf = new Map(s.design.map((d) => [d.name, d.unit]));
+    const t = table(["#", o2 + " \u2264 \u03b5" + bracket(u2), o2 + " at the design" + bracket(u2), o1 + " at the design" + bracket(u1),
+      "certified \u2265" + bracket(u1), "status", ...names.map((n) => n + bracket(unitOf.get(n)))],
+      front.map((f) => {
+        const byName = new Map(f.design.map((d) => [d.name, d.value]));
+        return [String(f.index), fmt(f.epsilon), fmt(f.second), fmt(f.objective), fmt(f.lower_bound), f.status, ...names.map((n) => fmt(byName.get(n)))];
+      }), [0, 1, 2, 3, 4, ...names.map((_, k) => 6 + k)]);
+    [...t.querySelectorAll("tbody tr")].forEach((tr, i) => { tr.id = "pareto-point-" + front[i].index; });
+    box.append(el("div", { id: "synthesis-pareto-table" }, t));
+  }
+
   // ---------------------------------------------------------------------------------------- architecture
   const GLYPHS = {
     pdu: (x, y) => `<rect class="glyph" x="${x - 14}" y="${y - 14}" width="28" height="28" rx="3" fill="#0b5cad" stroke="#083d73"/>`,
@@ -470,7 +595,7 @@
       "Plots: uPlot (MIT licence), inlined; this file refers to nothing outside itself.";
   }
 
-  const sections = [renderSummary, renderArchitecture, renderComponents, renderSizing, renderModes, renderPeaks, renderPeakComponents, renderCampaign, renderScenarios, renderFooter];
+  const sections = [renderSummary, renderSynthesis, renderArchitecture, renderComponents, renderSizing, renderModes, renderPeaks, renderPeakComponents, renderCampaign, renderScenarios, renderFooter];
   for (const render of sections) {
     try { render(); } catch (e) { state.errors.push(render.name + ": " + e.message); console.error(render.name, e); }
   }

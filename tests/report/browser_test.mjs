@@ -3,10 +3,14 @@
 // protocol over a pipe (--remote-debugging-pipe: no extra npm package, no WebSocket).
 //
 //   node browser_test.mjs --highlift build/cli/highlift --project examples/a380_class_flaps.json \
-//        --out build/tests/report/browser [--campaign DIR]
+//        --out build/tests/report/browser [--campaign DIR] [--optimize RESULT.json]
 //
 // With --campaign DIR (a `highlift campaign` result of the project) the report is written with
 // that campaign (and without simulations of its own) and the envelope plot and tables are checked.
+// With --optimize RESULT.json (`highlift optimize --json` of the project) the report is written with
+// the Synthesis section (no simulations of its own): its status, design table and, for a --pareto
+// result, the front's plot (a mark per point), its table and the design shown when the cursor is
+// on a point.
 //
 // Fails on: a console error or uncaught exception; any network request (the file must hold
 // everything); an external address in the file; a plot whose canvas is missing or blank or that
@@ -45,6 +49,7 @@ const html = path.resolve(args.report || path.join(args.out, "report.html"));
 let t0 = Date.now();
 if (!args.report) {
   const extra = args.campaign ? ["--campaign", args.campaign, "--no-transient", "--no-scenarios"] : [];
+  if (args.optimize) extra.push("--optimize", args.optimize, ...(args.campaign ? [] : ["--no-transient", "--no-scenarios"]));
   const made = spawnSync(args.highlift, ["report", args.project, "--out", html, "--json", ...extra], { encoding: "utf8" });
   if (made.status !== 0 && made.status !== 1) {
     console.error("highlift report failed with exit code " + made.status + ":\n" + made.stderr);
@@ -183,6 +188,9 @@ try {
       peakRows: document.querySelectorAll("#peaks-table tbody tr").length,
       envelopeRows: document.querySelectorAll("#campaign-envelope-table tbody tr").length,
       campaignCaseRows: document.querySelectorAll("#campaign-cases-table tbody tr").length,
+      synthesisStatus: document.getElementById("synthesis-status")?.dataset.status ?? null,
+      synthesisDesignRows: document.querySelectorAll("#synthesis-design tbody tr").length,
+      paretoRows: document.querySelectorAll("#synthesis-pareto-table tbody tr").length,
     };
   })()`);
 
@@ -228,6 +236,10 @@ try {
   expected.set("modes-first", data.modes.models.length);
   expected.set("peaks-plot", 3);
   if (data.campaign) expected.set("campaign-envelope", 2);
+  const paretoMarks = data.synthesis && data.synthesis.pareto
+    ? data.synthesis.pareto.front.filter((f) => f.objective != null && f.second != null).length : 0;
+  if (paretoMarks) expected.set("synthesis-pareto", 2);  // a front without any design gets a sentence, no plot
+  check(!args.optimize || data.synthesis, "--optimize given, and the report holds no synthesis");
   check(!args.campaign || data.campaign, "--campaign given, and the report holds no campaign");
   for (const s of data.scenarios)
     for (const g of ["speed", "torque", "state"]) {
@@ -265,6 +277,36 @@ try {
     check(seen.campaignCaseRows === data.campaign.case_peaks.length,
           `campaign case table has ${seen.campaignCaseRows} rows of ${data.campaign.case_peaks.length}`);
     check(data.campaign.envelope.length > 0, "the campaign's envelope is empty");
+  }
+  if (data.synthesis) {
+    const s = data.synthesis;
+    check(seen.synthesisStatus === s.status, `synthesis status on the page '${seen.synthesisStatus}', data '${s.status}'`);
+    if (s.found) check(seen.synthesisDesignRows === s.design.length, `synthesis design table has ${seen.synthesisDesignRows} rows of ${s.design.length}`);
+  }
+  if (args.optimize && data.synthesis && data.synthesis.pareto) {
+    const front = data.synthesis.pareto.front;
+    const marks = paretoMarks;
+    check(marks >= 2, `the Pareto front has ${marks} points with both objectives`);
+    check(seen.paretoRows === front.length, `Pareto table has ${seen.paretoRows} rows of ${front.length} points`);
+    // Each point's design is reachable from the plot: put the cursor on every mark, read the readout.
+    const hovered = await evaluate(`(() => {
+      const u = window.highliftReport.plots.find((p) => p.id === "synthesis-pareto").uplot;
+      const out = [];
+      for (let i = 0; i < u.data[0].length; i++) {
+        if (u.data[1][i] == null) continue;
+        u.setCursor({ left: u.valToPos(u.data[0][i], "x"), top: u.valToPos(u.data[1][i], "y") });
+        out.push({ text: document.getElementById("synthesis-pareto-readout").textContent,
+                   highlighted: document.querySelectorAll("#synthesis-pareto-table tr.highlight").length });
+      }
+      return out;
+    })()`);
+    check(hovered.length === marks, `the cursor reached ${hovered.length} marks of ${marks}`);
+    const names = data.synthesis.design.map((d) => d.name);
+    for (const [k, h] of hovered.entries()) {
+      check(/^point \d+: /.test(h.text) && names.every((n) => h.text.includes(n + " = ")),
+            `cursor on Pareto mark ${k + 1}: the readout '${h.text}' does not show the point's design`);
+      check(h.highlighted === 1, `cursor on Pareto mark ${k + 1}: ${h.highlighted} table rows highlighted`);
+    }
   }
   check(seen.peakRows === data.peak_cases.length, `peak table has ${seen.peakRows} rows of ${data.peak_cases.length} cases`);
   check(seen.plots.length === expected.size, `${seen.plots.length} plots on the page, ${expected.size} expected`);

@@ -46,6 +46,14 @@ struct ReportOptions {
   /// case, the largest transient peak over the samples; the worst margins include the envelope's.
   /// A campaign of another project, or of this one before it changed, is an input error.
   std::filesystem::path campaign;
+  /// A result of `highlift optimize PROJECT --json` (the document it prints, saved with `> FILE`).
+  /// Empty (the default): none. The page then adds a Synthesis section: the status, the best
+  /// design's objective (its worst case over the remaining uncertain parameters) beside the
+  /// certified lower bound and the gap, the design table, what limits the design, the mass by
+  /// component and, for a `--pareto` run, a plot of the front. The result must belong to this
+  /// project (the content hash optimize recorded: the project it read, or the design its --write
+  /// wrote); another project's, or a file that is not such a document, is an input error.
+  std::filesystem::path optimize;
 
   /// Throws InputError naming the option when a value is invalid.
   void Validate() const;
@@ -71,6 +79,7 @@ struct DesignReport {
   bool nominal_feasible = true;
   bool simulations_ok = true; ///< every simulation reached its stop time
   bool campaign_ok = true;    ///< no campaign, or one that is complete, with no failed run and no negative margin
+  bool synthesis_ok = true;   ///< no optimize result, or one with a design (optimal or stopped at a limit)
   ReportTimings timings;
   /// "report of NAME: feasible domains, nominal design violates X; 36 cases simulated in 12 s".
   std::string BriefReport() const;
@@ -84,6 +93,15 @@ struct DesignReport {
 /// system or an analysis cannot read it.
 DesignReport BuildDesignReport(const Project& project, const Project& estimated, const std::string& estimation_brief,
                                const ReportOptions& options = {});
+
+/// The Synthesis section's data (`data["synthesis"]`, docs/report.md) from `result`, a document of
+/// `highlift optimize --json` read from `file` (named in messages). Throws InputError naming the
+/// file, the JSON path, what was found and what is valid when the document is malformed or
+/// belongs to another project (its `project_hash` is neither `project`'s content hash nor, as
+/// `design_hash`, that of the design optimize wrote: `campaign::ProjectHash`).
+nlohmann::json SynthesisJson(const Project& project, const nlohmann::json& result, const std::string& file);
+/// Reads `file` (an InputError when it cannot be read or is not JSON) and returns SynthesisJson.
+nlohmann::json ReadSynthesis(const Project& project, const std::filesystem::path& file);
 
 /// The self-contained HTML page of the report.
 std::string RenderHtml(const DesignReport& report);
