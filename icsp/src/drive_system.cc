@@ -15,6 +15,7 @@
 #include "highlift/core/units.h"
 #include "highlift/icsp/parser.h"
 #include "highlift/model/component_model.h"
+#include "highlift/model/hydraulic_pdu.h"
 #include "highlift/model/laws.h"
 #include "highlift/reduced_models/analyses.h"
 #include "highlift/reduced_models/lumped_model.h"
@@ -499,6 +500,30 @@ class Builder {
     return "";
   }
   bool HasValue(const Component& c, const std::string& name) const { return !Value(c, name).empty(); }
+  /// What a system torque limiter `stl` passes on to a jam behind it when the static torque
+  /// `tau_in` (at the reference speed) arrives: its type's law (model::LimiterPassedTorque, as
+  /// peak and size read it), else the old cap by its lock-out torque.
+  Sym SystemLimiterPasses(const Component& stl, const Sym& tau_in) const {
+    const Reader r(*this, stl);
+    if (const model::ComponentModel* m = ModelOf(stl))
+      if (auto passed = m->JamPassedTorque(r, tau_in, SpeedRatioOf(stl.id)); passed && !passed->missing()) return *passed;
+    if (r.Has("lockout_torque_extend")) return min(tau_in, r("lockout_torque_extend") * SpeedRatioOf(stl.id));
+    return tau_in;
+  }
+  /// The PDU's stall torque as a term of a constraint (model::PduStallTorque: a hydraulic drive's
+  /// from its motors, as simulated, through the variable `<pdu>.motor_stall_torque`); "0" when
+  /// it has no stall torque.
+  std::string StallTorque(const Component& pdu) {
+    const Reader p(*this, pdu);
+    if (!model::HasPduStallTorque(pdu, p)) return "0";
+    if (!model::StallTorqueFromMotors(pdu, p)) return Value(pdu, "stall_torque");
+    const std::string name = pdu.id + ".motor_stall_torque";
+    if (Has(name)) return name;
+    const Sym law = Define(name, "N*m",
+                           "PDU stall torque from its motors: n_m V_m (p_s - p_r) i eta_m eta (docs/hydraulics.md)",
+                           model::PduStallTorque(pdu, p));
+    return law.missing() ? "0" : name;
+  }
   /// Variable `name` for the text `expression` ("name" itself when it already is a variable).
   std::string VariableFor(const std::string& name, const std::string& unit, const std::string& expression,
                           const std::string& description) {
@@ -757,12 +782,13 @@ class Builder {
         // the system torque limiters inboard, at its speed) minus its end-stop torque, for the
         // actuator to see no more than the end-stop torque (LimiterPassedTorque).
         const Component& pdu = *Find(root_);
-        if (station && HasParam(c, "max_brake_torque") && HasValue(c, "end_stop_torque") && HasValue(pdu, "stall_torque")) {
-          Sym available = Reader(*this, pdu)("stall_torque");
+        const Reader pdu_reader(*this, pdu);
+        if (station && HasParam(c, "max_brake_torque") && HasValue(c, "end_stop_torque") &&
+            model::HasPduStallTorque(pdu, pdu_reader)) {
+          Sym available = model::PduStallTorque(pdu, pdu_reader);  // a hydraulic drive's from its motors
           for (int k = limited; k >= 0; k = peaks_->nodes[k].parent) {
             const Component& u = *Find(peaks_->nodes[k].id);
-            if (HasRole(u, &model::ComponentRoles::wing_limiter) && HasValue(u, "lockout_torque_extend"))
-              available = min(available, Reader(*this, u)("lockout_torque_extend") * SpeedRatioOf(u.id));
+            if (HasRole(u, &model::ComponentRoles::wing_limiter)) available = SystemLimiterPasses(u, available);
           }
           const Sym grounding =
               Define(p + "jam_grounding", "N*m",
@@ -859,7 +885,7 @@ class Builder {
   ///   J* = its inertia without the stop, c* = J* w1^2, tau = w sqrt(c* J*) = w w1 J*  (eq. 1),
   ///   w  = the operating speed (jam) or the back-driven spin-up after a rupture until the brake
   ///        engages (reduced_models::ComputeRuptureSpeed, a monotone black box),
-  /// plus the static part (jam: PDU stall torque capped by the system torque limiters; rupture:
+  /// plus the static part (jam: PDU stall torque through the system torque limiters; rupture:
   /// the airload's back-drive torque) and the load each component on the path carries.
   void Peaks() {
     if (!peaks_) return;
@@ -950,12 +976,17 @@ class Builder {
       if (!Has(root_ + ".max_output_speed")) return;
       Derived(p + "speed", "rad/s");
       Law(p + "speed", "drive speed at the jam, the operating speed", p + "speed == " + OperatingSpeed());
-      static_torque = HasValue(pdu, "stall_torque") ? Value(pdu, "stall_torque") : "0";
+      static_torque = StallTorque(pdu);
       for (const std::string& id : pc.load_path) {
         const Component& c = *Find(id);
-        if (HasRole(c, &model::ComponentRoles::wing_limiter) && HasValue(c, "lockout_torque_extend"))
-          static_torque = "min(" + static_torque + ", " + Value(c, "lockout_torque_extend") + " * " +
-                          SpeedRatio(node_index_.at(id)) + ")";
+        if (!HasRole(c, &model::ComponentRoles::wing_limiter)) continue;
+        // model::LimiterPassedTorque (the law of peak's and size's): min(S, max(tau2 n, S - tauB n)).
+        const std::string n = SpeedRatio(node_index_.at(id));
+        if (HasValue(c, "end_stop_torque") && HasValue(c, "max_brake_torque"))
+          static_torque = "min(" + static_torque + ", max(" + Value(c, "end_stop_torque") + " * " + n + ", " +
+                          static_torque + " - " + Value(c, "max_brake_torque") + " * " + n + "))";
+        else if (HasValue(c, "lockout_torque_extend"))
+          static_torque = "min(" + static_torque + ", " + Value(c, "lockout_torque_extend") + " * " + n + ")";
       }
     } else {
       if (!RuptureSpeed(pc, p)) return;
@@ -966,7 +997,7 @@ class Builder {
         p + "torque == " + p + "speed * " + p + "omega * " + p + "inertia");
     Derived(p + "static_torque", "N*m", Whole());
     Law(p + "static_torque",
-        pc.kind == kJamKind ? "static part of the jam: PDU stall torque capped by the system torque limiters"
+        pc.kind == kJamKind ? "static part of the jam: PDU stall torque through the system torque limiters"
                          : "static part after the rupture: the airload's back-drive torque",
         p + "static_torque == " + static_torque);
     // A stop that slips (the friction brake after a rupture) passes at most its slipping torque.

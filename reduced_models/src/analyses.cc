@@ -13,6 +13,7 @@
 #include "laws.h"
 #include "highlift/core/error.h"
 #include "highlift/core/text_table.h"
+#include "highlift/model/hydraulic_pdu.h"
 #include "highlift/reduced_models/modal.h"
 #include "highlift/reduced_models/sampling.h"
 #include "highlift/reduced_models/single_dof.h"
@@ -403,18 +404,22 @@ PeakReport AnalysePeaks(const Project& project, const PeakOptions& options) {
     pc.first_mode_share = fm.oscillator.first_mode_share;
     pc.tau_dynamic.nominal = PeakTorque(pc.w_max, fm.oscillator);
     // Static part at nominal values and its enclosure over the domains (every term over its domain).
-    const bool stall = detail::HasValue(pdu, "stall_torque");
-    double static_torque = stall ? detail::NominalValue(pdu, "stall_torque") : 0.0;
-    Interval static_bounds = stall ? detail::Read<Interval>(pdu, "stall_torque", bounds.mode) : Interval(0.0);
+    // The PDU's stall torque by its law (a hydraulic drive's from its motors, as simulated).
+    const detail::ModeReader<double> pdu_nominal(pdu, detail::ParameterMode{});
+    const detail::ModeReader<Interval> pdu_bounds(pdu, bounds.mode);
+    const bool stall = model::HasPduStallTorque(pdu, pdu_nominal);
+    double static_torque = stall ? model::PduStallTorque(pdu, pdu_nominal) : 0.0;
+    Interval static_bounds = stall ? model::PduStallTorque(pdu, pdu_bounds) : Interval(0.0);
     for (int k : g.PathToRoot(a))
-      if (g.Roles(k).wing_limiter && detail::HasValue(*g.nodes[k].component, "lockout_torque_extend")) {
+      if (g.Roles(k).wing_limiter) {
         const Component& stl = *g.nodes[k].component;
-        static_torque = std::min(static_torque, detail::NominalValue(stl, "lockout_torque_extend") * speed_ratio[k]);
-        static_bounds = detail::Min(static_bounds, detail::Read<Interval>(stl, "lockout_torque_extend", bounds.mode) * bounds.n[k]);
+        static_torque = detail::SystemLimiterPasses(stl, static_torque, speed_ratio[k], nominal);
+        static_bounds = detail::SystemLimiterPasses(stl, static_bounds, bounds.n[k], bounds.mode);
       }
     pc.tau_static = static_torque;
     pc.tau_static_bounds = static_bounds.ToDomain();
-    pc.note = "static part: PDU stall torque, capped by the system torque limiter on the path; components behind "
+    pc.note = "static part: PDU stall torque, through the system torque limiter on the path (its end-stop torque, or "
+              "the excess over its brake torque); components behind "
               "a station torque limiter see what it does not ground: its end-stop torque, or the excess over its "
               "brake torque";
     Interval omega(pc.omega), J(pc.J_star);

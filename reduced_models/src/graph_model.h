@@ -195,6 +195,21 @@ class ModeReader final : public model::ParameterReader<T> {
   std::vector<std::pair<std::string, double>>* log_;
 };
 
+/// What a system torque limiter passes on to a jam behind it when the static torque `tau_in`
+/// (at the reference speed; `n` its speed ratio) arrives: its type's law
+/// (ComponentModel::JamPassedTorque, model::LimiterPassedTorque: its end-stop torque, or the
+/// excess over its brake torque), the same law as the station limiters'; without the settings
+/// the cap by its lock-out torque; without that, `tau_in`.
+template <class T>
+T SystemLimiterPasses(const Component& stl, const T& tau_in, const T& n, const ParameterMode& mode) {
+  const ModeReader<T> reader(stl, mode);
+  if (const model::ComponentModel* m = ModelOf(stl))
+    if (auto passed = m->JamPassedTorque(reader, tau_in, n)) return *passed;
+  if (!HasValue(stl, "lockout_torque_extend")) return tau_in;
+  using std::min;
+  return min(tau_in, Read<T>(stl, "lockout_torque_extend", mode) * n);
+}
+
 /// The component's contribution to the lumped models, from its type's lumped law
 /// (ComponentModel::LumpedAtInput); the default law for a type without a model. For double, a
 /// value that is not finite is an InputError naming the component and the parameters read.

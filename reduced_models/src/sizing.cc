@@ -7,6 +7,7 @@
 #include "graph_model.h"
 #include "highlift/core/error.h"
 #include "highlift/core/text_table.h"
+#include "highlift/model/hydraulic_pdu.h"
 #include "highlift/reduced_models/sampling.h"
 #include "torque_flow.h"
 
@@ -160,21 +161,24 @@ SizingReport Size(const Project& project, const SizingOptions& options) {
     return holding;
   };
   // The torque a limiter (its limited node `limited`) grounds in a jam behind it: the static
-  // torque the drive can put into it, the PDU stall torque capped by the system torque limiters
+  // torque the drive can put into it, the PDU stall torque through the system torque limiters
   // inboard, at its speed, minus its end-stop torque. Nullopt without a stall torque.
   const auto n_nominal = detail::SpeedRatios<double>(g, nominal_mode);
   const auto n_wide = detail::SpeedRatios<Interval>(g, options.intervals ? interval_mode : nominal_mode);
   auto jam_grounding = [&](int node, int limited) -> std::optional<Bounded> {
     const Component& limiter = *g.nodes[node].component;
-    if (!detail::HasValue(pdu, "stall_torque") || !detail::HasValue(limiter, "end_stop_torque")) return std::nullopt;
     const detail::ParameterMode& mode = options.intervals ? interval_mode : nominal_mode;
-    double available = detail::NominalValue(pdu, "stall_torque");
-    Interval available_all = detail::Read<Interval>(pdu, "stall_torque", mode);
+    const detail::ModeReader<double> pdu_nominal(pdu, nominal_mode);
+    const detail::ModeReader<Interval> pdu_all(pdu, mode);
+    if (!model::HasPduStallTorque(pdu, pdu_nominal) || !detail::HasValue(limiter, "end_stop_torque")) return std::nullopt;
+    // The PDU's stall torque by its law (a hydraulic drive's from its motors, as simulated).
+    double available = model::PduStallTorque(pdu, pdu_nominal);
+    Interval available_all = model::PduStallTorque(pdu, pdu_all);
     for (int k : g.PathToRoot(limited))
-      if (g.Roles(k).wing_limiter && detail::HasValue(*g.nodes[k].component, "lockout_torque_extend")) {
+      if (g.Roles(k).wing_limiter) {
         const Component& stl = *g.nodes[k].component;
-        available = std::min(available, detail::NominalValue(stl, "lockout_torque_extend") * n_nominal[k]);
-        available_all = detail::Min(available_all, detail::Read<Interval>(stl, "lockout_torque_extend", mode) * n_wide[k]);
+        available = detail::SystemLimiterPasses(stl, available, n_nominal[k], nominal_mode);
+        available_all = detail::SystemLimiterPasses(stl, available_all, n_wide[k], mode);
       }
     const double nominal = available / n_nominal[limited] - detail::NominalValue(limiter, "end_stop_torque");
     const Interval all = available_all / n_wide[limited] - detail::Read<Interval>(limiter, "end_stop_torque", mode);

@@ -11,10 +11,13 @@
 //   HIGHLIFT_BOUND_SAMPLES   sampled points besides the nominal one (default 1)
 //   HIGHLIFT_BOUND_MODEL     full or reduced (default reduced)
 //   HIGHLIFT_BOUND_STRIDE    every n-th case (default 1: every jam and rupture)
+//   HIGHLIFT_BOUND_WRITE     a folder: each point is written there as a project file
+//                            (NAME_K.json, K = 0 the nominal point), to rerun one with the CLI
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cstdlib>
+#include <filesystem>
 #include <iostream>
 #include <map>
 #include <sstream>
@@ -108,6 +111,8 @@ TEST(SingleDofAgainstTransient, EveryComponentClassOnTheExamplesAtTheNominalAndS
         }
       }
       ASSERT_TRUE(design) << "100 draws broke a relation";
+      if (const std::string dir = Env("HIGHLIFT_BOUND_WRITE", ""); !dir.empty())
+        SaveProject(point, std::filesystem::path(dir) / (name + "_" + std::to_string(k) + ".json"));
       std::vector<SimulatedCase> simulated;
       for (std::size_t i = 0; i < report.cases.size(); i += stride) {
         const auto& pc = report.cases[i];

@@ -1,5 +1,6 @@
 // The reduced models on the A380-class example (examples/a380_class_flaps.json, domain.md s3)
 // and the size / modes / peak commands of the CLI.
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 
@@ -60,6 +61,42 @@ TEST(ReducedModelsCli, PeakUnknownCaseExitsTwoAndListsTheCases) {
   const highlift::testing::CliResult r = highlift::testing::RunCli({"peak", "examples/a380_class_flaps.json", "--case", "jam_nowhere"});
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("peak case 'jam_nowhere' does not exist; the cases are:"), std::string::npos) << r.err;
+}
+
+// The static part of a jam is the PDU stall torque through the system torque limiter, by the
+// limiter's own law min(tau, max(tau_2, tau - tau_B_max)), and a hydraulic PDU stalls where its
+// motors do: n_m V_m (p_s - p_r) i eta_m eta (docs/reduced_models.md, "The system torque limiter
+// in a jam"). Computed here from the parameters by hand, at the example's displacement (the
+// STL's brake holds: its end stop passes) and at the top of its domain (the brake slips: the
+// excess passes).
+TEST(HydraulicExample, JamStaticPartIsTheMotorsStallTorqueThroughTheSystemLimiter) {
+  Project project = LoadProject(std::string(HIGHLIFT_SOURCE_DIR) + "/examples/hydraulic_pdu_flaps.json");
+  Component& pdu = *project.FindComponent("pdu");
+  const double rev = 2.0 * std::acos(-1.0);
+  const double p_s = 345e5, p_r = 5e5, ratio = 20, eta_m = 0.95, eta = 0.9;  // example and catalogue values
+  const double tau2 = 1.25 * 470, tauB = 2 * 470;  // the STL's catalogue end stop and brake
+  for (const double displacement_cm3 : {5.4, 13.0}) {
+    SCOPED_TRACE(displacement_cm3);
+    const double V = displacement_cm3 * 1e-6 / rev;
+    Parameter& d = pdu.parameters.at("motor_displacement");
+    d.nominal = V;
+    d.domain = Domain::Point(V);
+    const double stall = 2 * V * (p_s - p_r) * ratio * eta_m * eta;
+    const double expected = std::min(stall, std::max(tau2, stall - tauB));
+    const PeakReport r = AnalysePeaks(project);
+    int jams = 0;
+    for (const auto& c : r.cases) {
+      if (c.kind != "jam") continue;
+      ++jams;
+      EXPECT_NEAR(c.tau_static, expected, 1e-9 * expected) << c.name;
+      EXPECT_LE(c.tau_static_bounds.lo, expected) << c.name;
+      EXPECT_GE(c.tau_static_bounds.hi, expected) << c.name;
+    }
+    EXPECT_EQ(jams, 12);
+    if (displacement_cm3 > 10) {
+      EXPECT_GT(expected, 1.5 * tau2);  // the case where the brake slips
+    }
+  }
 }
 
 }  // namespace

@@ -145,22 +145,27 @@ const reduced_models::PeakCase& Case(const reduced_models::PeakReport& report, c
   throw std::runtime_error("no case " + name);
 }
 
-TEST(EnclosureRegression, JamStaticPartSpansTheLimiterLockoutDomain) {
-  // Was: the static part of a jam behind a system torque limiter entered the total at its
-  // nominal lock-out torque, so the lock-out at 517 N*m gave a total above the enclosure.
+TEST(EnclosureRegression, JamStaticPartSpansTheSystemLimiterEndStopDomain) {
+  // Was: the static part of a jam behind a system torque limiter entered the total at the
+  // limiter's nominal setting, so a setting at the end of its domain gave a total above the
+  // enclosure. The system limiter passes min(tau, max(tau_2, tau - tau_B_max)) of the stall
+  // torque (docs/reduced_models.md): with a brake that grounds the rest, its end-stop torque.
   Project p = SmallChain();
   Component* pdu = p.FindComponent("pdu");
   pdu->parameters["stall_torque"] = Uncertain(2000.0, 2000.0, 2000.0);
   Component* stl = p.FindComponent("stl_l");
   ASSERT_NE(stl, nullptr);
   stl->parameters["lockout_torque_extend"] = Uncertain(470.0, 423.0, 517.0);
+  stl->parameters["end_stop_torque"] = Uncertain(587.5, 550.0, 620.0);
+  stl->parameters["max_brake_torque"] = Uncertain(1800.0, 1700.0, 1900.0);
   const auto report = reduced_models::AnalysePeaks(p, {});
   const auto& jam = Case(report, "jam_gra_l1");
-  EXPECT_LT(jam.tau_static_bounds.lo, 424.0);
-  EXPECT_GT(jam.tau_static_bounds.hi, 516.0);
-  Project at_517 = p;
-  at_517.FindComponent("stl_l")->parameters["lockout_torque_extend"] = Uncertain(517.0, 517.0, 517.0);
-  EXPECT_LE(PointTotal(at_517, "jam_gra_l1"), jam.tau_total.bounds.hi);
+  EXPECT_NEAR(jam.tau_static, 587.5, 1e-9 * 587.5);
+  EXPECT_LT(jam.tau_static_bounds.lo, 551.0);
+  EXPECT_GT(jam.tau_static_bounds.hi, 619.0);
+  Project at_620 = p;
+  at_620.FindComponent("stl_l")->parameters["end_stop_torque"] = Uncertain(620.0, 620.0, 620.0);
+  EXPECT_LE(PointTotal(at_620, "jam_gra_l1"), jam.tau_total.bounds.hi);
 }
 
 TEST(EnclosureRegression, RuptureBackDriveSpansTheAidingEfficiencyDomain) {

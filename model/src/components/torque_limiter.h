@@ -131,7 +131,7 @@ inline std::vector<SettingRule> StationLimiterSettingRules() {
   return {{"lockout_torque_extend", rule, SettingRule::Against::kOperatingExtend, 1.5, 1.3, 1.6},
           {"lockout_torque_retract", rule, SettingRule::Against::kOperatingRetract, 1.5, 1.3, kInfinity},
           {"max_brake_torque",
-           ">= the static jam torque it must ground (PDU stall torque, capped by the system torque limiter, at its "
+           ">= the static jam torque it must ground (PDU stall torque through the system torque limiter, at its "
            "speed, minus its end-stop torque), so that a jammed actuator sees at most the end-stop torque "
            "(docs/reduced_models.md)",
            SettingRule::Against::kJamGrounding, 1.25, 1.0, kInfinity}};

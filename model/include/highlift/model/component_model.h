@@ -126,7 +126,7 @@ struct SettingRule {
     /// back-drive torque (its airloads through the aiding efficiencies, friction neglected)
     kWingHolding,
     /// what a jam behind a torque limiter makes it ground: the static torque the drive can put
-    /// into it (the PDU stall torque, capped by the system torque limiters on its path, at its
+    /// into it (the PDU stall torque through the system torque limiters on its path, at its
     /// own speed) minus its end-stop torque (LimiterPassedTorque of torque_limiter.h)
     kJamGrounding,
   };
