@@ -171,6 +171,9 @@ class Optimizer {
   void LocalSearch(const std::vector<Interval>& d);
   std::string PeakProof(const std::vector<Interval>& d);
   void CoordinateSearch();
+  double Shave(Box& box, double lb);
+  bool ShaveSlice(Box& box, int v, double slice, const std::vector<char>& enabled = {});
+  void ShavingNeighbourhoods();
   void Sensitivities();
   void ChooseScenario();
   std::vector<double> StepTowardsSmaller(const std::vector<double>& x) const;
@@ -190,6 +193,8 @@ class Optimizer {
   std::vector<MassTerm> mass_terms_;
   std::vector<int> mass_vars_;          ///< per mass term: its network variable (-1: a constant)
   std::vector<Interval> mass_constants_;
+  std::vector<int> terms_;              ///< variables the objective sums (shaved one by one)
+  std::vector<std::vector<char>> term_constraints_;  ///< per term: the constraints near it (a mask)
   std::vector<char> definitions_;       ///< enabled mask: the laws that define derived quantities
   std::vector<int> checks_;             ///< constraints a design must satisfy for certain
   Box initial_;
@@ -197,11 +202,13 @@ class Optimizer {
   std::vector<int> uncertain_;          ///< parameter variables with a domain that are not design variables
   std::vector<double> scenario_;        ///< a point of their domains at which the boxes are contracted
   bool have_scenario_ = false;
+  int scenario_generation_ = 0;         ///< incremented whenever scenario_ is chosen again
   std::string scenario_note_;
   bool verify_size_ = false, verify_peak_ = false;
   std::string verification_note_;
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
   std::unique_ptr<icsp::Propagator> propagator_;
+  std::unique_ptr<icsp::Propagator> shaving_propagator_;  ///< the trials' (Options::shaving_ratio)
   std::unique_ptr<Evaluator> evaluator_;
   // Incumbent.
   bool found_ = false;
@@ -211,6 +218,7 @@ class Optimizer {
   Candidate best_candidate_;
   Report counters_;
   std::map<std::string, int> rejected_;
+  double root_lb_ = -kInf;                  ///< the root box's lower bound (HC4, then shaving)
   std::map<std::string, int> peak_proofs_;  ///< boxes `peak` proved infeasible, by the failing margin
 };
 
@@ -283,6 +291,7 @@ void Optimizer::AddObjective() {
         add(net().Var(m));
         mass_terms_.push_back({c.id, "tube law m = rho pi (D - t) t L (model::ShaftMass)", 0.0, 0.0});
         mass_vars_.push_back(m.value);
+        terms_.push_back(m.value);
         mass_constants_.push_back(Interval(0.0));
         continue;
       }
@@ -335,7 +344,10 @@ void Optimizer::AddObjective() {
     objective_unit_ = "kg*m^2";
     for (const Component& c : project_.components) {
       const icsp::VariableId j = net().FindVariable(c.id + ".reflected_inertia");
-      if (j.value >= 0) add(net().Var(j));
+      if (j.value >= 0) {
+        add(net().Var(j));
+        terms_.push_back(j.value);
+      }
     }
     if (expr.value < 0)
       throw InputError("objective 'inertia': the project has no component with an inertia at the PDU; minimize "
@@ -575,6 +587,7 @@ void Optimizer::ChooseScenario() {
   for (std::size_t i = 0; i < design_.size(); ++i) check[design_[i]] = Interval(best_x_[i]);
   check[bound_] = icsp::Whole();
   have_scenario_ = propagator_->Propagate(check).status != icsp::Status::kInfeasible;
+  ++scenario_generation_;
   if (!have_scenario_) scenario_note_ = "the worst-case point of the uncertain parameters was not used (the network "
                                         "rejects the best design there); the bound is the existential relaxation's";
 
@@ -685,6 +698,103 @@ void Optimizer::LocalSearch(const std::vector<Interval>& d) {
   }
 }
 
+/// One shaving trial: is "v <= its lower bound + slice" empty in `box` (propagated)? If the
+/// propagation proves it, no solution of the box has v there: v's lower end is cut off (a set
+/// operation on the box, sound as the propagation is).
+bool Optimizer::ShaveSlice(Box& box, int v, double slice, const std::vector<char>& enabled) {
+  const Interval cur = box[v];
+  const double cut = cur.lower() + slice;
+  if (!(slice > 0.0) || !(cut < cur.upper())) return false;
+  Box trial = box;
+  trial[v] = Interval(cur.lower(), cut);
+  ++counters_.shaving_propagations;
+  if (shaving_propagator_->Propagate(trial, enabled).status != icsp::Status::kInfeasible) return false;
+  ++counters_.shaving_cuts;
+  box[v] = Interval(cut, cur.upper());
+  return true;
+}
+
+/// Lower bounding by contraction (3B on the objective, as IbexOpt's): `box` propagated with
+/// objective <= best. Each term of the objective (a shaft's mass), then the objective itself, gets
+/// Options::shaving_tries trials of a slice at its lower end: for a term, half the way from its
+/// lower end to its value at the best design (again after a cut, a quarter of the slice after a
+/// slice that stays), propagated over the constraints near it; for the objective, a quarter of the
+/// gap (doubled after a cut), over the whole network. HC4's bound is the objective at the box's
+/// lower corner (the thinnest walls at the least diameters); a slice it proves empty is a part of
+/// the box no design that beats the best can be in. Returns the raised lower bound, +inf when the
+/// box emptied (no design of the box beats the best).
+double Optimizer::Shave(Box& box, double lb) {
+  const int tries = options_.shaving_tries;
+  auto gap = [&] { return best_ - std::max(lb, box[objective_].lower()); };
+  if (!(gap() > 0.0)) return lb;
+  const double n = static_cast<double>(std::max<std::size_t>(1, terms_.size()));
+  bool cut = false;
+  for (std::size_t k = 0; k < terms_.size(); ++k) {
+    const int v = terms_[k];
+    // The term at the best design: what this box's designs must undercut; the slice is half the
+    // way to it (a term whose lower end already reaches it is left alone).
+    const double small = 1e-3 * gap() / n;
+    auto reach = [&] {
+      const double target = found_ ? best_candidate_.box[v].upper() : box[v].lower() + gap() / n;
+      return std::min(target, box[v].upper()) - box[v].lower();
+    };
+    if (!(reach() > small)) continue;
+    double slice = 0.5 * reach();
+    for (int t = 0; t < tries && slice > small; ++t) {
+      if (ShaveSlice(box, v, slice, term_constraints_[k])) {
+        cut = true;
+        slice = reach() > small ? 0.5 * reach() : gap() / n;
+      } else {
+        slice *= 0.25;
+      }
+    }
+  }
+  if (cut && propagator_->Propagate(box).status == icsp::Status::kInfeasible) return kInf;
+  lb = std::max(lb, box[objective_].lower());
+  double slice = 0.25 * gap();
+  for (int t = 0; t < tries; ++t) {
+    if (!(gap() > 0.0)) break;
+    if (ShaveSlice(box, objective_, slice)) {
+      cut = true;
+      slice *= 2.0;
+      lb = std::max(lb, box[objective_].lower());
+      if (propagator_->Propagate(box).status == icsp::Status::kInfeasible) return kInf;
+      lb = std::max(lb, box[objective_].lower());
+    } else {
+      slice *= 0.25;
+    }
+  }
+  return lb;
+}
+
+/// The constraints within two steps of each term (those on the term, and those on the variables
+/// they involve: a shaft's mass law, then its capacity, stiffness, relations and the requirements
+/// on its diameter and wall, with the peak loads at their current enclosures). A slice that this
+/// subnetwork alone proves empty is empty for the whole network (fewer constraints admit more), and
+/// its propagation costs a few revisions instead of a sweep of the whole network.
+void Optimizer::ShavingNeighbourhoods() {
+  const int depth = 2;
+  term_constraints_.clear();
+  for (int v : terms_) {
+    std::vector<char> mask(net().num_constraints(), 0);
+    std::vector<char> seen(net().num_variables(), 0);
+    std::vector<int> frontier = {v};
+    seen[v] = 1;
+    for (int level = 0; level < depth; ++level) {
+      std::vector<int> next;
+      for (int x : frontier)
+        for (int c : net().ConstraintsOf(icsp::VariableId{x})) {
+          if (mask[c]) continue;
+          mask[c] = 1;
+          for (int y : net().ScopeOf(icsp::ConstraintId{c}))
+            if (!seen[y]) seen[y] = 1, next.push_back(y);
+        }
+      frontier = std::move(next);
+    }
+    term_constraints_.push_back(std::move(mask));
+  }
+}
+
 void Optimizer::Setup() {
   options_.Validate();
   ChooseDesignVariables();
@@ -706,6 +816,10 @@ void Optimizer::Setup() {
   po.record_reasons = false;
   po.max_seconds = std::max(1.0, options_.max_seconds);
   propagator_ = std::make_unique<icsp::Propagator>(net(), po);
+  icsp::PropagationOptions so = po;
+  so.ratio = options_.shaving_ratio;
+  shaving_propagator_ = std::make_unique<icsp::Propagator>(net(), so);
+  ShavingNeighbourhoods();
   evaluator_ = std::make_unique<Evaluator>(net());
 }
 
@@ -820,6 +934,11 @@ Report Optimizer::Run() {
   struct Node {
     std::vector<Interval> d;
     double lb;
+    /// Lower ends of the objective's terms proved by shaving (empty: none), valid for the
+    /// relaxation they were proved in: -1 with the uncertain parameters free (valid at any point),
+    /// else the generation of the worst-case point.
+    std::vector<double> term_lo;
+    int term_generation = -1;
   };
   auto worse = [](const Node& a, const Node& b) { return a.lb > b.lb; };
   std::priority_queue<Node, std::vector<Node>, decltype(worse)> queue(worse);
@@ -833,6 +952,7 @@ Report Optimizer::Run() {
   double closed_lb = kInf;   // least lower bound of the boxes closed within the tolerance
   bool unproved = false;     // a box was closed without a proof (tiny, no design found in it)
   bool limit = false;
+  int next_polish = 1;  // improvements count at which CoordinateSearch and ChooseScenario run next
   while (!queue.empty()) {
     // With a cut-off (another part combination's best), closing on it means nothing here is better.
     if ((found_ || cut_off_) && tol.Closed(best_, std::min(closed_lb, queue.top().lb))) break;
@@ -848,17 +968,22 @@ Report Optimizer::Run() {
       continue;
     }
     Box box = initial_;
+    const int generation = have_scenario_ ? scenario_generation_ : -1;
     if (have_scenario_)
       for (std::size_t j = 0; j < uncertain_.size(); ++j) box[uncertain_[j]] = Interval(scenario_[j]);
     for (std::size_t i = 0; i < design_.size(); ++i) box[design_[i]] = node.d[i];
     box[bound_] = std::isfinite(best_) ? Interval(-kInf, best_) : icsp::Whole();
+    if (!node.term_lo.empty() && (node.term_generation < 0 || node.term_generation == generation))
+      for (std::size_t t = 0; t < terms_.size(); ++t)
+        box[terms_[t]] = icsp::Meet(box[terms_[t]], Interval(node.term_lo[t], kInf));
     const icsp::PropagationReport pr = propagator_->Propagate(box);
     if (pr.status == icsp::Status::kInfeasible) {
       if (std::isfinite(best_)) ++counters_.pruned;
       else ++counters_.infeasible_boxes;
       continue;
     }
-    const double lb = std::max(node.lb, box[objective_].lower());
+    double lb = std::max(node.lb, box[objective_].lower());
+    if (counters_.boxes == 1) root_lb_ = lb;
     if ((found_ || cut_off_) && tol.Closed(best_, lb)) {
       closed_lb = std::min(closed_lb, lb);
       continue;
@@ -870,15 +995,34 @@ Report Optimizer::Run() {
       ++peak_proofs_[proof.substr(0, proof.find(" carries"))];
       continue;
     }
-    const int before = counters_.improvements;
     LocalSearch(d);
-    if (counters_.improvements != before && (counters_.improvements & (counters_.improvements - 1)) == 0) {
+    // After the 1st, 2nd, 4th, ... improvement: the count may pass a power of two within one local
+    // search (several improvements in one box), so the next polish is due when it reaches it.
+    if (counters_.improvements >= next_polish) {
       CoordinateSearch();
       ChooseScenario();
+      while (next_polish <= counters_.improvements) next_polish *= 2;
     }
     if ((found_ || cut_off_) && tol.Closed(best_, lb)) {
       closed_lb = std::min(closed_lb, lb);
       continue;
+    }
+    std::vector<double> term_lo;
+    if (options_.shaving_tries > 0 && std::isfinite(best_)) {
+      box[bound_] = Interval(-kInf, best_);
+      const double shaved = Shave(box, lb);
+      if (!std::isfinite(shaved)) {  // no design of the box beats the best
+        ++counters_.pruned;
+        continue;
+      }
+      lb = std::max(lb, shaved);
+      if (counters_.boxes == 1) root_lb_ = lb;
+      if (tol.Closed(best_, lb)) {
+        closed_lb = std::min(closed_lb, lb);
+        continue;
+      }
+      for (std::size_t i = 0; i < design_.size(); ++i) d[i] = box[design_[i]];
+      for (int v : terms_) term_lo.push_back(box[v].lower());
     }
     const int k = ChooseSplit(d);
     if (k < 0) {  // too small to split further
@@ -887,7 +1031,7 @@ Report Optimizer::Run() {
       continue;
     }
     const double m = Mid(d[k]);
-    Node a{d, lb}, b{d, lb};
+    Node a{d, lb, term_lo, generation}, b{d, lb, term_lo, generation};
     a.d[k] = Interval(d[k].lower(), m);
     b.d[k] = Interval(m, d[k].upper());
     queue.push(std::move(a));
@@ -904,6 +1048,9 @@ Report Optimizer::Run() {
   r.improvements = counters_.improvements;
   r.peak_checks = counters_.peak_checks;
   r.peak_pruned = counters_.peak_pruned;
+  r.shaving_propagations = counters_.shaving_propagations;
+  r.shaving_cuts = counters_.shaving_cuts;
+  r.root_lower_bound = icsp::ToDisplay(root_lb_, objective_unit_);
   {
     std::vector<std::pair<std::string, int>> why(rejected_.begin(), rejected_.end());
     std::stable_sort(why.begin(), why.end(), [](const auto& a, const auto& b) { return a.second > b.second; });
@@ -1062,6 +1209,10 @@ void Options::Validate() const {
     if (c.parts.empty())
       throw InputError("optimize: no part to choose from for component '" + c.component +
                        "'; give at least one part (the database's parts of its type)");
+  if (shaving_tries < 0 || shaving_tries > 20)
+    throw InputError("optimize: shaving_tries = " + std::to_string(shaving_tries) + " must be from 0 to 20");
+  if (!(shaving_ratio >= 0.0 && shaving_ratio < 1.0))
+    throw InputError("optimize: shaving_ratio = " + Number(shaving_ratio) + " must be in [0, 1)");
   if (!(propagation_ratio >= 0.0 && propagation_ratio < 1.0))
     throw InputError("optimize: propagation_ratio = " + Number(propagation_ratio) + " must be in [0, 1)");
 }
@@ -1170,6 +1321,8 @@ std::string Report::FullReport() const {
     << improvements << " improvements, ";
   if (peak_checks > 0)
     o << peak_checks << " boxes through peak over their extent (" << peak_pruned << " proved to fail it), ";
+  if (shaving_propagations > 0)
+    o << shaving_propagations << " shaving trials (" << shaving_cuts << " cut a slice), ";
   o << FormatNumber(seconds, 3) << " s\n";
   return o.str();
 }
@@ -1243,6 +1396,7 @@ nlohmann::json Report::ToJson() const {
                    {"infeasible_boxes", infeasible_boxes}, {"candidates", candidates},
                    {"reduced_model_checks", reduced_model_checks}, {"improvements", improvements},
                    {"peak_checks", peak_checks}, {"peak_pruned", peak_pruned},
+                   {"shaving_propagations", shaving_propagations}, {"shaving_cuts", shaving_cuts},
                    {"seconds", seconds}};
   return j;
 }

@@ -267,6 +267,14 @@ TEST(OptimizeOptions, DefaultsAreValidAndBadOnesNamed) {
   o = Options{};
   o.max_boxes = 0;
   EXPECT_THROW(o.Validate(), InputError);
+  o = Options{};
+  o.shaving_tries = -1;
+  try {
+    o.Validate();
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("shaving_tries"), std::string::npos);
+  }
 }
 
 TEST(OptimizeStatus, RoundTripsToStrings) {
@@ -283,6 +291,36 @@ TEST(Optimize, StopsAtTheBoxLimitWithAnHonestStatus) {
   if (r.found) {
     EXPECT_LE(r.lower_bound, AnalyticMass(44e9) * (1 + 1e-12));
   }
+}
+
+// Shaving (Options::shaving_tries): at the root box, HC4's bound is the mass at the box's lower
+// corner (the thinnest wall at the least diameter), far below the optimum; a slice of the mass the
+// propagation proves empty raises it. The shaved bound must be strictly tighter and still a bound
+// (at most the analytic optimum), at every number of trials.
+TEST(Optimize, ShavingRaisesTheRootBoundAboveHc4AndStaysBelowTheOptimum) {
+  const double m = AnalyticMass(44e9);
+  Options o;
+  o.max_boxes = 1;
+  o.shaving_tries = 0;
+  const Report plain = Optimize(Load(Chain()), o);
+  ASSERT_TRUE(plain.found) << plain.FullReport();
+  EXPECT_EQ(plain.shaving_propagations, 0);
+  for (int tries : {1, 2, 4, 8}) {
+    o.shaving_tries = tries;
+    const Report shaved = Optimize(Load(Chain()), o);
+    ASSERT_TRUE(shaved.found) << shaved.FullReport();
+    EXPECT_GT(shaved.shaving_cuts, 0) << tries;
+    EXPECT_GT(shaved.root_lower_bound, plain.root_lower_bound * (1 + 1e-3)) << tries << ": " << shaved.BriefReport();
+    EXPECT_LE(shaved.root_lower_bound, m * (1 + 1e-12)) << tries;
+    EXPECT_LE(shaved.lower_bound, m * (1 + 1e-12)) << tries;
+  }
+  // With the uncertain modulus the bound holds at its worst case too.
+  o.shaving_tries = 4;
+  o.max_boxes = 20000;
+  const Report robust = Optimize(Load(Chain("[43, 51] GPa")), o);
+  ASSERT_EQ(robust.status, Status::kOptimal) << robust.FullReport();
+  EXPECT_LE(robust.lower_bound, AnalyticMass(43e9) * (1 + 1e-12));
+  EXPECT_GT(robust.shaving_cuts, 0);
 }
 
 TEST(Optimize, DesignFlagRoundTripsThroughTheProjectFile) {

@@ -61,6 +61,14 @@ struct Options {
                                     ///< is one robust feasibility check)
   double propagation_ratio = 0.01;  ///< HC4 agenda ratio of the contractor (docs/icsp.md; 0: exact
                                     ///< fixed point, slower, same certificates)
+  /// Lower bounds by shaving (3B consistency on the objective, as IbexOpt's lower bounding by
+  /// contraction): in every box, once a design is known, each term of the objective (each
+  /// component's mass or reflected inertia) gets up to this many trials "term <= its lower bound +
+  /// a slice" (a propagation each); a slice the propagation empties is cut off for certain, which
+  /// raises the term's lower bound, inherited by the box's children. Then the objective itself gets
+  /// as many trials. 0: plain HC4 bounds (docs/optimize.md, Method 2).
+  int shaving_tries = 2;
+  double shaving_ratio = 0.01;      ///< HC4 agenda ratio of the shaving trials' propagations
   bool verify_size = true;          ///< an upper bound must also pass reduced_models' Size over the
                                     ///< remaining domains (`highlift size` exits 0 for it)
   bool verify_peak = true;          ///< ... and AnalysePeaks (`highlift peak` exits 0 for it)
@@ -171,6 +179,11 @@ struct Report {
   int improvements = 0;         ///< times the best design improved
   int peak_checks = 0;          ///< boxes analysed by `peak` over their whole extent
   int peak_pruned = 0;          ///< ... of which `peak` proved that none of their designs passes it
+  int shaving_propagations = 0;  ///< trial propagations of the shaving (Options::shaving_tries)
+  int shaving_cuts = 0;         ///< ... of which proved a slice empty (a raised lower bound)
+  /// The certified lower bound of the root box: after HC4 and shaving with the first design known
+  /// (or HC4 alone when none was found); display unit.
+  double root_lower_bound = 0.0;
   double seconds = 0.0;
   /// The project with the design variables fixed at the best design (nominal and domain, provenance
   /// "optimized"); only when found.
