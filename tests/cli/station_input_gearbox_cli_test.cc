@@ -140,10 +140,10 @@ TEST(StationInputGearboxCli, SimulatesAsABranchGearboxWithASeparateLimiter) {
     ASSERT_TRUE(unit.count(id) && separate.count(id)) << id;
     EXPECT_NEAR(unit.at(id), separate.at(id), 5e-3 * separate.at(id)) << id;
   }
-  // The limiter of station 1 locks out: its actuator sees more than the lock-out torque, as the
-  // separate limiter's output does.
-  EXPECT_NEAR(unit.at("gra_1"), separate.at("sig_1_stl"), 5e-3 * separate.at("sig_1_stl"));
+  // The limiter of station 1 locks out: its actuator sees more than the lock-out torque (the
+  // loop above: as behind the separate limiter), and no more than the limiter carries.
   EXPECT_GT(unit.at("gra_1"), 180.0);
+  EXPECT_LE(unit.at("gra_1"), separate.at("sig_1_stl") * (1 + 5e-3));
 }
 
 TEST(StationInputGearbox, SizingSetsItsLimiterAgainstTheStationTorque) {

@@ -122,8 +122,19 @@ TEST(OptimizeCli, InfeasibleProblemExits1WithChecksExplanation) {
 // The example's system limiter settings are uncertain ([112.5, 137.5] N*m) and a requirement asks
 // >= 116.4 N*m of them: no shaft wall can make that hold for every value. Said at once, with the
 // requirement and the remedy, instead of searching until the limits.
+// The example's station limiter brakes are below their rule of `size` for every value of the domains
+// (proved infeasible at once, as it should be); with brakes that ground the jam the first thing
+// the search meets is the STL requirement.
 TEST(OptimizeCli, ConstraintsNoDesignVariableReachesAreNamedAtOnce) {
-  const CliResult r = RunCli({"optimize", "examples/a320_class_flaps.json", "--design", "shaft_l1.wall_thickness"});
+  std::ifstream in(std::string(HIGHLIFT_SOURCE_DIR) + "/examples/a320_class_flaps.json");
+  nlohmann::json p = nlohmann::json::parse(in);
+  for (auto& c : p["components"])
+    if (c["type"] == "station_torque_limiter") c["parameters"]["max_brake_torque"] = "1000 N*m";
+  const std::filesystem::path dir = std::filesystem::path(HIGHLIFT_BINARY_DIR) / "optimize-cli-test-unreached";
+  std::filesystem::create_directories(dir);
+  const std::filesystem::path file = dir / "a320_class_flaps_strong_brakes.json";
+  std::ofstream(file) << p.dump(1);
+  const CliResult r = RunCli({"optimize", file.string(), "--design", "shaft_l1.wall_thickness"});
   EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
   EXPECT_NE(r.out.find("no_design_found"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("stl_setting_min_left: stl_left.lockout_torque_extend >= 1.2 * 97 N*m"), std::string::npos) << r.out;
