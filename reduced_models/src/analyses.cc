@@ -410,6 +410,8 @@ PeakReport AnalysePeaks(const Project& project, const PeakOptions& options) {
     const bool stall = model::HasPduStallTorque(pdu, pdu_nominal);
     double static_torque = stall ? model::PduStallTorque(pdu, pdu_nominal) : 0.0;
     Interval static_bounds = stall ? model::PduStallTorque(pdu, pdu_bounds) : Interval(0.0);
+    pc.tau_static_drive = static_torque;
+    pc.tau_static_drive_bounds = static_bounds.ToDomain();
     for (int k : g.PathToRoot(a))
       if (g.Roles(k).wing_limiter) {
         const Component& stl = *g.nodes[k].component;
@@ -580,9 +582,21 @@ PeakReport AnalysePeaks(const Project& project, const PeakOptions& options) {
         }
       }
     Bounded through = pc.tau_total;  // N*m at the reference speed: what reaches the component
+    // A jam: the PDU and what lies before the system torque limiter carry the whole stall torque,
+    // not the share the limiter passes on.
+    const bool has_drive_side = pc.kind == kJamKind && pc.tau_static_drive_bounds.bounded();
+    bool drive_side = has_drive_side;
+    Bounded drive_through;
+    if (has_drive_side) {
+      drive_through.nominal = pc.tau_dynamic.nominal + pc.tau_static_drive;
+      drive_through.bounds = (Interval::FromDomain(pc.tau_dynamic.bounds) +
+                              Interval::FromDomain(pc.tau_static_drive_bounds)).ToDomain();
+    }
     for (auto id = pc.load_path.rbegin(); id != pc.load_path.rend(); ++id) {
       const int k = g.Find(*id);
       auto& w = worst[*id];
+      const Bounded path_through = through;
+      if (drive_side) through = drive_through;
       if (w.component.empty() || through.bounds.hi > w.torque.bounds.hi) {
         w.component = *id;
         w.worst_case = pc.name;
@@ -592,6 +606,8 @@ PeakReport AnalysePeaks(const Project& project, const PeakOptions& options) {
         w.torque_certain = through.bounds.lo;
         w.certain_case = pc.name;
       }
+      through = path_through;
+      if (g.Roles(k).wing_limiter) drive_side = false;  // beyond it: what it passes on
       // A limiter in a down-drive (LimitedPort) limits only when the path goes on through that port.
       const int limited = g.LimitedNode(k);
       const bool behind = limited == k || (std::next(id) != pc.load_path.rend() && g.Find(*std::next(id)) == limited);

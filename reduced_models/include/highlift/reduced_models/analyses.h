@@ -73,6 +73,12 @@ struct PeakCase {
   Bounded tau_dynamic;     ///< N*m, equation (1)
   double tau_static = 0.0; ///< N*m, static drive (jam) or back-drive (rupture) torque, nominal
   Domain tau_static_bounds;  ///< N*m, its enclosure over the parameter domains
+  /// N*m, a jam: the static torque on the drive side of the system torque limiter, the PDU stall
+  /// torque before the limiter passes its share on (tau_static behind it); the PDU and what lies
+  /// between it and the limiter carry it. Equal to tau_static without a system limiter; a
+  /// rupture has none (0, an unbounded domain).
+  double tau_static_drive = 0.0;
+  Domain tau_static_drive_bounds;  ///< N*m, its enclosure over the parameter domains
   /// N*m at the stop: the largest torque the stop passes before it slips (a friction brake: the
   /// larger of its dynamic and static torques), nominal and over the domains; absent for a rigid
   /// stop (a jam).
