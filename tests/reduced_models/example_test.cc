@@ -93,6 +93,13 @@ TEST(HydraulicExample, JamStaticPartIsTheMotorsStallTorqueThroughTheSystemLimite
       EXPECT_GE(c.tau_static_bounds.hi, expected) << c.name;
     }
     EXPECT_EQ(jams, 12);
+    // Upstream of the STL the PDU carries the whole stall torque with the jam's dynamic part.
+    double pdu_row = 0.0, largest_jam_dynamic = 0.0;
+    for (const auto& w : r.worst)
+      if (w.component == "pdu") pdu_row = w.torque.nominal;
+    for (const auto& c : r.cases)
+      if (c.kind == "jam") largest_jam_dynamic = std::max(largest_jam_dynamic, c.tau_dynamic.nominal);
+    EXPECT_NEAR(pdu_row, largest_jam_dynamic + stall, 1e-9 * pdu_row);
     if (displacement_cm3 > 10) {
       EXPECT_GT(expected, 1.5 * tau2);  // the case where the brake slips
     }
