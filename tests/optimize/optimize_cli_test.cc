@@ -87,6 +87,8 @@ TEST(OptimizeCli, WrittenDesignPassesCheckAndSize) {
   EXPECT_LE(doc["lower_bound"].get<double>(), doc["best"].get<double>());
   EXPECT_EQ(doc["design"].size(), 36u);
   EXPECT_EQ(doc["written"], best.string());
+  const CliResult validate = RunCli({"validate", best.string()});
+  EXPECT_EQ(validate.exit_code, 0) << validate.out << validate.err;
   const CliResult check = RunCli({"check", best.string()});
   EXPECT_EQ(check.exit_code, 0) << check.out << check.err;
   const CliResult size = RunCli({"size", best.string()});
@@ -175,7 +177,8 @@ TEST_P(OptimizeEveryExample, AsGivenIsProvedInfeasibleAndPeakAgrees) {
 }
 
 // With actuators that do not back-drive and are rated for the loads, a design exists: the one
-// optimize returns (size and peak verified) is written, and `check`, `size` and `peak` pass it.
+// optimize returns (size and peak verified) is written, and `validate` (the catalogue's relations,
+// e.g. a lock-out below its end stop), `check`, `size` and `peak` pass it.
 TEST_P(OptimizeEveryExample, WithNoBackActuatorsTheDesignPassesCheckSizeAndPeak) {
   const std::filesystem::path dir = std::filesystem::path(HIGHLIFT_BINARY_DIR) / "optimize-every-example";
   const std::filesystem::path problem = DesignProblem(GetParam(), dir, true);
@@ -187,7 +190,7 @@ TEST_P(OptimizeEveryExample, WithNoBackActuatorsTheDesignPassesCheckSizeAndPeak)
   const nlohmann::json doc = nlohmann::json::parse(r.out);
   EXPECT_EQ(doc["status"], "optimal");
   EXPECT_GT(doc["counters"]["reduced_model_checks"].get<int>(), 0);
-  for (const char* analysis : {"check", "size", "peak"}) {
+  for (const char* analysis : {"validate", "check", "size", "peak"}) {
     const CliResult a = RunCli({analysis, best.string()});
     EXPECT_EQ(a.exit_code, 0) << analysis << "\n" << a.out << a.err;
   }
