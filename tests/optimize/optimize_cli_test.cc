@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -276,6 +277,55 @@ TEST(OptimizeCli, ChoosePartWithoutPartsOfThatTypeExits2) {
   EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
   EXPECT_NE(r.err.find("no part of type 'wing_tip_brake'"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find(db.filename().string()), std::string::npos) << r.err;
+}
+
+// With the estimator on (the default), a tube whose diameter and wall are design variables keeps
+// its stiffness and inertia tied to them: the estimator leaves them to the network's tube law
+// instead of pinning them to an interval over every choice. The answer is the one without
+// estimates, with the design marked in the file or named by --design.
+TEST(OptimizeCli, EstimatorLeavesWhatFollowsFromTheDesignToTheNetwork) {
+  const std::filesystem::path dir = std::filesystem::path(HIGHLIFT_BINARY_DIR) / "optimize-cli-estimator";
+  std::filesystem::create_directories(dir);
+  nlohmann::json j = nlohmann::json::parse(R"json({
+  "format": "highlift-project/1",
+  "name": "one tube",
+  "components": [
+    {"id": "pdu", "type": "pdu", "parameters": {"motor_count": 2, "motor_inertia": "3e-4 kg*m^2",
+      "ratio": 20, "gear_inertia": "0.02 kg*m^2"}},
+    {"id": "shaft_1", "type": "torque_shaft",
+     "parameters": {"length": "2 m",
+                    "outer_diameter": {"value": 40, "min": 20, "max": 60, "unit": "mm", "design": true},
+                    "wall_thickness": {"value": 2, "min": 0.5, "max": 4, "unit": "mm", "design": true},
+                    "density": "4420 kg/m^3", "shear_modulus": "44 GPa", "allowable_shear_stress": "500 MPa"}},
+    {"id": "wtb", "type": "wing_tip_brake", "parameters": {"inertia": "5e-4 kg*m^2"}}
+  ],
+  "connections": [["pdu.left", "shaft_1.a"], ["shaft_1.b", "wtb.a"]],
+  "requirements": [
+    {"id": "capacity", "expression": "shaft_1.torque_capacity >= 2000 N*m"},
+    {"id": "stiffness", "expression": "shaft_1.c >= 5000 N*m/rad"}
+  ]
+})json");
+  const std::filesystem::path marked = dir / "marked.json", unmarked = dir / "unmarked.json";
+  std::ofstream(marked) << j.dump(1);
+  for (const char* p : {"outer_diameter", "wall_thickness"}) j["components"][1]["parameters"][p].erase("design");
+  std::ofstream(unmarked) << j.dump(1);
+  auto best = [](const std::vector<std::string>& args) {
+    const CliResult r = RunCli(args);
+    EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+    const nlohmann::json doc = nlohmann::json::parse(r.out);
+    EXPECT_EQ(doc["status"], "optimal") << r.out;
+    return doc["best"].get<double>();
+  };
+  const double plain = best({"optimize", marked.string(), "--json", "--no-estimate"});
+  EXPECT_NEAR(best({"optimize", marked.string(), "--json"}), plain, 1e-9 * plain);
+  EXPECT_NEAR(best({"optimize", unmarked.string(), "--json", "--design", "shaft_1.outer_diameter", "--design",
+                    "shaft_1.wall_thickness"}),
+              plain, 1e-9 * plain);
+  // The estimator says why it left them.
+  const CliResult e = RunCli({"estimate", marked.string()});
+  EXPECT_NE(e.out.find("shaft_1.stiffness is not estimated: it follows the design variable shaft_1.outer_diameter"),
+            std::string::npos)
+      << e.out << e.err;
 }
 
 TEST(OptimizeCli, BadOptionValueExits2) {
