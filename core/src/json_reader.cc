@@ -171,7 +171,7 @@ class Parser {
       SkipSpace();
       Expect(':', "after a member name");
       SkipSpace();
-      object[key] = ParseValue(member, depth + 1);
+      object.emplace(std::move(key), ParseValue(member, depth + 1));
       SkipSpace();
       if (Peek() == ',') {
         Advance();
@@ -261,6 +261,23 @@ class Parser {
         return s;
       }
       if (static_cast<unsigned char>(ch) < 0x20) Fail("control character in a string; write \\n or \\t");
+      if (ch != '\\' && static_cast<unsigned char>(ch) < 0x80) {
+        // A run of printable ASCII: one byte and one column each, what Advance() does for them.
+        // A byte followed by a stray continuation byte is left to the code-point path below,
+        // which reports it as before.
+        const std::size_t start = pos_;
+        while (pos_ < text_.size()) {
+          const auto c = static_cast<unsigned char>(text_[pos_]);
+          if (c < 0x20 || c >= 0x80 || c == '"' || c == '\\') break;
+          if (pos_ + 1 < text_.size() && (static_cast<unsigned char>(text_[pos_ + 1]) & 0xC0) == 0x80) break;
+          ++pos_;
+        }
+        if (pos_ > start) {
+          column_ += static_cast<int>(pos_ - start);
+          s.append(text_.substr(start, pos_ - start));
+          continue;
+        }
+      }
       if (ch != '\\') {
         // copy a whole code point, which must be UTF-8 (JSON output of it would fail later)
         const std::size_t n = Utf8Length();

@@ -5,6 +5,7 @@
 #include <map>
 #include <string>
 #include <string_view>
+#include <unordered_map>
 
 #include <nlohmann/json.hpp>
 
@@ -20,8 +21,10 @@ struct TextPosition {
 /// A parsed document: the value, and positions by RFC 6901 JSON pointer.
 struct LocatedJson {
   nlohmann::json value;
-  std::map<std::string, TextPosition> values;  ///< where each value starts
-  std::map<std::string, TextPosition> keys;    ///< where the key of each object member starts
+  // Looked up by pointer only (never walked in order): hashed, which makes reading a project of
+  // several thousand values cheaper than ordered maps of long, common-prefix keys (issue 30).
+  std::unordered_map<std::string, TextPosition> values;  ///< where each value starts
+  std::unordered_map<std::string, TextPosition> keys;    ///< where the key of each object member starts
 
   /// Location of the value at `pointer` (for a missing member: its nearest present ancestor).
   SourceLocation At(const std::string& file, const std::string& pointer) const;

@@ -1,10 +1,14 @@
 // Units through UDUNITS-2: one lazily initialised unit system guarded by a mutex (UDUNITS-2 is not
-// thread-safe), parsed units cached by their text.
+// thread-safe), parsed units cached by their text; the units of the examples and the catalogue
+// come from a built-in table of what UDUNITS-2 gives for them (unit_table.h), so that loading
+// a project need not read the unit database.
 #include "highlift/core/units.h"
 
 #include <udunits2.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <memory>
@@ -14,6 +18,7 @@
 #include <string>
 
 #include "highlift/core/error.h"
+#include "unit_table.h"
 
 namespace highlift {
 
@@ -346,11 +351,86 @@ UnitConversion ParseUnitLocked(const std::string& unit) {
   return c;
 }
 
+// The built-in table: the texts the examples and the catalogue use, with what UDUNITS-2 (Debian's
+// 2.2, its default database, the aliases above) gives for each, as hexadecimal doubles (the
+// decimal value after "//"). Exponents in the order of kBaseSymbols: m, kg, s, A, K, mol, cd.
+constexpr std::array<detail::BuiltInUnit, 32> kBuiltInUnits = {{
+    {"s", {0x1p+0, 0x0p+0, {{0, 0, 1, 0, 0, 0, 0}}}},  // 1
+    {"s/rad", {0x1p+0, 0x0p+0, {{0, 0, 1, 0, 0, 0, 0}}}},  // 1
+    {"rpm", {0x1.acee9f37bebd5p-4, 0x0p+0, {{0, 0, -1, 0, 0, 0, 0}}}},  // 0.10471975511965977
+    {"rev", {0x1.921fb54442d18p+2, 0x0p+0, {{0, 0, 0, 0, 0, 0, 0}}}},  // 6.2831853071795862
+    {"rad", {0x1p+0, 0x0p+0, {{0, 0, 0, 0, 0, 0, 0}}}},  // 1
+    {"rad/s", {0x1p+0, 0x0p+0, {{0, 0, -1, 0, 0, 0, 0}}}},  // 1
+    {"ms", {0x1.0624dd2f1a9fcp-10, 0x0p+0, {{0, 0, 1, 0, 0, 0, 0}}}},  // 0.001
+    {"mm^2", {0x1.0c6f7a0b5ed8dp-20, 0x0p+0, {{2, 0, 0, 0, 0, 0, 0}}}},  // 9.9999999999999995e-07
+    {"mm", {0x1.0624dd2f1a9fcp-10, 0x0p+0, {{1, 0, 0, 0, 0, 0, 0}}}},  // 0.001
+    {"mm/rev", {0x1.4dc5a8d185aa3p-13, 0x0p+0, {{1, 0, 0, 0, 0, 0, 0}}}},  // 0.00015915494309189535
+    {"m^3/(s*Pa)", {0x1p+0, 0x0p+0, {{4, -1, 1, 0, 0, 0, 0}}}},  // 1
+    {"m", {0x1p+0, 0x0p+0, {{1, 0, 0, 0, 0, 0, 0}}}},  // 1
+    {"kg", {0x1p+0, 0x0p+0, {{0, 1, 0, 0, 0, 0, 0}}}},  // 1
+    {"kg/m^3", {0x1p+0, 0x0p+0, {{-3, 1, 0, 0, 0, 0, 0}}}},  // 1
+    {"kg/m", {0x1p+0, 0x0p+0, {{-1, 1, 0, 0, 0, 0, 0}}}},  // 1
+    {"kg*m^2", {0x1p+0, 0x0p+0, {{2, 1, 0, 0, 0, 0, 0}}}},  // 1
+    {"kW", {0x1.f4p+9, 0x0p+0, {{2, 1, -3, 0, 0, 0, 0}}}},  // 1000
+    {"kN", {0x1.f4p+9, 0x0p+0, {{1, 1, -2, 0, 0, 0, 0}}}},  // 1000
+    {"kN*m", {0x1.f4p+9, 0x0p+0, {{2, 1, -2, 0, 0, 0, 0}}}},  // 1000
+    {"deg", {0x1.1df46a2529d39p-6, 0x0p+0, {{0, 0, 0, 0, 0, 0, 0}}}},  // 0.017453292519943295
+    {"cm^3", {0x1.0c6f7a0b5ed8ep-20, 0x0p+0, {{3, 0, 0, 0, 0, 0, 0}}}},  // 1.0000000000000002e-06
+    {"cm^3/rev", {0x1.55c85af339004p-23, 0x0p+0, {{3, 0, 0, 0, 0, 0, 0}}}},  // 1.5915494309189538e-07
+    {"bar", {0x1.86ap+16, 0x0p+0, {{-1, 1, -2, 0, 0, 0, 0}}}},  // 100000
+    {"N*s/m", {0x1p+0, 0x0p+0, {{0, 1, -1, 0, 0, 0, 0}}}},  // 1
+    {"N*m", {0x1p+0, 0x0p+0, {{2, 1, -2, 0, 0, 0, 0}}}},  // 1
+    {"N*m/rad", {0x1p+0, 0x0p+0, {{2, 1, -2, 0, 0, 0, 0}}}},  // 1
+    {"N*m/m", {0x1p+0, 0x0p+0, {{1, 1, -2, 0, 0, 0, 0}}}},  // 1
+    {"N*m*s/rad", {0x1p+0, 0x0p+0, {{2, 1, -1, 0, 0, 0, 0}}}},  // 1
+    {"MPa", {0x1.e848p+19, 0x0p+0, {{-1, 1, -2, 0, 0, 0, 0}}}},  // 1000000
+    {"L", {0x1.0624dd2f1a9fdp-10, 0x0p+0, {{3, 0, 0, 0, 0, 0, 0}}}},  // 0.0010000000000000002
+    {"GPa", {0x1.dcd65p+29, 0x0p+0, {{-1, 1, -2, 0, 0, 0, 0}}}},  // 1000000000
+    {"psi", {0x1.aeec1ddf70f96p+12, 0x0p+0, {{-1, 1, -2, 0, 0, 0, 0}}}},  // 6894.757293168359
+}};
+
+// Whether the table may answer (see unit_table.h); decided once, under UnitMutex().
+bool BuiltInUnitsApplyLocked() {
+  static const bool apply = [] {
+    ut_status status = UT_SUCCESS;
+    const char* path = ut_get_path_xml(nullptr, &status);
+    return status == UT_OPEN_DEFAULT && path != nullptr && access(path, R_OK) == 0;
+  }();
+  return apply;
+}
+
+const UnitConversion* FindBuiltInUnit(std::string_view unit) {
+  for (const auto& b : kBuiltInUnits)
+    if (b.text == unit) return &b.conversion;
+  return nullptr;
+}
+
 }  // namespace
+
+namespace detail {
+
+std::span<const BuiltInUnit> BuiltInUnits() { return kBuiltInUnits; }
+
+bool BuiltInUnitsApply() {
+  std::lock_guard<std::mutex> lock(UnitMutex());
+  return BuiltInUnitsApplyLocked();
+}
+
+UnitConversion ParseUnitWithDatabase(std::string_view unit_text) {
+  const std::string unit = Trim(unit_text);
+  std::lock_guard<std::mutex> lock(UnitMutex());
+  return ParseUnitLocked(unit);
+}
+
+}  // namespace detail
 
 UnitConversion ParseUnit(std::string_view unit_text) {
   const std::string unit = Trim(unit_text);
   std::lock_guard<std::mutex> lock(UnitMutex());
+  if (BuiltInUnitsApplyLocked()) {
+    if (unit.empty() || unit == "1") return {};
+    if (const UnitConversion* b = FindBuiltInUnit(unit)) return *b;
+  }
   static std::map<std::string, UnitConversion, std::less<>> cache;
   if (auto it = cache.find(unit); it != cache.end()) return it->second;
   UnitConversion c = ParseUnitLocked(unit);

@@ -82,18 +82,19 @@ void Network::AddElement(std::string_view type, std::string_view id, ElementPara
     }
   }
   e.parameters = std::move(parameters);
+  index_.emplace(e.id, elements_.size());
   elements_.push_back(std::move(e));
 }
 
 const NetworkElement* Network::Find(std::string_view id) const {
-  for (const auto& e : elements_)
-    if (e.id == id) return &e;
-  return nullptr;
+  const auto it = index_.find(id);
+  return it == index_.end() ? nullptr : &elements_[it->second];
 }
 
 void Network::Adopt(const NetworkElement& element) {
   if (Find(element.id) != nullptr)
     throw InputError("element id '" + element.id + "' is used twice; give each element its own id");
+  index_.emplace(element.id, elements_.size());
   elements_.push_back(element);
 }
 

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "highlift/core/error.h"
+#include "unit_table.h"  // core/src: the built-in unit table
 
 namespace highlift {
 namespace {
@@ -123,6 +124,26 @@ TEST(Units, ParsingIsThreadSafe) {
   }
   for (auto& th : threads) th.join();
   for (double r : results) EXPECT_DOUBLE_EQ(r, 25 * 1000.0 + 25 * 1.0);
+}
+
+TEST(Units, BuiltInTableAgreesWithUdunitsBitForBit) {
+  // Every entry of the built-in table is what UDUNITS-2's database gives for its text: the same
+  // doubles (not merely close) and the same dimension, so a project converts as it did before.
+  ASSERT_TRUE(detail::BuiltInUnitsApply()) << "this machine reads UDUNITS-2's default database";
+  ASSERT_FALSE(detail::BuiltInUnits().empty());
+  for (const auto& b : detail::BuiltInUnits()) {
+    const UnitConversion db = detail::ParseUnitWithDatabase(b.text);
+    EXPECT_EQ(b.conversion.scale, db.scale) << b.text;
+    EXPECT_EQ(b.conversion.offset, db.offset) << b.text;
+    EXPECT_EQ(b.conversion.dimension, db.dimension) << b.text;
+    const UnitConversion parsed = ParseUnit(b.text);  // the table's answer
+    EXPECT_EQ(parsed.scale, db.scale) << b.text;
+    EXPECT_EQ(parsed.dimension, db.dimension) << b.text;
+  }
+  // Around the table, ParseUnit trims and falls back to the database as before.
+  EXPECT_EQ(ParseUnit("  N*m/rad ").dimension, Torque());
+  EXPECT_EQ(ParseUnit("mrad").scale, detail::ParseUnitWithDatabase("mrad").scale);
+  EXPECT_EQ(ParseUnit("1").dimension, Dimensionless());
 }
 
 }  // namespace

@@ -15,6 +15,7 @@
 #include <map>
 #include <string>
 #include <string_view>
+#include <unordered_map>
 #include <vector>
 
 #include "highlift/core/catalogue.h"
@@ -65,7 +66,14 @@ class Network {
 
  private:
   PortRef ParsePort(std::string_view text) const;
+  // Find by id in constant time: the simulator's flattening of composites looks up every
+  // connection's two elements in networks of several hundred elements (issue 30).
+  struct IdHash {
+    using is_transparent = void;
+    std::size_t operator()(std::string_view s) const noexcept { return std::hash<std::string_view>{}(s); }
+  };
   std::vector<NetworkElement> elements_;
+  std::unordered_map<std::string, std::size_t, IdHash, std::equal_to<>> index_;  // id -> position in elements_
   std::vector<NetworkConnection> connections_;
 };
 
