@@ -29,8 +29,8 @@ std::string Trim(const std::string& s) {
 
 constexpr const char* kHeader = "designation,outer_diameter [mm],wall_thickness [mm]";
 
-/// "outer_diameter [mm]" -> the scale of mm to m; throws naming the column.
-double ColumnScale(const std::string& field, const std::string& name, const std::string& where) {
+/// "outer_diameter [mm]" -> the scale of mm to m (and `unit_out` = "mm"); throws naming the column.
+double ColumnScale(const std::string& field, const std::string& name, const std::string& where, std::string& unit_out) {
   const std::string f = Trim(field);
   const auto open = f.find('['), close = f.rfind(']');
   if (f.rfind(name, 0) != 0 || open == std::string::npos || close != f.size() - 1 || open < name.size() ||
@@ -47,6 +47,7 @@ double ColumnScale(const std::string& field, const std::string& name, const std:
   if (!(u.dimension == dimensions::Length()) || u.offset != 0.0)
     throw InputError(where + ": column '" + f + "': unit '" + unit + "' is " + DescribeDimension(u.dimension) +
                      ", expected a length (e.g. mm)");
+  unit_out = unit;
   return u.scale;
 }
 
@@ -87,8 +88,9 @@ TubeSizeTable ParseTubeSizes(const std::string& text, const std::string& file_na
   const std::string head_where = file_name + " line " + std::to_string(header.line);
   if (header.fields.size() != 3 || Trim(header.fields[0]) != "designation")
     throw InputError(head_where + ": the header must be " + std::string(kHeader) + " (any length unit)");
-  const double d_scale = ColumnScale(header.fields[1], "outer_diameter", head_where);
-  const double t_scale = ColumnScale(header.fields[2], "wall_thickness", head_where);
+  std::string d_unit, t_unit;
+  const double d_scale = ColumnScale(header.fields[1], "outer_diameter", head_where, d_unit);
+  const double t_scale = ColumnScale(header.fields[2], "wall_thickness", head_where, t_unit);
   std::map<std::string, std::size_t> seen;
   for (; r < rows.size(); ++r) {
     const csv::Row& row = rows[r];
@@ -109,8 +111,8 @@ TubeSizeTable ParseTubeSizes(const std::string& text, const std::string& file_na
     s.outer_diameter = D * d_scale;
     s.wall_thickness = t * t_scale;
     if (s.wall_thickness > 0.5 * s.outer_diameter)
-      throw InputError(where + ": size '" + s.designation + "' has a wall of " + Short(t) + " above half its diameter " +
-                       Short(D) + "; a tube's wall is at most D/2 (D/2: a solid bar)");
+      throw InputError(where + ": size '" + s.designation + "' has a wall of " + Short(t) + " " + t_unit +
+                       " above half its diameter of " + Short(D) + " " + d_unit + "; a tube's wall is at most D/2 (D/2: a solid bar)");
     s.origin = where;
     table.sizes.push_back(std::move(s));
   }

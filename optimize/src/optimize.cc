@@ -1221,12 +1221,38 @@ Candidate Optimizer::Try(const std::vector<double>& x, const std::vector<Interva
 }
 
 /// The report names each restricted shaft's size; the project of the design says it in the notes.
+/// What limits a size: the best design with one shaft at its next lighter size (the heaviest of
+/// the sizes within its domains with a smaller (D - t) t, the tube law's factor) is checked, and
+/// what fails there is listed with the shaft and the size.
 void Optimizer::FinishTubeSizes(Report& r) {
   if (!tubes_) return;
   r.tube_table = tubes_->table_name();
   r.tube_sizes = tubes_->Sizes(best_x_);
   for (std::size_t k = 0; k < r.tube_sizes.size(); ++k) {
     const TubeShaft& s = tubes_->shafts()[k];
+    const double D = s.diameter >= 0 ? best_x_[s.diameter] : 0.0, t = s.wall >= 0 ? best_x_[s.wall] : 0.0;
+    auto factor = [&](std::size_t j) {
+      return ((s.diameter >= 0 ? s.D[j] : D) - (s.wall >= 0 ? s.t[j] : t)) * (s.wall >= 0 ? s.t[j] : t);
+    };
+    const double current = (D - t) * t;
+    int lighter = -1;
+    for (std::size_t j = 0; j < s.D.size(); ++j)
+      if (factor(j) < current && (lighter < 0 || factor(j) > factor(lighter))) lighter = static_cast<int>(j);
+    if (lighter >= 0 && s.diameter >= 0 && s.wall >= 0) {
+      std::vector<double> x = best_x_;
+      x[s.diameter] = s.D[lighter];
+      x[s.wall] = s.t[lighter];
+      const Candidate c = Evaluate(x, true);
+      const std::string at = " (" + s.component + " at its next lighter size " + s.designations[lighter] + ")";
+      for (int f : c.failed) {
+        if (f < 0) continue;
+        const icsp::Constraint& con = net().constraint(icsp::ConstraintId{f});
+        r.active.push_back({con.info.label, con.info.description + at,
+                            con.info.source.empty() ? net().ConstraintText(icsp::ConstraintId{f}) : con.info.source});
+      }
+      if (c.failed.empty() && !c.reduced_failure.empty())
+        r.active.push_back({c.reduced_failure.substr(0, c.reduced_failure.find(':')), c.reduced_failure + at, ""});
+    }
     for (int i : {s.diameter, s.wall}) {
       if (i < 0) continue;
       r.design[i].tube_size = r.tube_sizes[k].second;
@@ -1382,7 +1408,8 @@ std::string Report::FullReport() const {
                   std::isfinite(mt.upper) ? Number(mt.upper) : "-", mt.law});
       o << m.ToString();
     }
-    o << "\nWhat limits the design (breaks one step of 1e-4 of the domains towards a smaller " << objective << "):\n";
+    o << "\nWhat limits the design (breaks one step of 1e-4 of the domains towards a smaller " << objective
+      << (tube_table.empty() ? "" : ", or a shaft's next lighter tube size") << "):\n";
     if (active.empty()) o << "  nothing found at that step\n";
     for (const ActiveConstraint& a : active)
       o << "  - " << a.label << ": " << a.description << (a.text.empty() ? "" : "\n      " + a.text) << "\n";

@@ -72,9 +72,16 @@ TubeConstraint::TubeConstraint(const componentdb::TubeSizeTable& table, const Pr
       for (std::size_t k = 0; k < table.sizes.size(); ++k)
         near.push_back({std::max(Away(table.sizes[k].outer_diameter, Dd), Away(table.sizes[k].wall_thickness, td)), k});
       std::stable_sort(near.begin(), near.end());
+      // One per distinct value of what lies outside the domains (sizes that differ only inside them
+      // are equally near).
       std::string list;
-      for (std::size_t k = 0; k < near.size() && k < 3; ++k) {
+      std::vector<std::pair<double, double>> listed;
+      for (std::size_t k = 0; k < near.size() && listed.size() < 3; ++k) {
         const componentdb::TubeSize& z = table.sizes[near[k].second];
+        const std::pair<double, double> key{Away(z.outer_diameter, Dd) > 0 ? z.outer_diameter : -1.0,
+                                            Away(z.wall_thickness, td) > 0 ? z.wall_thickness : -1.0};
+        if (std::find(listed.begin(), listed.end(), key) != listed.end()) continue;
+        listed.push_back(key);
         list += (list.empty() ? "" : ", ") + z.designation + " (D " + Mm(z.outer_diameter) + " mm, t " +
                 Mm(z.wall_thickness) + " mm)";
       }
