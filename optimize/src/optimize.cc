@@ -1027,7 +1027,8 @@ Report Optimizer::Run() {
         ++counters_.pruned;
         continue;
       }
-      lb = std::max({lb, shaved, box[objective_].lower()});
+      lb = std::max(lb, shaved);
+      if (tubes_) lb = std::max(lb, box[objective_].lower());
       if (counters_.boxes == 1) root_lb_ = lb;
       if (tol.Closed(best_, lb)) {
         closed_lb = std::min(closed_lb, lb);
@@ -1201,23 +1202,24 @@ bool Optimizer::ContractTubes(Box& box) {
 }
 
 /// A candidate design checked and considered as the incumbent; with tube sizes, the designs made
-/// of sizes near it inside the box `d` (TubeConstraint::Snap: nearest, up, down) instead, the
-/// robustly feasible lightest of them returned (else the first).
+/// of sizes near it inside the box `d` instead (TubeConstraint::Snap): every shaft at its nearest
+/// size; when that is robustly feasible, also every shaft at its nearest size at most as large
+/// (lighter, maybe still feasible), else at its nearest size at least as large (stronger). The
+/// robustly feasible lighter of the two is returned, else the nearest's outcome.
 Candidate Optimizer::Try(const std::vector<double>& x, const std::vector<Interval>& d) {
   if (!tubes_) {
     Candidate c = Evaluate(x, true);
     Consider(x, c);
     return c;
   }
-  Candidate out;
-  bool have = false;
-  for (const std::vector<double>& s : tubes_->Snap(x, d)) {
-    Candidate c = Evaluate(s, true);
-    Consider(s, c);
-    if (!have || (c.feasible && (!out.feasible || c.value < out.value))) out = std::move(c);
-    have = true;
-  }
-  return out;
+  const TubeConstraint::Snapped s = tubes_->Snap(x, d);
+  Candidate c = Evaluate(s.nearest, true);
+  Consider(s.nearest, c);
+  const std::vector<double>& next = c.feasible ? s.down : s.up;
+  if (next == s.nearest) return c;
+  Candidate e = Evaluate(next, true);
+  Consider(next, e);
+  return e.feasible && (!c.feasible || e.value < c.value) ? e : c;
 }
 
 /// The report names each restricted shaft's size; the project of the design says it in the notes.

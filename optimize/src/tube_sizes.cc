@@ -127,8 +127,7 @@ bool TubeConstraint::Contract(std::vector<Interval>& d, bool& changed) const {
   return true;
 }
 
-std::vector<std::vector<double>> TubeConstraint::Snap(const std::vector<double>& x,
-                                                      const std::vector<Interval>& d) const {
+TubeConstraint::Snapped TubeConstraint::Snap(const std::vector<double>& x, const std::vector<Interval>& d) const {
   // Per mode (nearest, up, down): x with each shaft at its size.
   std::vector<std::vector<double>> out(3, x);
   for (const TubeShaft& s : shafts_) {
@@ -164,10 +163,7 @@ std::vector<std::vector<double>> TubeConstraint::Snap(const std::vector<double>&
       if (s.wall >= 0) out[m][s.wall] = s.t[chosen[m]];
     }
   }
-  std::vector<std::vector<double>> distinct;
-  for (auto& v : out)
-    if (std::find(distinct.begin(), distinct.end(), v) == distinct.end()) distinct.push_back(std::move(v));
-  return distinct;
+  return {std::move(out[0]), std::move(out[1]), std::move(out[2])};
 }
 
 std::vector<std::pair<std::string, std::string>> TubeConstraint::Sizes(const std::vector<double>& x) const {

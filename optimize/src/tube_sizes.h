@@ -42,9 +42,12 @@ class TubeConstraint {
 
   /// Designs made of the table's sizes near `x` inside the box `d` (each shaft's sizes inside it;
   /// all of its sizes when none is): every shaft at its nearest size (by |log D/D_x| and
-  /// |log t/t_x|), at its nearest size that is at least as large in D and t ("up"), and at its
-  /// nearest that is at most as large ("down"); the distinct ones, in that order.
-  std::vector<std::vector<double>> Snap(const std::vector<double>& x, const std::vector<icsp::Interval>& d) const;
+  /// |log t/t_x|), at its nearest size that is at least as large in D and t ("up"; the nearest when
+  /// there is none), and at its nearest that is at most as large ("down"; likewise).
+  struct Snapped {
+    std::vector<double> nearest, up, down;
+  };
+  Snapped Snap(const std::vector<double>& x, const std::vector<icsp::Interval>& d) const;
 
   /// Each shaft's size at `x` ("" when x is not one of its sizes), by component.
   std::vector<std::pair<std::string, std::string>> Sizes(const std::vector<double>& x) const;

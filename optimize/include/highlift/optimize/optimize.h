@@ -237,7 +237,8 @@ class DesignEvaluator {
   /// The design variables ("component.parameter") and their domains (SI), in the order Check takes.
   const std::vector<std::string>& variables() const;
   std::vector<std::pair<double, double>> domains() const;
-  /// `x` in SI, one value per variable.
+  /// `x` in SI, one value per variable; checked as given (with Options::tube_sizes, not snapped to
+  /// a size).
   PointCheck Check(const std::vector<double>& x);
 
  private:
