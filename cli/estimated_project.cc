@@ -9,8 +9,21 @@
 
 namespace highlift::cli {
 
-EstimatedProject LoadEstimatedProject(const CommonOptions& options, bool estimate) {
+void MarkDesign(Project& project, const std::vector<std::string>& design) {
+  for (const std::string& name : design) {
+    const auto dot = name.find('.');
+    if (dot == std::string::npos) continue;
+    Component* c = project.FindComponent(name.substr(0, dot));
+    if (!c) continue;
+    const auto it = c->parameters.find(name.substr(dot + 1));
+    if (it != c->parameters.end()) it->second.design = true;
+  }
+}
+
+EstimatedProject LoadEstimatedProject(const CommonOptions& options, bool estimate,
+                                      const std::vector<std::string>& design) {
   EstimatedProject out{LoadValidProject(options.project), "", 0};
+  MarkDesign(out.project, design);
   if (!estimate) return out;
   componentdb::ComponentDatabase database = OpenEstimationDatabase(options.db);
   const estimation::EstimationReport report = estimation::EstimateProject(out.project, &database, {});

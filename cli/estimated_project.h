@@ -4,6 +4,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "command.h"
 #include "highlift/componentdb/database.h"
@@ -18,8 +19,15 @@ struct EstimatedProject {
 };
 
 /// Loads `options.project`; unless `estimate` is false, runs the estimator with the database
-/// `options.db` (the shipped default when empty).
-EstimatedProject LoadEstimatedProject(const CommonOptions& options, bool estimate);
+/// `options.db` (the shipped default when empty). The parameters named in `design`
+/// ("component.parameter", e.g. optimize's --design) are marked as design variables first, so
+/// that the estimator leaves what follows from them to the constraint network; names the
+/// project does not give are left for the caller to report.
+EstimatedProject LoadEstimatedProject(const CommonOptions& options, bool estimate,
+                                      const std::vector<std::string>& design = {});
+
+/// Marks the parameters named "component.parameter" as design variables (those the project gives).
+void MarkDesign(Project& project, const std::vector<std::string>& design);
 
 /// The database for the estimator: `db_option`, or the shipped default when empty. When it is
 /// the default and its shipped parts differ from this version's seed (it was created by an

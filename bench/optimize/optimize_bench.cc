@@ -32,14 +32,11 @@ namespace {
 
 Project DesignProblem(const std::string& name) {
   Project project = LoadProject(std::string(HIGHLIFT_SOURCE_DIR) + "/examples/" + name);
-  componentdb::ComponentDatabase database =
-      componentdb::OpenDatabase("", componentdb::ComponentDatabase::Mode::kReadOnly);
-  estimation::EstimateProject(project, &database, {});
+  // The tube geometry is marked before estimating, so that the estimator leaves each tube's
+  // stiffness and inertia to the network's tube law over the design (as `highlift optimize`
+  // does); estimated afterwards, they were intervals at the example's geometry, and the jam loads
+  // did not follow the walls.
   for (Component& c : project.components) {
-    auto mark = [&](const std::string& p) {
-      auto it = c.parameters.find(p);
-      if (it != c.parameters.end() && it->second.domain.width() > 0) it->second.design = true;
-    };
     if (c.type == "torque_shaft") {
       auto it = c.parameters.find("outer_diameter");
       if (it != c.parameters.end() && it->second.nominal) {
@@ -52,6 +49,15 @@ Project DesignProblem(const std::string& name) {
         t->second.design = true;
       }
     }
+  }
+  componentdb::ComponentDatabase database =
+      componentdb::OpenDatabase("", componentdb::ComponentDatabase::Mode::kReadOnly);
+  estimation::EstimateProject(project, &database, {});
+  for (Component& c : project.components) {
+    auto mark = [&](const std::string& p) {
+      auto it = c.parameters.find(p);
+      if (it != c.parameters.end() && it->second.domain.width() > 0) it->second.design = true;
+    };
     if (c.type == "station_torque_limiter" || c.type == "system_torque_limiter") mark("lockout_torque_extend");
     if (c.type == "station_torque_limiter") {  // the examples' brakes are below size's rule: a domain
       auto it = c.parameters.find("max_brake_torque");

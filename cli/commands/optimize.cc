@@ -94,7 +94,7 @@ class OptimizeCommand : public Command {
     std::optional<componentdb::ComponentDatabase> database;
     EstimatedProject loaded;
     if (choose_part_.empty()) {
-      loaded = LoadEstimatedProject(common_, !no_estimate_);
+      loaded = LoadEstimatedProject(common_, !no_estimate_, options_.design);
     } else {
       // Each part combination is estimated after its parts are applied (what a part implies
       // follows it), so the project is loaded as given.
@@ -102,7 +102,10 @@ class OptimizeCommand : public Command {
       database.emplace(OpenEstimationDatabase(common_.db));
       options_.choose_part = PartChoices(loaded.project, *database);
       if (!no_estimate_)
-        options_.prepare = [&database](Project& p) { estimation::EstimateProject(p, &*database, {}); };
+        options_.prepare = [&database, this](Project& p) {
+          MarkDesign(p, options_.design);
+          estimation::EstimateProject(p, &*database, {});
+        };
     }
     const optimize::Report report = optimize::Optimize(loaded.project, options_);
     // The project as given (not the estimated one) with the chosen parts and the design fixed, so

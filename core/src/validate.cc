@@ -301,7 +301,7 @@ class Validator {
             !bound->second.nominal)
           continue;
         const double v = *value->second.nominal, b = *bound->second.nominal;
-        if (!(v * r.divisor > b)) continue;
+        if (r.strict ? v * r.divisor < b : !(v * r.divisor > b)) continue;
         const ParameterSpec* vs = type->FindParameter(r.parameter);
         const ParameterSpec* bs = type->FindParameter(r.bound);
         auto shown = [](double si, const ParameterSpec* spec) {
@@ -309,8 +309,9 @@ class Validator {
         };
         const std::string divisor = r.divisor == 1.0 ? "" : " / " + FormatNumber(r.divisor, 6);
         Add(Severity::kError, c.id, "",
-            Describe(c) + ": " + r.parameter + " " + shown(v, vs) + " is more than " + r.meaning + " (" + r.bound + " " +
-                shown(b, bs) + divisor + "); give " + r.parameter + " <= " + r.bound + divisor +
+            Describe(c) + ": " + r.parameter + " " + shown(v, vs) + (r.strict ? " is not below " : " is more than ") +
+                r.meaning + " (" + r.bound + " " + shown(b, bs) + divisor + "); give " + r.parameter +
+                (r.strict ? " < " : " <= ") + r.bound + divisor +
                 (r.note.empty() ? "" : " (" + r.note + ")"),
             value->second.where.empty() ? c.where : value->second.where);
       }

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <map>
+#include <optional>
 #include <set>
 
 #include "highlift/core/catalogue.h"
@@ -107,6 +108,7 @@ class Estimator {
       if (!type) continue;  // validation reports unknown types
       for (const auto& spec : type->parameters) {
         if (!IsValue(spec)) continue;
+        if (!c.parameters.count(spec.name)) absent_.insert(Key(c, spec));
         Parameter& p = Get(c, spec);
         initial_[Key(c, spec)] = p;
         // A reference to a database part is unresolved until the database pass.
@@ -126,6 +128,11 @@ class Estimator {
                            "' but no component database is open; pass --db PATH or leave out the part reference",
                            Get(c, spec).where);
         Record(c, spec);
+        // Left to the design: an optional parameter the project did not give stays absent, so that
+        // the network takes its law (a given stiffness would override the tube's).
+        if (design_outputs_.count(key) && absent_.count(key) && Get(c, spec).provenance == Provenance::kDefault &&
+            spec.optional && !spec.nominal)
+          c.parameters.erase(spec.name);
       }
     }
     for (const auto& [key, ids] : extrapolated_) {
@@ -400,6 +407,15 @@ class Estimator {
       }
       const ParameterSpec* spec = type->FindParameter(law.output);
       if (!spec) continue;
+      // A design variable's domain is a choice, not an uncertainty: a law over it would pin the
+      // output to an interval over every choice and cut its tie to the design (`check` and
+      // `optimize` derive it by the same law in their constraint network).
+      if (const auto design = DesignInput(c, law)) {
+        report_.messages.push_back(c.id + "." + law.output + " is not estimated: it follows the design variable " +
+                                   c.id + "." + *design + " through its law in the constraint network");
+        design_outputs_.insert(Key(c, *spec));
+        continue;
+      }
       const bool any_given = std::any_of(inputs.begin(), inputs.end(), [](const Input& in) { return in.given; });
       if (!any_given) continue;  // only catalogue defaults: nothing new to say
       Candidate cand;
@@ -409,6 +425,16 @@ class Estimator {
       cand.note = law.note;
       Apply(c, *spec, cand);
     }
+  }
+
+  /// The first input of `law` that is a parameter of `c` marked as a design variable.
+  static std::optional<std::string> DesignInput(const Component& c, const model::EstimationLaw& law) {
+    for (const model::LawInput& in : law.inputs) {
+      if (in.kind != model::LawInput::Kind::kParameter) continue;
+      const auto it = c.parameters.find(in.name);
+      if (it != c.parameters.end() && it->second.design) return in.name;
+    }
+    return std::nullopt;
   }
 
   void Record(Component& c, const ParameterSpec& spec) {
@@ -438,6 +464,8 @@ class Estimator {
   EstimationReport& report_;
   std::map<std::string, Parameter> initial_;
   std::set<std::string> pending_;
+  std::set<std::string> absent_;          ///< parameters the project did not give (keys)
+  std::set<std::string> design_outputs_;  ///< parameters whose law reads a design variable (keys)
   std::map<std::string, componentdb::Part> parts_;
   std::map<std::string, EmpiricalFit> fits_;
   std::map<std::string, std::vector<std::string>> extrapolated_;  ///< by FitKey: messages in a stable order

@@ -165,6 +165,7 @@ class Optimizer {
   icsp::Network& net() { return dsn_.network; }
   void ChooseDesignVariables();
   void AddMargins();
+  void AddRelations();
   void AddObjective();
   void ClassifyConstraints();
   void ProbeReducedModels();
@@ -281,6 +282,45 @@ void Optimizer::AddMargins() {
                             {"margin:" + id + ".torque_capacity",
                              "shaft '" + id + "' carries its drive torque within its torque capacity (`highlift size`)",
                              icsp::ConstraintRole::kRequirement, name + " >= " + id + ".drive_torque"});
+    }
+  }
+}
+
+/// Every parameter relation of the catalogue (a wall within the radius, a lock-out below the end
+/// stop, a brake's dynamic torque within its static capacity) that involves a design variable, in
+/// validate's semantics: the design value against the other side's nominal value (or against the
+/// other design value), so that a design `optimize` returns passes `highlift validate`. A relation
+/// whose other side has no nominal holds over that side's whole domain (robustly). A strict
+/// relation (a limiter's end stop above its lock-out torques, which the simulation requires) keeps
+/// a relative clearance of 1e-9.
+void Optimizer::AddRelations() {
+  auto is_design = [&](icsp::VariableId v) {
+    return v.value >= 0 && std::find(design_.begin(), design_.end(), v.value) != design_.end();
+  };
+  for (const Component& c : project_.components) {
+    const ComponentTypeSpec* type = FindComponentType(c.type);
+    if (!type) continue;
+    for (const ParameterRelation& r : type->relations) {
+      const icsp::VariableId pv = net().FindVariable(c.id + "." + r.parameter);
+      const icsp::VariableId bv = net().FindVariable(c.id + "." + r.bound);
+      if (!is_design(pv) && !is_design(bv)) continue;  // validate checks the project as given
+      auto side = [&](icsp::VariableId v, const std::string& name) -> icsp::ExprId {
+        if (is_design(v)) return net().Var(v);
+        const auto it = c.parameters.find(name);
+        if (it != c.parameters.end() && it->second.nominal) return net().Const(*it->second.nominal);
+        return v.value >= 0 ? net().Var(v) : icsp::ExprId{-1};
+      };
+      const icsp::ExprId lhs = side(pv, r.parameter), rhs = side(bv, r.bound);
+      if (lhs.value < 0 || rhs.value < 0) continue;  // no value to relate: validate skips it too
+      const double clearance = r.strict ? 1.0 - 1e-9 : 1.0;
+      const std::string divisor = r.divisor == 1.0 ? "" : " / " + FormatNumber(r.divisor, 6);
+      const std::string text = c.id + "." + r.parameter + (r.strict ? " < " : " <= ") + c.id + "." + r.bound + divisor;
+      net().AddConstraint(net().Mul(net().Const(r.divisor), lhs), icsp::Relation::kLessEqual,
+                          net().Mul(net().Const(clearance), rhs),
+                          {"relation:" + c.id + "." + r.parameter,
+                           std::string(type->display_name) + " '" + c.id + "': " + r.parameter + " within " + r.meaning +
+                               " (`highlift validate`)",
+                           icsp::ConstraintRole::kRequirement, text});
     }
   }
 }
@@ -797,6 +837,7 @@ void Optimizer::Setup() {
   options_.Validate();
   ChooseDesignVariables();
   AddMargins();
+  AddRelations();
   AddObjective();
   ClassifyConstraints();
   ProbeReducedModels();

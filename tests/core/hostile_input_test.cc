@@ -207,6 +207,28 @@ TEST(HostileGraph, ShaftWallThickerThanTheRadiusIsAnError) {
   EXPECT_TRUE(ValidateProject(ParseProject(Rig("25 mm"), "p.json")).ok());  // solid: allowed
 }
 
+// The simulation needs the balls' end stop above both lock-out torques (paper fig. 4); validate
+// says so for equal values too, as it does for a lock-out above the end stop.
+TEST(HostileGraph, LimiterLockoutAtOrAboveItsEndStopIsAnError) {
+  auto with_limiter = [](double lockout, double end_stop) {
+    Project project = ParseProject(Rig(), "p.json");
+    Component limiter;
+    limiter.id = "stl_1";
+    limiter.type = "station_torque_limiter";
+    for (const auto& [name, value] : {std::pair<std::string, double>{"lockout_torque_extend", lockout},
+                                      {"lockout_torque_retract", 0.5 * end_stop},
+                                      {"end_stop_torque", end_stop}})
+      limiter.parameters[name].nominal = value;
+    project.components.push_back(limiter);
+    return ValidateProject(project).FullReport();
+  };
+  const std::string message = "lockout_torque_extend 400 N*m is not below the end-stop torque (end_stop_torque 400 N*m)";
+  EXPECT_NE(with_limiter(400, 400).find(message), std::string::npos) << with_limiter(400, 400);
+  EXPECT_NE(with_limiter(400, 400).find("give lockout_torque_extend < end_stop_torque"), std::string::npos);
+  EXPECT_EQ(with_limiter(399.9, 400).find("is not below the end-stop torque"), std::string::npos)
+      << with_limiter(399.9, 400);
+}
+
 // --- output files ---------------------------------------------------------------------------
 
 TEST(OutputFile, RefusesToOverwriteAnInputByIdentity) {

@@ -112,6 +112,35 @@ TEST_F(EstimateProjectTest, IntervalInputsGiveAnEnclosingInterval) {
   EXPECT_FALSE(c.nominal.has_value());  // the user gave no nominal shear modulus
 }
 
+// A design variable's domain is a choice, not an uncertainty: what follows from it by a law is left
+// to the constraint network (absent, as the project gave it), with a note; the other laws still apply.
+TEST_F(EstimateProjectTest, LawsOverADesignVariableAreLeftToTheNetwork) {
+  Project project;
+  Parameter diameter = UserInterval(0.02, 0.06);
+  diameter.design = true;
+  project.components.push_back(Make("shaft_1", "torque_shaft",
+                                    {{"length", UserPoint(4.0)},
+                                     {"outer_diameter", diameter},
+                                     {"wall_thickness", UserPoint(0.002)},
+                                     {"shear_modulus", UserPoint(44e9)},
+                                     {"density", UserPoint(4420)}}));
+  const auto report = EstimateProject(project, db_);
+  const auto& params = project.FindComponent("shaft_1")->parameters;
+  EXPECT_EQ(params.count("stiffness"), 0u);
+  EXPECT_EQ(params.count("inertia"), 0u);
+  bool note = false;
+  for (const std::string& m : report.messages)
+    note = note || m == "shaft_1.stiffness is not estimated: it follows the design variable shaft_1.outer_diameter "
+                        "through its law in the constraint network";
+  EXPECT_TRUE(note);
+  EXPECT_EQ(report.from_physics, 0u);
+  // The same tube with the diameter not a design variable: estimated as before.
+  project.components[0].parameters["outer_diameter"].design = false;
+  project.components[0].parameters.erase("stiffness");
+  EstimateProject(project, db_);
+  EXPECT_EQ(P(project, "shaft_1", "stiffness").provenance, Provenance::kEstimated);
+}
+
 TEST_F(EstimateProjectTest, UserValueWinsAndADisagreeingEstimateIsAConflictNamingBoth) {
   Project project;
   project.components.push_back(Make("shaft_1", "torque_shaft",

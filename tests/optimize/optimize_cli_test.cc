@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -87,6 +88,8 @@ TEST(OptimizeCli, WrittenDesignPassesCheckAndSize) {
   EXPECT_LE(doc["lower_bound"].get<double>(), doc["best"].get<double>());
   EXPECT_EQ(doc["design"].size(), 36u);
   EXPECT_EQ(doc["written"], best.string());
+  const CliResult validate = RunCli({"validate", best.string()});
+  EXPECT_EQ(validate.exit_code, 0) << validate.out << validate.err;
   const CliResult check = RunCli({"check", best.string()});
   EXPECT_EQ(check.exit_code, 0) << check.out << check.err;
   const CliResult size = RunCli({"size", best.string()});
@@ -175,7 +178,8 @@ TEST_P(OptimizeEveryExample, AsGivenIsProvedInfeasibleAndPeakAgrees) {
 }
 
 // With actuators that do not back-drive and are rated for the loads, a design exists: the one
-// optimize returns (size and peak verified) is written, and `check`, `size` and `peak` pass it.
+// optimize returns (size and peak verified) is written, and `validate` (the catalogue's relations,
+// e.g. a lock-out below its end stop), `check`, `size` and `peak` pass it.
 TEST_P(OptimizeEveryExample, WithNoBackActuatorsTheDesignPassesCheckSizeAndPeak) {
   const std::filesystem::path dir = std::filesystem::path(HIGHLIFT_BINARY_DIR) / "optimize-every-example";
   const std::filesystem::path problem = DesignProblem(GetParam(), dir, true);
@@ -187,7 +191,7 @@ TEST_P(OptimizeEveryExample, WithNoBackActuatorsTheDesignPassesCheckSizeAndPeak)
   const nlohmann::json doc = nlohmann::json::parse(r.out);
   EXPECT_EQ(doc["status"], "optimal");
   EXPECT_GT(doc["counters"]["reduced_model_checks"].get<int>(), 0);
-  for (const char* analysis : {"check", "size", "peak"}) {
+  for (const char* analysis : {"validate", "check", "size", "peak"}) {
     const CliResult a = RunCli({analysis, best.string()});
     EXPECT_EQ(a.exit_code, 0) << analysis << "\n" << a.out << a.err;
   }
@@ -356,6 +360,55 @@ TEST(OptimizeCli, TubeSizesBadInputExits2) {
   EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
   EXPECT_NE(r.err.find("no torque shaft has its outer_diameter or wall_thickness as a design variable"),
             std::string::npos) << r.err;
+}
+
+// With the estimator on (the default), a tube whose diameter and wall are design variables keeps
+// its stiffness and inertia tied to them: the estimator leaves them to the network's tube law
+// instead of pinning them to an interval over every choice. The answer is the one without
+// estimates, with the design marked in the file or named by --design.
+TEST(OptimizeCli, EstimatorLeavesWhatFollowsFromTheDesignToTheNetwork) {
+  const std::filesystem::path dir = std::filesystem::path(HIGHLIFT_BINARY_DIR) / "optimize-cli-estimator";
+  std::filesystem::create_directories(dir);
+  nlohmann::json j = nlohmann::json::parse(R"json({
+  "format": "highlift-project/1",
+  "name": "one tube",
+  "components": [
+    {"id": "pdu", "type": "pdu", "parameters": {"motor_count": 2, "motor_inertia": "3e-4 kg*m^2",
+      "ratio": 20, "gear_inertia": "0.02 kg*m^2"}},
+    {"id": "shaft_1", "type": "torque_shaft",
+     "parameters": {"length": "2 m",
+                    "outer_diameter": {"value": 40, "min": 20, "max": 60, "unit": "mm", "design": true},
+                    "wall_thickness": {"value": 2, "min": 0.5, "max": 4, "unit": "mm", "design": true},
+                    "density": "4420 kg/m^3", "shear_modulus": "44 GPa", "allowable_shear_stress": "500 MPa"}},
+    {"id": "wtb", "type": "wing_tip_brake", "parameters": {"inertia": "5e-4 kg*m^2"}}
+  ],
+  "connections": [["pdu.left", "shaft_1.a"], ["shaft_1.b", "wtb.a"]],
+  "requirements": [
+    {"id": "capacity", "expression": "shaft_1.torque_capacity >= 2000 N*m"},
+    {"id": "stiffness", "expression": "shaft_1.c >= 5000 N*m/rad"}
+  ]
+})json");
+  const std::filesystem::path marked = dir / "marked.json", unmarked = dir / "unmarked.json";
+  std::ofstream(marked) << j.dump(1);
+  for (const char* p : {"outer_diameter", "wall_thickness"}) j["components"][1]["parameters"][p].erase("design");
+  std::ofstream(unmarked) << j.dump(1);
+  auto best = [](const std::vector<std::string>& args) {
+    const CliResult r = RunCli(args);
+    EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+    const nlohmann::json doc = nlohmann::json::parse(r.out);
+    EXPECT_EQ(doc["status"], "optimal") << r.out;
+    return doc["best"].get<double>();
+  };
+  const double plain = best({"optimize", marked.string(), "--json", "--no-estimate"});
+  EXPECT_NEAR(best({"optimize", marked.string(), "--json"}), plain, 1e-9 * plain);
+  EXPECT_NEAR(best({"optimize", unmarked.string(), "--json", "--design", "shaft_1.outer_diameter", "--design",
+                    "shaft_1.wall_thickness"}),
+              plain, 1e-9 * plain);
+  // The estimator says why it left them.
+  const CliResult e = RunCli({"estimate", marked.string()});
+  EXPECT_NE(e.out.find("shaft_1.stiffness is not estimated: it follows the design variable shaft_1.outer_diameter"),
+            std::string::npos)
+      << e.out << e.err;
 }
 
 TEST(OptimizeCli, BadOptionValueExits2) {

@@ -13,6 +13,7 @@
 
 #include "highlift/core/error.h"
 #include "highlift/core/project_io.h"
+#include "highlift/core/validate.h"
 
 namespace highlift::optimize {
 namespace {
@@ -109,6 +110,30 @@ TEST(Optimize, ExpressionObjective) {
   const double D = 0.060, d = std::pow(std::pow(D, 4) - 32 * (5000.0 * 2 / 44e9) / std::numbers::pi, 0.25);
   EXPECT_EQ(r.objective_unit, "mm");
   EXPECT_NEAR(r.best, 1e3 * (D - d) / 2, 1e-6 * 2);
+}
+
+// The catalogue's relations are constraints: the thickest wall the objective asks for is the
+// radius of the (fixed) diameter, a solid shaft, not the top of the wall's domain; the design passes
+// validate, and the relation is named as what limits it.
+TEST(Optimize, ParameterRelationsLimitTheDesignAsValidateDoes) {
+  nlohmann::json j = Chain();
+  j["components"][1]["parameters"]["outer_diameter"] = "30 mm";
+  j["components"][1]["parameters"]["wall_thickness"] = {{"value", 2}, {"min", 0.5}, {"max", 20}, {"unit", "mm"},
+                                                       {"design", true}};
+  j["requirements"] = nlohmann::json::array();
+  Options o;
+  o.objective = "1 / shaft_1.wall_thickness";  // the thickest wall
+  o.verify_size = o.verify_peak = false;
+  const Report r = Optimize(Load(j), o);
+  ASSERT_TRUE(r.found) << r.FullReport();
+  ASSERT_EQ(r.design.size(), 1u);
+  EXPECT_LE(r.design[0].value, 15.0 * (1 + 1e-12)) << r.FullReport();  // mm: within the radius
+  EXPECT_GT(r.design[0].value, 15.0 * (1 - 1e-6)) << r.FullReport();
+  bool relation = false;
+  for (const ActiveConstraint& a : r.active) relation = relation || a.label == "relation:shaft_1.wall_thickness";
+  EXPECT_TRUE(relation) << r.FullReport();
+  ASSERT_TRUE(r.design_project);
+  EXPECT_TRUE(ValidateProject(*r.design_project).ok()) << ValidateProject(*r.design_project).FullReport();
 }
 
 TEST(Optimize, ProvedInfeasibleWithTheConflictExplained) {

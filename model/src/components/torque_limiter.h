@@ -68,8 +68,8 @@ inline void AddTorqueLimiter(std::vector<ParameterSpec>& ps, double tau1, double
 /// reach the end stop at tau_2).
 inline std::vector<ParameterRelation> TorqueLimiterRelations() {
   const std::string note = "the balls reach their end stop above the lock-out torque, paper fig. 4";
-  return {{"lockout_torque_extend", "end_stop_torque", 1.0, "the end-stop torque", note},
-          {"lockout_torque_retract", "end_stop_torque", 1.0, "the end-stop torque", note}};
+  return {{"lockout_torque_extend", "end_stop_torque", 1.0, "the end-stop torque", note, /*strict=*/true},
+          {"lockout_torque_retract", "end_stop_torque", 1.0, "the end-stop torque", note, /*strict=*/true}};
 }
 
 /// The element parameters of a HighLift.Mechanical.TorqueLimiter from a component's limiter

@@ -112,7 +112,8 @@ struct ParameterSpec {
 };
 
 /// A bound of one parameter by another that their own valid ranges cannot express:
-/// parameter <= bound / divisor (a tube's wall_thickness <= outer_diameter / 2). Validation
+/// parameter <= bound / divisor (a tube's wall_thickness <= outer_diameter / 2), or with `strict`
+/// parameter < bound / divisor (a limiter's lock-out torque below its end stop). Validation
 /// reports a violation at `parameter`, naming `meaning` and `note`.
 struct ParameterRelation {
   std::string parameter;  ///< e.g. "wall_thickness"
@@ -120,6 +121,7 @@ struct ParameterRelation {
   double divisor = 1.0;   ///< e.g. 2
   std::string meaning;    ///< what bound / divisor is, e.g. "the radius"
   std::string note;       ///< said after the fix, e.g. "equal: a solid shaft"
+  bool strict = false;    ///< equality violates the relation too
 };
 
 /// Declaration of a component type.
