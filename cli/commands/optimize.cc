@@ -1,4 +1,5 @@
-// `highlift optimize PROJECT.json --minimize mass|inertia|EXPR [--design NAME ...] [--write OUT.json]`:
+// `highlift optimize PROJECT.json --minimize mass|inertia|EXPR [--design NAME ...] [--tube-sizes FILE|standard]
+// [--write OUT.json]`:
 // synthesis by interval branch and bound (optimize::Optimize, docs/optimize.md). The answer first:
 // status, best objective, certified lower bound and gap; then the design, the mass by component,
 // what limits the design, and the counters. Exit 0 with a design (optimal or gap still open),
@@ -12,6 +13,7 @@
 #include "command.h"
 #include "estimated_project.h"
 #include "highlift/campaign/campaign.h"
+#include "highlift/componentdb/tube_sizes.h"
 #include "highlift/core/catalogue.h"
 #include "highlift/core/error.h"
 #include "highlift/core/project_io.h"
@@ -42,6 +44,10 @@ class OptimizeCommand : public Command {
                    "a discrete choice COMPONENT (repeatable): the component is one of the database's parts of its "
                    "type, each part's values fixed from its row (provenance database); the search branches over them")
         ->delimiter(',');
+    app.add_option("--tube-sizes", tube_sizes_,
+                   "FILE or standard: every torque shaft whose outer_diameter and/or wall_thickness are design "
+                   "variables is one of these tube sizes (CSV: designation,outer_diameter [mm],wall_thickness [mm]; "
+                   "standard: the shipped ISO 3 R20 table, docs/optimize.md)");
     app.add_option("--write", write_, "write the project with the best design fixed (provenance \"optimized\") to this file");
     app.add_flag("--verify-transient", verify_transient_,
                  "run the best design's campaign (every jam and rupture, full transient simulations) at its nominal "
@@ -79,6 +85,10 @@ class OptimizeCommand : public Command {
       options_.pareto = pareto_.substr(comma + 1);
       options_.Validate();
     }
+    if (!tube_sizes_.empty()) {
+      options_.tube_sizes = componentdb::LoadTubeSizes(tube_sizes_);
+      options_.Validate();
+    }
     if (transient_samples_ != 4 && !verify_transient_)
       throw InputError("--transient-samples needs --verify-transient");
     std::optional<componentdb::ComponentDatabase> database;
@@ -113,6 +123,13 @@ class OptimizeCommand : public Command {
       std::vector<std::pair<std::string, double>> values;
       for (const auto& d : report.design) values.push_back({d.name, d.value_si});
       design = optimize::FixDesign(out, values);
+      for (const auto& [component, size] : report.tube_sizes)
+        for (const char* p : {"outer_diameter", "wall_thickness"}) {
+          auto& ps = design->FindComponent(component)->parameters;
+          const auto it = ps.find(p);
+          if (it != ps.end() && it->second.provenance == Provenance::kOptimized)
+            it->second.note = "highlift optimize: tube size " + size + " of --tube-sizes " + report.tube_table;
+        }
       if (!write_.empty()) SaveProject(*design, write_);
     }
     std::optional<campaign::CampaignSummary> transient;
@@ -200,6 +217,7 @@ class OptimizeCommand : public Command {
   optimize::Options options_;
   std::string write_;
   std::vector<std::string> choose_part_;
+  std::string tube_sizes_;
   std::string pareto_;
   bool verify_transient_ = false;
   int transient_samples_ = 4;

@@ -11,6 +11,8 @@ std::vector<Row> Parse(const std::string& text, const std::string& file_name) {
   std::vector<Row> rows;
   Row row;
   row.row = 1;
+  row.line = 1;
+  std::size_t line = 1;  // of the character at i
   std::string field;
   bool quoted = false;        // inside a quoted field
   bool was_quoted = false;    // the current field was quoted (closing quote seen)
@@ -38,11 +40,13 @@ std::vector<Row> Parse(const std::string& text, const std::string& file_name) {
     rows.push_back(std::move(row));
     row = Row{};
     row.row = rows.size() + 1;
+    row.line = line + 1;  // the next record starts after this '\n'
     any = false;
   };
   for (; i < n; ++i) {
     const char c = text[i];
     if (quoted) {
+      if (c == '\n') ++line;
       if (c == '"') {
         if (i + 1 < n && text[i + 1] == '"') {
           field += '"';
@@ -69,6 +73,7 @@ std::vector<Row> Parse(const std::string& text, const std::string& file_name) {
       // handled at '\n'
     } else if (c == '\n') {
       end_row();
+      ++line;
     } else {
       if (was_quoted && c != ' ' && c != '\t')
         throw InputError(file_name + " row " + std::to_string(row.row) +

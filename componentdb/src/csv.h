@@ -9,6 +9,7 @@ namespace highlift::componentdb::csv {
 
 struct Row {
   std::size_t row = 0;  ///< 1-based record number (the header is row 1)
+  std::size_t line = 0; ///< 1-based line of the file the record starts on
   std::vector<std::string> fields;
 };
 

@@ -19,6 +19,7 @@
 #include "highlift/model/estimation_laws.h"
 #include "highlift/reduced_models/analyses.h"
 #include "highlift/reduced_models/sizing.h"
+#include "tube_sizes.h"
 
 namespace highlift::optimize {
 
@@ -178,6 +179,10 @@ class Optimizer {
   void Sensitivities();
   void ChooseScenario();
   std::vector<double> StepTowardsSmaller(const std::vector<double>& x) const;
+  void SetupTubeSizes();
+  bool ContractTubes(Box& box);
+  Candidate Try(const std::vector<double>& x, const std::vector<Interval>& d);
+  void FinishTubeSizes(Report& r);
   int ChooseSplit(const std::vector<Interval>& d) const;
   void Finish(Report& r);
   double Seconds() const {
@@ -211,6 +216,7 @@ class Optimizer {
   std::unique_ptr<icsp::Propagator> propagator_;
   std::unique_ptr<icsp::Propagator> shaving_propagator_;  ///< the trials' (Options::shaving_ratio)
   std::unique_ptr<Evaluator> evaluator_;
+  std::unique_ptr<TubeConstraint> tubes_;   ///< Options::tube_sizes (null: D and t continuous)
   // Incumbent.
   bool found_ = false;
   double best_ = kInf;
@@ -668,6 +674,8 @@ void Optimizer::CoordinateSearch() {
   std::vector<std::size_t> order(design_.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return sensitivity_[a] > sensitivity_[b]; });
+  std::vector<Interval> whole;
+  for (int v : design_) whole.push_back(initial_[v]);
   for (std::size_t i : order) {
     if (sign_[i] == 0.0 || Seconds() > options_.max_seconds) continue;
     const Interval dom = initial_[design_[i]];
@@ -679,8 +687,7 @@ void Optimizer::CoordinateSearch() {
       std::vector<double> x = best_x_;
       const double base = from;  // best_x_[i] may have moved: keep the segment of this variable
       x[i] = base + t * (to - base);
-      const Candidate c = Evaluate(x, true);
-      Consider(x, c);
+      const Candidate c = Try(x, whole);
       if (c.feasible) {
         if (s == 0) break;  // the end itself is feasible
         lo = t;
@@ -703,18 +710,13 @@ void Optimizer::LocalSearch(const std::vector<Interval>& d) {
     safe[i] = sign_[i] > 0 ? d[i].upper() : sign_[i] < 0 ? d[i].lower() : mid[i];
   }
   std::vector<double> anchor = mid;
-  Candidate c = Evaluate(mid, true);
+  Candidate c = Try(mid, d);
   if (!c.feasible) {
-    Consider(mid, c);
     if (safe == mid) return;
-    c = Evaluate(safe, true);
-    if (!c.feasible) {
-      Consider(safe, c);
-      return;
-    }
+    c = Try(safe, d);
+    if (!c.feasible) return;
     anchor = safe;
   }
-  Consider(anchor, c);
   if (light == anchor) return;
   auto at = [&](double t) {
     std::vector<double> x(n);
@@ -722,17 +724,13 @@ void Optimizer::LocalSearch(const std::vector<Interval>& d) {
     return x;
   };
   {
-    const std::vector<double> x = at(1.0);
-    const Candidate e = Evaluate(x, true);
-    Consider(x, e);
+    const Candidate e = Try(at(1.0), d);
     if (e.feasible) return;
   }
   double lo = 0.0, hi = 1.0;
   for (int s = 0; s < options_.line_search_steps; ++s) {
     const double t = 0.5 * (lo + hi);
-    const std::vector<double> x = at(t);
-    const Candidate e = Evaluate(x, true);
-    Consider(x, e);
+    const Candidate e = Try(at(t), d);
     if (e.feasible) lo = t;
     else hi = t;
   }
@@ -862,6 +860,7 @@ void Optimizer::Setup() {
   shaving_propagator_ = std::make_unique<icsp::Propagator>(net(), so);
   ShavingNeighbourhoods();
   evaluator_ = std::make_unique<Evaluator>(net());
+  SetupTubeSizes();
 }
 
 std::string Optimizer::FailureText(const Candidate& c) const {
@@ -892,6 +891,15 @@ Report Optimizer::Run() {
     r.infeasibility = ex.infeasible ? ex.text : rep.message;
     r.message = "no design within the domains of " + std::to_string(design_.size()) +
                 " design variable(s) meets every requirement and margin (proved by propagation)";
+    r.seconds = Seconds();
+    return r;
+  }
+  if (tubes_ && !ContractTubes(root)) {
+    r.status = Status::kInfeasible;
+    r.message = "no design made of the sizes of --tube-sizes " + tubes_->table_name() +
+                " meets every requirement and margin (proved by propagation with the table constraint)";
+    r.infeasibility = "the sizes of the table within each shaft's domains are all outside what the constraint "
+                      "network allows at the root; widen the shafts' domains or give a table with other sizes";
     r.seconds = Seconds();
     return r;
   }
@@ -1018,7 +1026,7 @@ Report Optimizer::Run() {
       for (std::size_t t = 0; t < terms_.size(); ++t)
         box[terms_[t]] = icsp::Meet(box[terms_[t]], Interval(node.term_lo[t], kInf));
     const icsp::PropagationReport pr = propagator_->Propagate(box);
-    if (pr.status == icsp::Status::kInfeasible) {
+    if (pr.status == icsp::Status::kInfeasible || (tubes_ && !ContractTubes(box))) {
       if (std::isfinite(best_)) ++counters_.pruned;
       else ++counters_.infeasible_boxes;
       continue;
@@ -1056,7 +1064,12 @@ Report Optimizer::Run() {
         ++counters_.pruned;
         continue;
       }
+      if (tubes_ && !ContractTubes(box)) {  // the shaved box holds no size
+        ++counters_.pruned;
+        continue;
+      }
       lb = std::max(lb, shaved);
+      if (tubes_) lb = std::max(lb, box[objective_].lower());
       if (counters_.boxes == 1) root_lb_ = lb;
       if (tol.Closed(best_, lb)) {
         closed_lb = std::min(closed_lb, lb);
@@ -1110,6 +1123,7 @@ Report Optimizer::Run() {
     if (queue.empty() && !unproved && !limit) {
       r.status = Status::kInfeasible;
       r.message = "no design within the domains meets every requirement and margin: branch and bound emptied every box";
+      if (tubes_) r.message += " (each shaft one of the sizes of --tube-sizes " + tubes_->table_name() + ")";
       const icsp::Explanation ex = icsp::Explain(net(), initial_, {});
       if (ex.infeasible) {
         r.infeasibility = ex.text;
@@ -1196,6 +1210,102 @@ void Optimizer::Finish(Report& r) {
                           dv.name + (dv.at_bound == "lower" ? " >= " : " <= ") +
                               FormatNumber(dv.at_bound == "lower" ? dv.lower : dv.upper, 6) + " " + dv.unit});
   r.design_project = FixDesign(project_, values);
+  FinishTubeSizes(r);
+}
+
+/// Options::tube_sizes: the table constraint (tube_sizes.h) over the design variables.
+void Optimizer::SetupTubeSizes() {
+  if (options_.tube_sizes.sizes.empty()) return;
+  std::vector<Interval> domains;
+  for (int v : design_) domains.push_back(initial_[v]);
+  tubes_ = std::make_unique<TubeConstraint>(options_.tube_sizes, project_, design_names_, domains,
+                                            [&](const std::string& name) {
+                                              const icsp::VariableId v = net().FindVariable(name);
+                                              return v.value < 0 ? icsp::Whole() : initial_[v.value];
+                                            });
+}
+
+/// The box's design variables contracted by the table constraint, then the box propagated again
+/// while the table narrows it (at most 4 rounds; the box ends on the hull of its sizes). False when
+/// a shaft has no size left in the box or the propagation empties it: no design of the box is made
+/// of the table's sizes and meets the constraints.
+bool Optimizer::ContractTubes(Box& box) {
+  std::vector<Interval> d(design_.size());
+  for (int round = 0;; ++round) {
+    for (std::size_t i = 0; i < design_.size(); ++i) d[i] = box[design_[i]];
+    bool changed = false;
+    if (!tubes_->Contract(d, changed)) return false;
+    if (!changed) return true;
+    for (std::size_t i = 0; i < design_.size(); ++i) box[design_[i]] = d[i];
+    if (round == 3) return true;
+    if (propagator_->Propagate(box).status == icsp::Status::kInfeasible) return false;
+  }
+}
+
+/// A candidate design checked and considered as the incumbent; with tube sizes, the designs made
+/// of sizes near it inside the box `d` instead (TubeConstraint::Snap): every shaft at its nearest
+/// size; when that is robustly feasible, also every shaft at its nearest size at most as large
+/// (lighter, maybe still feasible), else at its nearest size at least as large (stronger). The
+/// robustly feasible lighter of the two is returned, else the nearest's outcome.
+Candidate Optimizer::Try(const std::vector<double>& x, const std::vector<Interval>& d) {
+  if (!tubes_) {
+    Candidate c = Evaluate(x, true);
+    Consider(x, c);
+    return c;
+  }
+  const TubeConstraint::Snapped s = tubes_->Snap(x, d);
+  Candidate c = Evaluate(s.nearest, true);
+  Consider(s.nearest, c);
+  const std::vector<double>& next = c.feasible ? s.down : s.up;
+  if (next == s.nearest) return c;
+  Candidate e = Evaluate(next, true);
+  Consider(next, e);
+  return e.feasible && (!c.feasible || e.value < c.value) ? e : c;
+}
+
+/// The report names each restricted shaft's size; the project of the design says it in the notes.
+/// What limits a size: the best design with one shaft at its next lighter size (the heaviest of
+/// the sizes within its domains with a smaller (D - t) t, the tube law's factor) is checked, and
+/// what fails there is listed with the shaft and the size.
+void Optimizer::FinishTubeSizes(Report& r) {
+  if (!tubes_) return;
+  r.tube_table = tubes_->table_name();
+  r.tube_sizes = tubes_->Sizes(best_x_);
+  for (std::size_t k = 0; k < r.tube_sizes.size(); ++k) {
+    const TubeShaft& s = tubes_->shafts()[k];
+    const double D = s.diameter >= 0 ? best_x_[s.diameter] : 0.0, t = s.wall >= 0 ? best_x_[s.wall] : 0.0;
+    auto factor = [&](std::size_t j) {
+      return ((s.diameter >= 0 ? s.D[j] : D) - (s.wall >= 0 ? s.t[j] : t)) * (s.wall >= 0 ? s.t[j] : t);
+    };
+    const double current = (D - t) * t;
+    int lighter = -1;
+    for (std::size_t j = 0; j < s.D.size(); ++j)
+      if (factor(j) < current && (lighter < 0 || factor(j) > factor(lighter))) lighter = static_cast<int>(j);
+    if (lighter >= 0 && s.diameter >= 0 && s.wall >= 0) {
+      std::vector<double> x = best_x_;
+      x[s.diameter] = s.D[lighter];
+      x[s.wall] = s.t[lighter];
+      const Candidate c = Evaluate(x, true);
+      const std::string at = " (" + s.component + " at its next lighter size " + s.designations[lighter] + ")";
+      for (int f : c.failed) {
+        if (f < 0) continue;
+        const icsp::Constraint& con = net().constraint(icsp::ConstraintId{f});
+        r.active.push_back({con.info.label, con.info.description + at,
+                            con.info.source.empty() ? net().ConstraintText(icsp::ConstraintId{f}) : con.info.source});
+      }
+      if (c.failed.empty() && !c.reduced_failure.empty())
+        r.active.push_back({c.reduced_failure.substr(0, c.reduced_failure.find(':')), c.reduced_failure + at, ""});
+    }
+    for (int i : {s.diameter, s.wall}) {
+      if (i < 0) continue;
+      r.design[i].tube_size = r.tube_sizes[k].second;
+      if (r.design_project) {
+        const std::string& name = design_names_[i];
+        r.design_project->FindComponent(s.component)->parameters[name.substr(name.find('.') + 1)].note =
+            "highlift optimize: tube size " + r.tube_sizes[k].second + " of --tube-sizes " + r.tube_table;
+      }
+    }
+  }
 }
 
 }  // namespace detail
@@ -1244,6 +1354,9 @@ void Options::Validate() const {
     throw InputError("optimize: pareto_points = " + std::to_string(pareto_points) + " must be from 2 to 50");
   if (!pareto.empty() && !choose_part.empty())
     throw InputError("optimize: --pareto and --choose-part together are not supported; give one of them");
+  if (!tube_sizes.sizes.empty() && !choose_part.empty())
+    throw InputError("optimize: --tube-sizes and --choose-part together are not supported; a database tube part "
+                     "already fixes its diameter and wall: give one of them");
   if (max_part_combinations < 1)
     throw InputError("optimize: max_part_combinations = " + std::to_string(max_part_combinations) + " must be >= 1");
   for (const PartChoice& c : choose_part)
@@ -1314,12 +1427,19 @@ std::string Report::FullReport() const {
     }
   } else {
     o << "Best design (" << message << "):\n";
-    TextTable t({"design variable", "unit", "optimized", "domain", "nominal", "at bound"}, {2, 4});
-    for (const DesignValue& d : design)
-      t.AddRow({d.name, d.unit, Number(d.value), "[" + Number(d.lower) + ", " + Number(d.upper) + "]",
-                std::isfinite(d.nominal) ? Number(d.nominal) : "-", d.at_bound});
+    std::vector<std::string> columns = {"design variable", "unit", "optimized", "domain", "nominal", "at bound"};
+    if (!tube_table.empty()) columns.push_back("tube size");
+    TextTable t(columns, {2, 4});
+    for (const DesignValue& d : design) {
+      std::vector<std::string> row = {d.name, d.unit, Number(d.value), "[" + Number(d.lower) + ", " + Number(d.upper) + "]",
+                                      std::isfinite(d.nominal) ? Number(d.nominal) : "-", d.at_bound};
+      if (!tube_table.empty()) row.push_back(d.tube_size);
+      t.AddRow(row);
+    }
     o << t.ToString();
     for (const auto& [component, designation] : parts) o << "part of " << component << ": " << designation << "\n";
+    for (const auto& [component, size] : tube_sizes)
+      o << "tube of " << component << ": " << size << " (--tube-sizes " << tube_table << ")\n";
     o << "\nObjective " << objective << ": " << Number(best) << " " << objective_unit
       << " (upper bound over the remaining uncertain parameters); certified lower bound " << Number(lower_bound) << " "
       << objective_unit << "; relative gap " << FormatNumber(gap, 3) << "\n";
@@ -1331,7 +1451,8 @@ std::string Report::FullReport() const {
                   std::isfinite(mt.upper) ? Number(mt.upper) : "-", mt.law});
       o << m.ToString();
     }
-    o << "\nWhat limits the design (breaks one step of 1e-4 of the domains towards a smaller " << objective << "):\n";
+    o << "\nWhat limits the design (breaks one step of 1e-4 of the domains towards a smaller " << objective
+      << (tube_table.empty() ? "" : ", or a shaft's next lighter tube size") << "):\n";
     if (active.empty()) o << "  nothing found at that step\n";
     for (const ActiveConstraint& a : active)
       o << "  - " << a.label << ": " << a.description << (a.text.empty() ? "" : "\n      " + a.text) << "\n";
@@ -1386,11 +1507,18 @@ nlohmann::json Report::ToJson() const {
     j["gap"] = nullptr;
   }
   nlohmann::json d = nlohmann::json::array();
-  for (const DesignValue& v : design)
-    d.push_back({{"name", v.name}, {"unit", v.unit}, {"value", v.value}, {"domain", {v.lower, v.upper}},
-                 {"nominal", FiniteOrNull(v.nominal)},
-                 {"at_bound", v.at_bound}});
+  for (const DesignValue& v : design) {
+    nlohmann::json row = {{"name", v.name}, {"unit", v.unit}, {"value", v.value}, {"domain", {v.lower, v.upper}},
+                          {"nominal", FiniteOrNull(v.nominal)}, {"at_bound", v.at_bound}};
+    if (!tube_table.empty()) row["tube_size"] = v.tube_size;
+    d.push_back(row);
+  }
   j["design"] = d;
+  if (!tube_table.empty()) {
+    nlohmann::json sizes = nlohmann::json::object();
+    for (const auto& [component, size] : tube_sizes) sizes[component] = size;
+    j["tube_sizes"] = {{"table", tube_table}, {"shafts", sizes}};
+  }
   nlohmann::json a = nlohmann::json::array();
   for (const ActiveConstraint& c : active) a.push_back({{"label", c.label}, {"description", c.description}, {"text", c.text}});
   j["active_constraints"] = a;
@@ -1549,6 +1677,7 @@ double ObjectiveAt(const Project& project, const Options& options, const std::st
   Options o = options;
   o.objective = objective;
   o.design.clear();
+  o.tube_sizes = {};  // the design is fixed: nothing left to restrict
   o.max_seconds = std::max(0.1, seconds);
   detail::Optimizer opt(FixDesign(project, values), o);
   opt.AllowNoDesignVariable();

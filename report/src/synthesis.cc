@@ -199,6 +199,16 @@ nlohmann::json SynthesisJson(const Project& project, const nlohmann::json& resul
     for (const auto& [component, designation] : in.Object(Pointer("/parts")).items())
       parts[component] = in.String(Pointer("/parts") / component);
   out["parts"] = parts;
+  // With --tube-sizes: the table and each restricted shaft's size.
+  Json tubes = Json::object();
+  if (in.Find(Pointer("/tube_sizes"))) {
+    const Pointer at = Pointer("/tube_sizes");
+    tubes["table"] = in.String(at / "table");
+    Json shafts = Json::object();
+    for (const auto& [component, size] : in.Object(at / "shafts").items()) shafts[component] = in.String(at / "shafts" / component);
+    tubes["shafts"] = shafts;
+  }
+  out["tube_sizes"] = tubes;
   out["counters"] = in.Find(Pointer("/counters")) ? in.Object(Pointer("/counters")) : Json::object();
 
   // The Pareto front: each point with its design as rows (name, value, unit).

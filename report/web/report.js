@@ -185,6 +185,8 @@
           "[" + fmt(d.lower) + ", " + fmt(d.upper) + "]", fmt(d.nominal), d.at_bound ? el("strong", { text: d.at_bound }) : ""]), [2, 4])));
       const parts = Object.entries(s.parts || {});
       if (parts.length) box.append(el("p", { text: "Parts chosen: " + parts.map(([c, p]) => c + ": " + p).join(", ") }));
+      const tubes = Object.entries((s.tube_sizes && s.tube_sizes.shafts) || {});
+      if (tubes.length) box.append(el("p", { text: "Tube sizes (" + s.tube_sizes.table + "): " + tubes.map(([c, z]) => c + ": " + z).join(", ") }));
       box.append(el("h3", { text: "What limits the design" }));
       box.append(el("p", { class: "hint", text: "The constraints that no longer hold for certain one step of 1e-4 of the domains towards a smaller " +
         s.objective + ", and the design variables at a bound of their domain." }));

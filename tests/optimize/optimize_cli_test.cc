@@ -279,6 +279,89 @@ TEST(OptimizeCli, ChoosePartWithoutPartsOfThatTypeExits2) {
   EXPECT_NE(r.err.find(db.filename().string()), std::string::npos) << r.err;
 }
 
+// The A320-class flaps with no-back actuators (as above), each shaft's outer diameter (0.8-1.25 x the
+// example's) and wall (1-2.5 mm) design variables, made of the shipped standard sizes: every shaft
+// gets a size of the table (its D and t written as the size's), and the written design passes
+// `check`, `size` and `peak`.
+TEST(OptimizeCli, TubeSizesStandardOnAnExampleWritesSizesThatPassCheckSizeAndPeak) {
+  const std::filesystem::path dir = std::filesystem::path(HIGHLIFT_BINARY_DIR) / "optimize-cli-tube-sizes";
+  const std::filesystem::path base = DesignProblem("a320_class_flaps", dir, true);
+  nlohmann::json p = nlohmann::json::parse(std::ifstream(base));
+  int shafts = 0;
+  for (auto& c : p["components"]) {
+    if (c["type"] != "torque_shaft") continue;
+    ++shafts;
+    auto& ps = c["parameters"];
+    const nlohmann::json& d = ps["outer_diameter"];
+    const double D = std::stod((d.is_object() ? d["value"] : d).get<std::string>());  // "38 mm"
+    ps["outer_diameter"] = {{"value", D}, {"min", 0.8 * D}, {"max", 1.25 * D}, {"unit", "mm"}, {"design", true}};
+    ps["wall_thickness"] = {{"value", 1.5}, {"min", 1}, {"max", 2.5}, {"unit", "mm"}, {"design", true}};
+  }
+  ASSERT_GT(shafts, 0);
+  const std::filesystem::path problem = dir / "tubes.json", best = dir / "best.json";
+  std::ofstream(problem) << p.dump(1);
+  std::filesystem::remove(best);
+  const CliResult r = RunCli({"optimize", problem.string(), "--tube-sizes", "standard", "--gap", "0.01",
+                              "--time-limit", "60", "--write", best.string(), "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  const nlohmann::json doc = nlohmann::json::parse(r.out);
+  EXPECT_EQ(doc["status"], "optimal");
+  EXPECT_EQ(doc["tube_sizes"]["table"], "standard");
+  ASSERT_EQ(static_cast<int>(doc["tube_sizes"]["shafts"].size()), shafts);
+  // Each written shaft is its size: "40x1.12" -> D 40 mm, t 1.12 mm.
+  const nlohmann::json written = nlohmann::json::parse(std::ifstream(best));
+  for (const auto& c : written["components"]) {
+    if (c["type"] != "torque_shaft") continue;
+    const std::string size = doc["tube_sizes"]["shafts"][c["id"].get<std::string>()];
+    const auto x = size.find('x');
+    ASSERT_NE(x, std::string::npos) << size;
+    const auto& ps = c["parameters"];
+    EXPECT_EQ(ps["wall_thickness"]["provenance"], "optimized");
+    EXPECT_NE(ps["wall_thickness"]["note"].get<std::string>().find(size), std::string::npos);
+    const nlohmann::json& D = ps["outer_diameter"]["value"];
+    const nlohmann::json& t = ps["wall_thickness"]["value"];
+    // Written in SI or with a unit, by the project writer: compare in mm either way.
+    auto mm = [](const nlohmann::json& v) {
+      if (v.is_number()) return 1e3 * v.get<double>();
+      const std::string text = v.get<std::string>();
+      const double value = std::stod(text);
+      return text.find(" mm") != std::string::npos ? value : 1e3 * value;
+    };
+    EXPECT_NEAR(mm(D), std::stod(size.substr(0, x)), 1e-9) << c["id"] << " " << D;
+    EXPECT_NEAR(mm(t), std::stod(size.substr(x + 1)), 1e-9) << c["id"] << " " << t;
+  }
+  for (const char* analysis : {"check", "size", "peak"}) {
+    const CliResult a = RunCli({analysis, best.string()});
+    EXPECT_EQ(a.exit_code, 0) << analysis << "\n" << a.out << a.err;
+  }
+}
+
+TEST(OptimizeCli, TubeSizesBadInputExits2) {
+  const std::filesystem::path dir = std::filesystem::path(HIGHLIFT_BINARY_DIR) / "optimize-cli-tube-sizes-bad";
+  std::filesystem::create_directories(dir);
+  const std::filesystem::path csv = dir / "stock.csv";
+  std::ofstream(csv) << "designation,outer_diameter [mm],wall_thickness [mm]\n45x1.8,45,1.8\n50x2,50\n";
+  const std::filesystem::path problem = A320DesignProblem(dir);  // walls are design variables
+  CliResult r = RunCli({"optimize", problem.string(), "--tube-sizes", csv.string()});
+  EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
+  EXPECT_NE(r.err.find("stock.csv line 3: 2 fields"), std::string::npos) << r.err;
+  r = RunCli({"optimize", problem.string(), "--tube-sizes", (dir / "missing.csv").string()});
+  EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
+  EXPECT_NE(r.err.find("cannot read the file"), std::string::npos) << r.err;
+  // The example's walls are 1.4-1.6 mm around diameters of 38 mm, not R20 sizes: the shaft, its
+  // domains and the nearest sizes are named.
+  r = RunCli({"optimize", problem.string(), "--tube-sizes", "standard"});
+  EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
+  EXPECT_NE(r.err.find("no size of the table fits shaft 'shaft_"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("the nearest of its"), std::string::npos) << r.err;
+  // No shaft diameter or wall to restrict.
+  r = RunCli({"optimize", "examples/a320_class_flaps.json", "--design", "stl_left.lockout_torque_extend",
+              "--tube-sizes", "standard"});
+  EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
+  EXPECT_NE(r.err.find("no torque shaft has its outer_diameter or wall_thickness as a design variable"),
+            std::string::npos) << r.err;
+}
+
 // With the estimator on (the default), a tube whose diameter and wall are design variables keeps
 // its stiffness and inertia tied to them: the estimator leaves them to the network's tube law
 // instead of pinning them to an interval over every choice. The answer is the one without

@@ -107,6 +107,25 @@ TEST(ReportSynthesis, SectionDataIsTheOptimizeResultWithItsParetoFront) {
   }
 }
 
+// --tube-sizes: the section names the table and each shaft's size, as optimize's report does.
+TEST(ReportSynthesis, TubeSizesOfTheResultAreShown) {
+  const Project project = LoadProject(kProjectFile);
+  optimize::Options o = Options();
+  o.tube_sizes = componentdb::StandardTubeSizes();
+  const optimize::Report r = optimize::Optimize(project, o);
+  ASSERT_TRUE(r.found) << r.FullReport();
+  ASSERT_FALSE(r.tube_sizes.empty());
+  const nlohmann::json s = SynthesisJson(project, ResultDocument(project, r), "result.json");
+  EXPECT_EQ(s["tube_sizes"]["table"], "standard");
+  for (const auto& [shaft, size] : r.tube_sizes) {
+    EXPECT_FALSE(size.empty()) << shaft;
+    EXPECT_EQ(s["tube_sizes"]["shafts"][shaft], size);
+  }
+  // Without --tube-sizes: an empty object.
+  const nlohmann::json plain = SynthesisJson(project, ResultDocument(project, optimize::Optimize(project, Options())), "r.json");
+  EXPECT_TRUE(plain["tube_sizes"].empty());
+}
+
 TEST(ReportSynthesis, ReportCarriesTheSectionAndThePageEscapesIt) {
   const Project project = LoadProject(kProjectFile);
   const optimize::Report r = ParetoRun(project);

@@ -27,6 +27,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "highlift/componentdb/tube_sizes.h"
 #include "highlift/core/project.h"
 
 namespace highlift::optimize {
@@ -88,6 +89,13 @@ struct Options {
   /// pareto_points values of epsilon evenly between the two; max_seconds is shared by the runs.
   std::string pareto;
   int pareto_points = 5;  ///< epsilon values (2 to 50), the ends included
+  /// `--tube-sizes`: every torque shaft whose outer_diameter and/or wall_thickness are design
+  /// variables is made of one of these sizes (those within its domains; with one of the two a
+  /// design variable, the sizes whose other value lies in the other's domain). A table
+  /// constraint of the branch and bound: each box's (D, t) contracted to the hull of the sizes
+  /// inside it, candidate designs snapped to sizes. Empty (the default): D and t are continuous.
+  /// componentdb::StandardTubeSizes() is the shipped ISO 3 R20 table.
+  componentdb::TubeSizeTable tube_sizes;
   /// Throws InputError naming the bad option and the remedy.
   void Validate() const;
 };
@@ -112,6 +120,7 @@ struct DesignValue {
   double upper = 0.0;
   double nominal = 0.0;     ///< the project's nominal value (NaN when it has none)
   std::string at_bound;     ///< "lower", "upper" or "" (the domain limits the design)
+  std::string tube_size;    ///< with Options::tube_sizes: the size of this shaft's D and t, e.g. "45x1.8"
 };
 
 /// A constraint that limits the design: at the best design it holds, a small step towards a
@@ -155,6 +164,10 @@ struct Report {
     double lower_bound = 0.0;
   };
   std::vector<Combination> combinations;
+  /// With Options::tube_sizes: the table's name ("standard" or its file) and the size of each shaft
+  /// restricted to it (of the best design), by component.
+  std::string tube_table;
+  std::vector<std::pair<std::string, std::string>> tube_sizes;
   /// With Options::pareto: the front, by increasing epsilon; each point the best OBJ1 design
   /// under OBJ2 <= epsilon (points that were no better than a neighbour are dropped).
   struct ParetoPoint {
@@ -224,7 +237,8 @@ class DesignEvaluator {
   /// The design variables ("component.parameter") and their domains (SI), in the order Check takes.
   const std::vector<std::string>& variables() const;
   std::vector<std::pair<double, double>> domains() const;
-  /// `x` in SI, one value per variable.
+  /// `x` in SI, one value per variable; checked as given (with Options::tube_sizes, not snapped to
+  /// a size).
   PointCheck Check(const std::vector<double>& x);
 
  private:
