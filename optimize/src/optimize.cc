@@ -486,8 +486,9 @@ Candidate Optimizer::Evaluate(const std::vector<double>& x, bool verify) {
   // A requirement that is not certain may only look so because of the dependency problem in a
   // product law: enclose those again by partition, propagate the narrowed values, check again.
   // First only the laws behind the first failing check: when it still fails, so does x, and the
-  // others are not worth sharpening.
-  if (!c.failed.empty() && options_.dependency_splits > 0 && !products_.empty()) {
+  // others are not worth sharpening. Nor is a design that cannot beat the incumbent.
+  if (!c.failed.empty() && options_.dependency_splits > 0 && !products_.empty() &&
+      !(c.box[objective_].lower() >= best_)) {
     for (int stage = 0; stage < 2 && !c.failed.empty(); ++stage) {
       const std::vector<int> target = stage == 0 ? std::vector<int>{c.failed.front()} : c.failed;
       if (!SharpenProducts(c.box, target)) break;

@@ -74,7 +74,7 @@ struct Options {
   /// inertia): when a requirement that reads y is not certain, y is enclosed again as the union of h
   /// over a partition of the shared arguments, with up to this many bisections per law (two
   /// black-box evaluations each). 0: plain interval evaluation (docs/optimize.md, Method 1).
-  int dependency_splits = 16;
+  int dependency_splits = 8;
   bool verify_size = true;          ///< an upper bound must also pass reduced_models' Size over the
                                     ///< remaining domains (`highlift size` exits 0 for it)
   bool verify_peak = true;          ///< ... and AnalysePeaks (`highlift peak` exits 0 for it)
