@@ -111,6 +111,51 @@ struct Candidate {
   Box box;                             ///< the propagated box (definitions only)
 };
 
+/// The right-hand side of a definition written "z == rhs" (root z - rhs, z not in rhs), and z;
+/// -1 for any other constraint.
+int DefinitionRhs(const icsp::Network& n, int c, int* z) {
+  const icsp::Constraint& k = n.constraint(icsp::ConstraintId{c});
+  if (k.kind != icsp::Constraint::Kind::kExpression || k.relation != icsp::Relation::kEqual ||
+      k.info.role != icsp::ConstraintRole::kPhysics)
+    return -1;
+  const icsp::ExprNode& root = n.node(icsp::ExprId{k.root});
+  if (root.op != icsp::Op::kSub || n.node(icsp::ExprId{root.a}).op != icsp::Op::kVar) return -1;
+  const int lhs = n.node(icsp::ExprId{root.a}).a;
+  for (int node : n.TopoOf(icsp::ConstraintId{c}))
+    if (node != root.a && n.node(icsp::ExprId{node}).op == icsp::Op::kVar && n.node(icsp::ExprId{node}).a == lhs)
+      return -1;  // z on both sides
+  *z = lhs;
+  return root.b;
+}
+
+/// The variables an expression node reads.
+void VariablesOf(const icsp::Network& n, int node, std::vector<int>& out) {
+  const icsp::ExprNode& e = n.node(icsp::ExprId{node});
+  if (e.op == icsp::Op::kVar) {
+    if (std::find(out.begin(), out.end(), e.a) == out.end()) out.push_back(e.a);
+    return;
+  }
+  if (e.op == icsp::Op::kConst) return;
+  if (e.a >= 0) VariablesOf(n, e.a, out);
+  if (e.b >= 0) VariablesOf(n, e.b, out);
+}
+
+/// A definition y == h(..., m, s, ...) whose factors share arguments: m = f(x) a monotone black
+/// box and s == g(x) a definition, some x_i in both (the peak torque w w1 J* of a jam or rupture:
+/// the first eigenfrequency w1 falls and J* rises with every inertia of the moving part). Interval
+/// evaluation takes w1 at the light corner and J* at the heavy one, which no point reaches (the
+/// dependency problem); Optimizer::SharpenProducts encloses h over a partition of the shared x_i.
+struct SharedProduct {
+  int y = -1, y_rhs = -1;       ///< the variable and the node of h
+  int m_constraint = -1;        ///< the monotone constraint of m (its scope: m, then f's arguments)
+  int s = -1, s_rhs = -1;       ///< the definition factor and the node of g
+  std::vector<int> shared;      ///< the variables that are arguments of f and read by g
+  std::vector<int> downstream;  ///< checks that read y through the definitions (sorted)
+  std::vector<int> reads;       ///< every variable the bound reads (f's arguments, g's, h's)
+  std::vector<Interval> last;   ///< their domains at the last sharpening, and its bound
+  double last_upper = kInf;
+};
+
 }  // namespace
 namespace detail {
 namespace {
@@ -170,6 +215,9 @@ class Optimizer {
   void ClassifyConstraints();
   void ProbeReducedModels();
   void Consider(const std::vector<double>& x, const Candidate& c);
+  void FindSharedProducts();
+  bool SharpenProducts(Box& box, const std::vector<int>& failed);
+  double UpperByPartition(const SharedProduct& p, const Box& box);
   void LocalSearch(const std::vector<Interval>& d);
   std::string PeakProof(const std::vector<Interval>& d);
   void CoordinateSearch();
@@ -203,6 +251,7 @@ class Optimizer {
   std::vector<std::vector<char>> term_constraints_;  ///< per term: the constraints near it (a mask)
   std::vector<char> definitions_;       ///< enabled mask: the laws that define derived quantities
   std::vector<int> checks_;             ///< constraints a design must satisfy for certain
+  std::vector<SharedProduct> products_; ///< definitions the robust check encloses by partition
   Box initial_;
   std::vector<double> sign_, sensitivity_;
   std::vector<int> uncertain_;          ///< parameter variables with a domain that are not design variables
@@ -470,11 +519,33 @@ Candidate Optimizer::Evaluate(const std::vector<double>& x, bool verify) {
     c.failed.push_back(rep.empty_constraint);
     return c;
   }
-  evaluator_->Reset(&c.box);
-  for (int k : checks_) {
-    const icsp::Constraint& con = net().constraint(icsp::ConstraintId{k});
-    if (con.kind != icsp::Constraint::Kind::kExpression) continue;
-    if (!Certain(evaluator_->Eval(con.root), con.relation)) c.failed.push_back(k);
+  auto check = [&] {
+    c.failed.clear();
+    evaluator_->Reset(&c.box);
+    for (int k : checks_) {
+      const icsp::Constraint& con = net().constraint(icsp::ConstraintId{k});
+      if (con.kind != icsp::Constraint::Kind::kExpression) continue;
+      if (!Certain(evaluator_->Eval(con.root), con.relation)) c.failed.push_back(k);
+    }
+  };
+  check();
+  // A requirement that is not certain may only look so because of the dependency problem in a
+  // product law: enclose those again by partition, propagate the narrowed values, check again.
+  // First only the laws behind the first failing check: when it still fails, so does x, and the
+  // others are not worth sharpening. Nor is a design that cannot beat the incumbent.
+  if (!c.failed.empty() && options_.dependency_splits > 0 && !products_.empty() &&
+      !(c.box[objective_].lower() >= best_)) {
+    for (int stage = 0; stage < 2 && !c.failed.empty(); ++stage) {
+      const std::vector<int> target = stage == 0 ? std::vector<int>{c.failed.front()} : c.failed;
+      if (!SharpenProducts(c.box, target)) break;
+      const icsp::PropagationReport again = propagator_->Propagate(c.box, definitions_);
+      if (again.status == icsp::Status::kInfeasible) {
+        c.failed.assign(1, again.empty_constraint);
+        return c;
+      }
+      check();
+      if (std::find(c.failed.begin(), c.failed.end(), target.front()) != c.failed.end()) break;
+    }
   }
   const Interval obj = c.box[objective_];
   c.value = obj.upper();
@@ -505,6 +576,175 @@ Candidate Optimizer::Evaluate(const std::vector<double>& x, bool verify) {
   }
   c.feasible = true;
   return c;
+}
+
+void Optimizer::FindSharedProducts() {
+  const icsp::Network& n = net();
+  for (int c = 0; c < n.num_constraints(); ++c) {
+    const icsp::Constraint& k = n.constraint(icsp::ConstraintId{c});
+    if (!definitions_[c] || k.kind != icsp::Constraint::Kind::kMonotone) continue;
+    const auto scope = n.ScopeOf(icsp::ConstraintId{c});
+    const int m = scope[0];
+    for (int law : n.ConstraintsOf(icsp::VariableId{m})) {
+      int y = -1;
+      const int h = law == c || !definitions_[law] ? -1 : DefinitionRhs(n, law, &y);
+      if (h < 0 || y == m) continue;
+      for (int s : n.ScopeOf(icsp::ConstraintId{law})) {
+        if (s == y || s == m) continue;
+        SharedProduct p;
+        for (int def : n.ConstraintsOf(icsp::VariableId{s})) {
+          int z = -1;
+          const int g = definitions_[def] ? DefinitionRhs(n, def, &z) : -1;
+          if (g < 0 || z != s) continue;
+          std::vector<int> read;
+          VariablesOf(n, g, read);
+          for (int v : read)
+            if (v != m && std::find(scope.begin() + 1, scope.end(), v) != scope.end()) p.shared.push_back(v);
+          if (p.shared.empty()) continue;
+          p.y = y, p.y_rhs = h, p.m_constraint = c, p.s = s, p.s_rhs = g;
+          p.reads.assign(scope.begin(), scope.end());
+          VariablesOf(n, g, p.reads);
+          VariablesOf(n, h, p.reads);
+          break;
+        }
+        if (p.y < 0) continue;
+        // The checks y reaches forward through the definitions (a definition's left side, or a
+        // monotone box's value, from the variables it reads).
+        std::vector<char> reached(n.num_variables(), 0);
+        std::vector<int> frontier = {y};
+        reached[y] = 1;
+        while (!frontier.empty()) {
+          const int v = frontier.back();
+          frontier.pop_back();
+          for (int d : n.ConstraintsOf(icsp::VariableId{v})) {
+            if (!definitions_[d]) continue;
+            int z = -1;
+            if (n.constraint(icsp::ConstraintId{d}).kind == icsp::Constraint::Kind::kMonotone)
+              z = n.ScopeOf(icsp::ConstraintId{d})[0];
+            else if (DefinitionRhs(n, d, &z) < 0)
+              continue;
+            if (z != v && !reached[z]) reached[z] = 1, frontier.push_back(z);
+          }
+        }
+        for (int k2 : checks_) {
+          const auto sc = n.ScopeOf(icsp::ConstraintId{k2});
+          if (std::any_of(sc.begin(), sc.end(), [&](int v) { return reached[v] != 0; })) p.downstream.push_back(k2);
+        }
+        if (!p.downstream.empty()) products_.push_back(std::move(p));
+        break;
+      }
+    }
+  }
+}
+
+/// Branch and bound on the upper end of each product law's value whose checks failed: the box of
+/// its shared arguments is bisected (the part with the largest bound, at the argument that moves
+/// g the most), each part bounded by the black box's upper corner and g and h over the part. The
+/// largest bound over the parts encloses every value y takes in the box (a partition; each part's
+/// bound is an interval enclosure), so intersecting y with it is sound. True when y narrowed.
+bool Optimizer::SharpenProducts(Box& box, const std::vector<int>& failed) {
+  if (options_.dependency_splits <= 0) return false;
+  bool narrowed = false;
+  for (SharedProduct& p : products_) {
+    if (std::none_of(failed.begin(), failed.end(),
+                     [&](int k) { return std::binary_search(p.downstream.begin(), p.downstream.end(), k); }))
+      continue;
+    // The same domains as last time (a line search moves other variables): the same bound.
+    bool same = p.last.size() == p.reads.size();
+    for (std::size_t i = 0; same && i < p.reads.size(); ++i) {
+      const Interval& a = box[p.reads[i]];
+      same = a.lower() == p.last[i].lower() && a.upper() == p.last[i].upper();
+    }
+    if (!same) {
+      p.last.clear();
+      for (int v : p.reads) p.last.push_back(box[v]);
+      p.last_upper = UpperByPartition(p, box);
+    }
+    if (p.last_upper < box[p.y].upper()) {
+      box[p.y] = icsp::Meet(box[p.y], icsp::Make(-kInf, p.last_upper));
+      narrowed = true;
+    }
+  }
+  return narrowed;
+}
+
+double Optimizer::UpperByPartition(const SharedProduct& p, const Box& box) {
+  const icsp::Network& n = net();
+  const icsp::Constraint& mc = n.constraint(icsp::ConstraintId{p.m_constraint});
+  const icsp::MonotoneFunction& f = n.monotone(mc.monotone);
+  const auto scope = n.ScopeOf(icsp::ConstraintId{p.m_constraint});
+  const int m = scope[0];
+  const std::size_t ns = p.shared.size();
+  Box sub = box;
+  std::vector<double> x(scope.size() - 1);
+  // The upper bound of y over the part where the shared arguments take `d` (-inf: no point).
+  auto bound = [&](const std::vector<Interval>& d) {
+    for (std::size_t j = 0; j < ns; ++j) sub[p.shared[j]] = d[j];
+    for (std::size_t i = 0; i + 1 < scope.size(); ++i) {
+      const Interval& a = sub[scope[i + 1]];
+      x[i] = f.monotonicity[i] == icsp::Monotonicity::kIncreasing ? a.upper() : a.lower();
+      if (!std::isfinite(x[i])) return kInf;
+    }
+    double fhi = f.f(std::span<const double>(x.data(), x.size()));
+    if (std::isnan(fhi)) return kInf;
+    fhi = std::nextafter(fhi + f.relative_error * std::fabs(fhi), kInf);  // as the propagator widens
+    sub[m] = icsp::Meet(box[m], icsp::Make(-kInf, fhi));
+    if (icsp::IsEmpty(sub[m])) return -kInf;
+    evaluator_->Reset(&sub);
+    sub[p.s] = icsp::Meet(box[p.s], evaluator_->Eval(p.s_rhs));
+    if (icsp::IsEmpty(sub[p.s])) return -kInf;
+    evaluator_->Reset(&sub);
+    const Interval yv = evaluator_->Eval(p.y_rhs);
+    return icsp::IsEmpty(yv) ? -kInf : yv.upper();
+  };
+  // How much each shared argument moves g per unit of its width (over the whole box, the others
+  // at their lower ends; exact for a sum such as J*): a part is bisected at the argument whose
+  // width times this is largest.
+  std::vector<double> weight(ns, 0.0);
+  for (std::size_t j = 0; j < ns; ++j) {
+    const Interval& dj = box[p.shared[j]];
+    if (!(dj.upper() > dj.lower())) continue;
+    for (std::size_t i = 0; i < ns; ++i) sub[p.shared[i]] = i == j ? dj : Interval(box[p.shared[i]].lower());
+    evaluator_->Reset(&sub);
+    const Interval g = evaluator_->Eval(p.s_rhs);
+    if (!icsp::IsEmpty(g)) weight[j] = (g.upper() - g.lower()) / (dj.upper() - dj.lower());
+  }
+  auto widest = [&](const std::vector<Interval>& d) {
+    int best = -1;
+    double score = 0.0;
+    for (std::size_t j = 0; j < ns; ++j) {
+      if (!(d[j].upper() > d[j].lower())) continue;
+      const double w = (weight[j] > 0.0 ? weight[j] : 1e-300) * (d[j].upper() - d[j].lower());
+      if (w > score || best < 0) score = w, best = static_cast<int>(j);
+    }
+    return best;
+  };
+  struct Part {
+    double upper;
+    std::vector<Interval> d;
+    bool operator<(const Part& o) const { return upper < o.upper; }
+  };
+  std::priority_queue<Part> parts;
+  std::vector<Interval> whole;
+  for (int v : p.shared) whole.push_back(box[v]);
+  parts.push({bound(whole), whole});
+  for (int split = 0; split < options_.dependency_splits && !parts.empty(); ++split) {
+    if (!std::isfinite(parts.top().upper)) break;
+    const int j = widest(parts.top().d);
+    if (j < 0) break;
+    Part top = parts.top();
+    parts.pop();
+    const double mid = Mid(top.d[j]);
+    std::vector<Interval> lo = top.d, hi = top.d;
+    lo[j] = icsp::Make(top.d[j].lower(), mid);
+    hi[j] = icsp::Make(mid, top.d[j].upper());
+    for (auto* d : {&lo, &hi}) {
+      const double u = bound(*d);
+      if (u > -kInf) parts.push({u, std::move(*d)});
+    }
+  }
+  const double upper = parts.empty() ? -kInf : parts.top().upper;
+  return upper;
 }
 
 void Optimizer::Consider(const std::vector<double>& x, const Candidate& c) {
@@ -861,6 +1101,7 @@ void Optimizer::Setup() {
   ShavingNeighbourhoods();
   evaluator_ = std::make_unique<Evaluator>(net());
   SetupTubeSizes();
+  FindSharedProducts();
 }
 
 std::string Optimizer::FailureText(const Candidate& c) const {
@@ -1363,6 +1604,8 @@ void Options::Validate() const {
     if (c.parts.empty())
       throw InputError("optimize: no part to choose from for component '" + c.component +
                        "'; give at least one part (the database's parts of its type)");
+  if (dependency_splits < 0 || dependency_splits > 10000)
+    throw InputError("optimize: dependency_splits = " + std::to_string(dependency_splits) + " must be from 0 to 10000");
   if (shaving_tries < 0 || shaving_tries > 20)
     throw InputError("optimize: shaving_tries = " + std::to_string(shaving_tries) + " must be from 0 to 20");
   if (!(shaving_ratio >= 0.0 && shaving_ratio < 1.0))

@@ -300,6 +300,14 @@ TEST(OptimizeOptions, DefaultsAreValidAndBadOnesNamed) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("shaving_tries"), std::string::npos);
   }
+  o = Options{};
+  o.dependency_splits = -1;
+  try {
+    o.Validate();
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("dependency_splits"), std::string::npos);
+  }
 }
 
 TEST(OptimizeStatus, RoundTripsToStrings) {

@@ -70,6 +70,12 @@ struct Options {
   /// as many trials. 0: plain HC4 bounds (docs/optimize.md, Method 2).
   int shaving_tries = 2;
   double shaving_ratio = 0.01;      ///< HC4 agenda ratio of the shaving trials' propagations
+  /// The robust check's enclosure of a law y == h(m, s) whose factors share arguments (the peak
+  /// torque of a jam or rupture, w w1 J*: the eigenfrequency w1 falls and J* rises with every
+  /// inertia): when a requirement that reads y is not certain, y is enclosed again as the union of h
+  /// over a partition of the shared arguments, with up to this many bisections per law (two
+  /// black-box evaluations each). 0: plain interval evaluation (docs/optimize.md, Method 1).
+  int dependency_splits = 8;
   bool verify_size = true;          ///< an upper bound must also pass reduced_models' Size over the
                                     ///< remaining domains (`highlift size` exits 0 for it)
   bool verify_peak = true;          ///< ... and AnalysePeaks (`highlift peak` exits 0 for it)
