@@ -60,6 +60,14 @@ struct Options {
   double max_seconds = 60.0;        ///< stop (kStoppedAtLimit) after this wall time [s]
   int line_search_steps = 6;        ///< bisection steps of the local search in each box (each step
                                     ///< is one robust feasibility check)
+  /// The polish of the incumbent (docs/optimize.md, Method 3), after a coordinate search once a
+  /// tenth of max_seconds has passed, and at the end: a pattern search from the best design, each
+  /// design variable towards less objective and each pair of one component's variables traded
+  /// (one lighter, the other heavier by half the objective saved: a tube's wall for its diameter),
+  /// steps from 1/16 down to 1e-3 of each domain, with at most this many robust checks (the same
+  /// check as every candidate) and a fifth of max_seconds per call. 0: no polish. Not with
+  /// tube_sizes.
+  int polish_evaluations = 3000;
   double propagation_ratio = 0.01;  ///< HC4 agenda ratio of the contractor (docs/icsp.md; 0: exact
                                     ///< fixed point, slower, same certificates)
   /// Lower bounds by shaving (3B consistency on the objective, as IbexOpt's lower bounding by
