@@ -185,15 +185,8 @@ BaselineResult EvolutionaryBaseline(optimize::DesignEvaluator& evaluator, int ev
   return out;
 }
 
-void BM_Optimize(benchmark::State& state, const char* example, double gap, double seconds) {
-  const Project project = DesignProblem(example);
-  optimize::Options o;
-  o.relative_gap = gap;
-  o.max_seconds = seconds;
-  // peak is not verified: on every bundled example the actuators' rupture loads exceed their
-  // allowables at every design of these spaces (optimize proves it at the root, docs/optimize.md),
-  // which would measure nothing of the search; size is.
-  o.verify_peak = false;
+/// Runs the optimizer in the benchmark loop and records the counters both benchmarks share.
+optimize::Report RunOptimize(benchmark::State& state, const Project& project, const optimize::Options& o) {
   optimize::Report r;
   for (auto _ : state) r = optimize::Optimize(project, o);
   state.counters["design_variables"] = static_cast<double>(r.design_variables.size());
@@ -203,9 +196,21 @@ void BM_Optimize(benchmark::State& state, const char* example, double gap, doubl
   state.counters["boxes"] = r.boxes;
   state.counters["candidates"] = r.candidates;
   state.counters["optimal"] = r.status == optimize::Status::kOptimal ? 1 : 0;
-  state.SetLabel(r.BriefReport());
-
   state.counters["seconds"] = r.seconds;
+  return r;
+}
+
+void BM_Optimize(benchmark::State& state, const char* example, double gap, double seconds) {
+  const Project project = DesignProblem(example);
+  optimize::Options o;
+  o.relative_gap = gap;
+  o.max_seconds = seconds;
+  // peak is not verified: on every bundled example the actuators' rupture loads exceed their
+  // allowables at every design of these spaces (optimize proves it at the root, docs/optimize.md),
+  // which would measure nothing of the search; size is.
+  o.verify_peak = false;
+  const optimize::Report r = RunOptimize(state, project, o);
+  state.SetLabel(r.BriefReport());
   // The baselines with the same number of model evaluations.
   optimize::DesignEvaluator evaluator(project, o);
   const BaselineResult random = RandomSearch(evaluator, r.candidates);
@@ -229,16 +234,7 @@ void BM_OptimizeTubeSizes(benchmark::State& state, const char* example, double g
   o.max_seconds = seconds;
   o.verify_peak = false;  // as BM_Optimize
   o.tube_sizes = componentdb::StandardTubeSizes();
-  optimize::Report r;
-  for (auto _ : state) r = optimize::Optimize(project, o);
-  state.counters["design_variables"] = static_cast<double>(r.design_variables.size());
-  state.counters["best"] = r.found ? r.best : NAN;
-  state.counters["lower_bound"] = r.lower_bound;
-  state.counters["gap"] = r.found ? r.gap : NAN;
-  state.counters["boxes"] = r.boxes;
-  state.counters["candidates"] = r.candidates;
-  state.counters["optimal"] = r.status == optimize::Status::kOptimal ? 1 : 0;
-  state.counters["seconds"] = r.seconds;
+  const optimize::Report r = RunOptimize(state, project, o);
   std::string sizes;
   for (const auto& [shaft, size] : r.tube_sizes) sizes += (sizes.empty() ? "" : " ") + shaft + "=" + size;
   state.SetLabel(r.BriefReport() + "; " + sizes);

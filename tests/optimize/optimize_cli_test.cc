@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "common/run_cli.h"
+#include "optimize/one_tube_chain.h"
 
 namespace highlift::testing {
 namespace {
@@ -369,25 +370,7 @@ TEST(OptimizeCli, TubeSizesBadInputExits2) {
 TEST(OptimizeCli, EstimatorLeavesWhatFollowsFromTheDesignToTheNetwork) {
   const std::filesystem::path dir = std::filesystem::path(HIGHLIFT_BINARY_DIR) / "optimize-cli-estimator";
   std::filesystem::create_directories(dir);
-  nlohmann::json j = nlohmann::json::parse(R"json({
-  "format": "highlift-project/1",
-  "name": "one tube",
-  "components": [
-    {"id": "pdu", "type": "pdu", "parameters": {"motor_count": 2, "motor_inertia": "3e-4 kg*m^2",
-      "ratio": 20, "gear_inertia": "0.02 kg*m^2"}},
-    {"id": "shaft_1", "type": "torque_shaft",
-     "parameters": {"length": "2 m",
-                    "outer_diameter": {"value": 40, "min": 20, "max": 60, "unit": "mm", "design": true},
-                    "wall_thickness": {"value": 2, "min": 0.5, "max": 4, "unit": "mm", "design": true},
-                    "density": "4420 kg/m^3", "shear_modulus": "44 GPa", "allowable_shear_stress": "500 MPa"}},
-    {"id": "wtb", "type": "wing_tip_brake", "parameters": {"inertia": "5e-4 kg*m^2"}}
-  ],
-  "connections": [["pdu.left", "shaft_1.a"], ["shaft_1.b", "wtb.a"]],
-  "requirements": [
-    {"id": "capacity", "expression": "shaft_1.torque_capacity >= 2000 N*m"},
-    {"id": "stiffness", "expression": "shaft_1.c >= 5000 N*m/rad"}
-  ]
-})json");
+  nlohmann::json j = OneTubeChain();
   const std::filesystem::path marked = dir / "marked.json", unmarked = dir / "unmarked.json";
   std::ofstream(marked) << j.dump(1);
   for (const char* p : {"outer_diameter", "wall_thickness"}) j["components"][1]["parameters"][p].erase("design");

@@ -13,37 +13,14 @@
 
 #include "highlift/core/error.h"
 #include "highlift/core/project_io.h"
+#include "optimize/one_tube_chain.h"
 #include "highlift/core/validate.h"
 
 namespace highlift::optimize {
 namespace {
 
-// PDU -> one titanium tube (2 m) -> wing-tip brake. Design: D in [20, 60] mm, t in [0.5, 4] mm.
-nlohmann::json Chain(const std::string& shear_modulus = "44 GPa") {
-  nlohmann::json j = nlohmann::json::parse(R"json({
-  "format": "highlift-project/1",
-  "name": "one tube",
-  "components": [
-    {"id": "pdu", "type": "pdu", "parameters": {"motor_count": 2, "motor_inertia": "3e-4 kg*m^2",
-      "ratio": 20, "gear_inertia": "0.02 kg*m^2"}},
-    {"id": "shaft_1", "type": "torque_shaft", "labels": {"side": "left"},
-     "parameters": {"length": "2 m",
-                    "outer_diameter": {"value": 40, "min": 20, "max": 60, "unit": "mm", "design": true},
-                    "wall_thickness": {"value": 2, "min": 0.5, "max": 4, "unit": "mm", "design": true},
-                    "density": "4420 kg/m^3", "shear_modulus": "44 GPa", "allowable_shear_stress": "500 MPa"}},
-    {"id": "wtb", "type": "wing_tip_brake", "labels": {"side": "left"}, "parameters": {"inertia": "5e-4 kg*m^2"}}
-  ],
-  "connections": [["pdu.left", "shaft_1.a"], ["shaft_1.b", "wtb.a"]],
-  "requirements": [
-    {"id": "capacity", "expression": "shaft_1.torque_capacity >= 2000 N*m", "description": "ultimate torque"},
-    {"id": "stiffness", "expression": "shaft_1.c >= 5000 N*m/rad", "description": "torsional stiffness"}
-  ]
-})json");
-  j["components"][1]["parameters"]["shear_modulus"] = shear_modulus;
-  return j;
-}
-
-Project Load(const nlohmann::json& j) { return ParseProject(j.dump(), "chain.json"); }
+using testing::LoadChain;
+using testing::OneTubeChain;
 
 /// The analytic optimum: the mass falls with D for either requirement (thin wall: m ~ 1/D or
 /// 1/D^2), so D is at its upper bound and t the least wall meeting the larger required Ip.
@@ -56,7 +33,7 @@ double AnalyticMass(double G) {
 }
 
 TEST(Optimize, FindsTheAnalyticLeastMassTubeWithACertifiedGapBelow1e6) {
-  const Report r = Optimize(Load(Chain()));
+  const Report r = Optimize(LoadChain(OneTubeChain()));
   ASSERT_EQ(r.status, Status::kOptimal) << r.BriefReport() << "\n" << r.FullReport();
   const double m = AnalyticMass(44e9);
   EXPECT_LE(r.lower_bound, m * (1 + 1e-12)) << r.BriefReport();
@@ -82,7 +59,7 @@ TEST(Optimize, FindsTheAnalyticLeastMassTubeWithACertifiedGapBelow1e6) {
 
 // The modulus stays an interval: the design must be stiff enough at its least value, 43 GPa.
 TEST(Optimize, IsRobustOverTheRemainingUncertainParameters) {
-  const Report r = Optimize(Load(Chain("[43, 51] GPa")));
+  const Report r = Optimize(LoadChain(OneTubeChain("[43, 51] GPa")));
   ASSERT_EQ(r.status, Status::kOptimal) << r.FullReport();
   const double m = AnalyticMass(43e9);
   EXPECT_LE(r.lower_bound, m * (1 + 1e-12));
@@ -91,11 +68,11 @@ TEST(Optimize, IsRobustOverTheRemainingUncertainParameters) {
 }
 
 TEST(Optimize, DesignOnTheCommandLineAddsToTheMarkedOnes) {
-  nlohmann::json j = Chain();
+  nlohmann::json j = OneTubeChain();
   j["components"][1]["parameters"]["outer_diameter"] = "60 mm";  // fixed: t alone
   Options o;
   o.design = {"shaft_1.wall_thickness"};  // also marked: counted once
-  const Report r = Optimize(Load(j), o);
+  const Report r = Optimize(LoadChain(j), o);
   ASSERT_EQ(r.status, Status::kOptimal);
   EXPECT_EQ(r.design.size(), 1u);
   EXPECT_NEAR(r.best, AnalyticMass(44e9), 1e-6 * AnalyticMass(44e9));
@@ -104,7 +81,7 @@ TEST(Optimize, DesignOnTheCommandLineAddsToTheMarkedOnes) {
 TEST(Optimize, ExpressionObjective) {
   Options o;
   o.objective = "shaft_1.wall_thickness";
-  const Report r = Optimize(Load(Chain()), o);
+  const Report r = Optimize(LoadChain(OneTubeChain()), o);
   ASSERT_TRUE(r.found) << r.FullReport();
   // The thinnest wall: D at its top, the stiffness requirement binding (1.44 mm).
   const double D = 0.060, d = std::pow(std::pow(D, 4) - 32 * (5000.0 * 2 / 44e9) / std::numbers::pi, 0.25);
@@ -116,7 +93,7 @@ TEST(Optimize, ExpressionObjective) {
 // radius of the (fixed) diameter, a solid shaft, not the top of the wall's domain; the design passes
 // validate, and the relation is named as what limits it.
 TEST(Optimize, ParameterRelationsLimitTheDesignAsValidateDoes) {
-  nlohmann::json j = Chain();
+  nlohmann::json j = OneTubeChain();
   j["components"][1]["parameters"]["outer_diameter"] = "30 mm";
   j["components"][1]["parameters"]["wall_thickness"] = {{"value", 2}, {"min", 0.5}, {"max", 20}, {"unit", "mm"},
                                                        {"design", true}};
@@ -124,7 +101,7 @@ TEST(Optimize, ParameterRelationsLimitTheDesignAsValidateDoes) {
   Options o;
   o.objective = "1 / shaft_1.wall_thickness";  // the thickest wall
   o.verify_size = o.verify_peak = false;
-  const Report r = Optimize(Load(j), o);
+  const Report r = Optimize(LoadChain(j), o);
   ASSERT_TRUE(r.found) << r.FullReport();
   ASSERT_EQ(r.design.size(), 1u);
   EXPECT_LE(r.design[0].value, 15.0 * (1 + 1e-12)) << r.FullReport();  // mm: within the radius
@@ -137,20 +114,20 @@ TEST(Optimize, ParameterRelationsLimitTheDesignAsValidateDoes) {
 }
 
 TEST(Optimize, ProvedInfeasibleWithTheConflictExplained) {
-  nlohmann::json j = Chain();
+  nlohmann::json j = OneTubeChain();
   j["requirements"][1]["expression"] = "shaft_1.c >= 1e7 N*m/rad";
-  const Report r = Optimize(Load(j));
+  const Report r = Optimize(LoadChain(j));
   EXPECT_EQ(r.status, Status::kInfeasible);
   EXPECT_FALSE(r.found);
   EXPECT_NE(r.infeasibility.find("stiffness"), std::string::npos) << r.infeasibility;
 }
 
 TEST(Optimize, NoDesignVariableIsAnInputErrorNamingTheRemedy) {
-  nlohmann::json j = Chain();
+  nlohmann::json j = OneTubeChain();
   j["components"][1]["parameters"]["outer_diameter"].erase("design");
   j["components"][1]["parameters"]["wall_thickness"].erase("design");
   try {
-    Optimize(Load(j));
+    Optimize(LoadChain(j));
     FAIL() << "expected InputError";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("no design variable"), std::string::npos) << e.what();
@@ -163,7 +140,7 @@ TEST(Optimize, DesignVariableWithoutDomainOrUnknownIsAnInputError) {
   Options o;
   o.design = {"shaft_1.length"};
   try {
-    Optimize(Load(Chain()), o);
+    Optimize(LoadChain(OneTubeChain()), o);
     FAIL();
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("'shaft_1.length' has no domain"), std::string::npos) << e.what();
@@ -171,7 +148,7 @@ TEST(Optimize, DesignVariableWithoutDomainOrUnknownIsAnInputError) {
   }
   o.design = {"shaft_9.length"};
   try {
-    Optimize(Load(Chain()), o);
+    Optimize(LoadChain(OneTubeChain()), o);
     FAIL();
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("no component 'shaft_9'"), std::string::npos) << e.what();
@@ -182,7 +159,7 @@ TEST(Optimize, UnboundedObjectiveIsAnInputError) {
   Options o;
   o.objective = "1 / (shaft_1.wall_thickness - 2 mm)";
   try {
-    Optimize(Load(Chain()), o);
+    Optimize(LoadChain(OneTubeChain()), o);
     FAIL();
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("unbounded below"), std::string::npos) << e.what();
@@ -207,12 +184,12 @@ PartOption Tube(const std::string& name, double D_mm, double t_mm) {
 // 60 x 1.5 tube; the first is proved infeasible, the heavy one cut off by the 60 x 1.5 tube's mass
 // (searched in this order), and the bound is certified.
 TEST(Optimize, ChoosesTheLightestPartThatMeetsTheRequirements) {
-  nlohmann::json j = Chain();
+  nlohmann::json j = OneTubeChain();
   j["components"][1]["parameters"]["outer_diameter"] = "40 mm";
   j["components"][1]["parameters"]["wall_thickness"] = "2 mm";
   Options o;
   o.choose_part = {{"shaft_1", {Tube("soft-40x2", 40, 2), Tube("ok-60x1.5", 60, 1.5), Tube("heavy-60x3", 60, 3)}}};
-  const Report r = Optimize(Load(j), o);
+  const Report r = Optimize(LoadChain(j), o);
   ASSERT_EQ(r.status, Status::kOptimal) << r.BriefReport() << "\n" << r.FullReport();
   ASSERT_EQ(r.parts.size(), 1u);
   EXPECT_EQ(r.parts[0].second, "ok-60x1.5");
@@ -235,7 +212,7 @@ TEST(Optimize, PartChoiceWithoutPartsOrTooManyCombinationsIsAnInputError) {
   o.choose_part = {{"shaft_1", {Tube("a", 40, 2), Tube("b", 50, 2)}}};
   o.max_part_combinations = 1;
   try {
-    Optimize(Load(Chain()), o);
+    Optimize(LoadChain(OneTubeChain()), o);
     FAIL() << "expected an InputError";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("max_part_combinations"), std::string::npos) << e.what();
@@ -251,7 +228,7 @@ TEST(Optimize, ParetoFrontOfMassAgainstDiameter) {
   o.pareto = "shaft_1.outer_diameter";
   o.pareto_points = 4;
   o.relative_gap = 1e-4;
-  const Report r = Optimize(Load(Chain()), o);
+  const Report r = Optimize(LoadChain(OneTubeChain()), o);
   ASSERT_TRUE(r.found) << r.BriefReport();
   ASSERT_GE(r.pareto.size(), 3u) << r.FullReport();
   for (std::size_t i = 0; i < r.pareto.size(); ++i) {
@@ -327,7 +304,7 @@ TEST(OptimizeStatus, RoundTripsToStrings) {
 TEST(Optimize, StopsAtTheBoxLimitWithAnHonestStatus) {
   Options o;
   o.max_boxes = 2;
-  const Report r = Optimize(Load(Chain()), o);
+  const Report r = Optimize(LoadChain(OneTubeChain()), o);
   EXPECT_TRUE(r.status == Status::kStoppedAtLimit || r.status == Status::kNoDesignFound) << r.BriefReport();
   if (r.found) {
     EXPECT_LE(r.lower_bound, AnalyticMass(44e9) * (1 + 1e-12));
@@ -343,12 +320,12 @@ TEST(Optimize, ShavingRaisesTheRootBoundAboveHc4AndStaysBelowTheOptimum) {
   Options o;
   o.max_boxes = 1;
   o.shaving_tries = 0;
-  const Report plain = Optimize(Load(Chain()), o);
+  const Report plain = Optimize(LoadChain(OneTubeChain()), o);
   ASSERT_TRUE(plain.found) << plain.FullReport();
   EXPECT_EQ(plain.shaving_propagations, 0);
   for (int tries : {1, 2, 4, 8}) {
     o.shaving_tries = tries;
-    const Report shaved = Optimize(Load(Chain()), o);
+    const Report shaved = Optimize(LoadChain(OneTubeChain()), o);
     ASSERT_TRUE(shaved.found) << shaved.FullReport();
     EXPECT_GT(shaved.shaving_cuts, 0) << tries;
     EXPECT_GT(shaved.root_lower_bound, plain.root_lower_bound * (1 + 1e-3)) << tries << ": " << shaved.BriefReport();
@@ -358,7 +335,7 @@ TEST(Optimize, ShavingRaisesTheRootBoundAboveHc4AndStaysBelowTheOptimum) {
   // With the uncertain modulus the bound holds at its worst case too.
   o.shaving_tries = 4;
   o.max_boxes = 20000;
-  const Report robust = Optimize(Load(Chain("[43, 51] GPa")), o);
+  const Report robust = Optimize(LoadChain(OneTubeChain("[43, 51] GPa")), o);
   ASSERT_EQ(robust.status, Status::kOptimal) << robust.FullReport();
   EXPECT_LE(robust.lower_bound, AnalyticMass(43e9) * (1 + 1e-12));
   EXPECT_GT(robust.shaving_cuts, 0);
@@ -374,10 +351,10 @@ TEST(Optimize, PolishTradesTheWallForTheDiameterAndStaysRobustlyFeasible) {
   Options o;
   o.max_boxes = 1;
   o.polish_evaluations = 0;
-  const Report plain = Optimize(Load(Chain("[43, 51] GPa")), o);
+  const Report plain = Optimize(LoadChain(OneTubeChain("[43, 51] GPa")), o);
   ASSERT_TRUE(plain.found) << plain.FullReport();
   o.polish_evaluations = 500;
-  const Report polished = Optimize(Load(Chain("[43, 51] GPa")), o);
+  const Report polished = Optimize(LoadChain(OneTubeChain("[43, 51] GPa")), o);
   ASSERT_TRUE(polished.found) << polished.FullReport();
   EXPECT_LT(polished.best, plain.best * (1 - 1e-3)) << plain.BriefReport() << "\n" << polished.BriefReport();
   EXPECT_GE(polished.best, m * (1 - 1e-9)) << polished.BriefReport();
@@ -385,14 +362,14 @@ TEST(Optimize, PolishTradesTheWallForTheDiameterAndStaysRobustlyFeasible) {
   ASSERT_EQ(polished.design.size(), 2u);
   EXPECT_GT(polished.design[0].value, plain.design[0].value) << "the diameter grows";
   EXPECT_LT(polished.design[1].value, plain.design[1].value) << "the wall thins";
-  DesignEvaluator check(Load(Chain("[43, 51] GPa")), o);
+  DesignEvaluator check(LoadChain(OneTubeChain("[43, 51] GPa")), o);
   const PointCheck c = check.Check({polished.design[0].value_si, polished.design[1].value_si});
   EXPECT_TRUE(c.feasible) << c.failure;
   EXPECT_NEAR(c.objective, polished.best, 1e-9 * polished.best);
 }
 
 TEST(Optimize, DesignFlagRoundTripsThroughTheProjectFile) {
-  const Project p = Load(Chain());
+  const Project p = LoadChain(OneTubeChain());
   EXPECT_TRUE(p.FindComponent("shaft_1")->parameters.at("wall_thickness").design);
   const Project q = ParseProject(ProjectToJson(p).dump(), "again.json");
   EXPECT_EQ(DescribeDifference(p, q), "");

@@ -14,38 +14,14 @@
 #include "highlift/componentdb/tube_sizes.h"
 #include "highlift/core/error.h"
 #include "highlift/core/project_io.h"
+#include "optimize/one_tube_chain.h"
 #include "highlift/optimize/optimize.h"
 
 namespace highlift::optimize {
 namespace {
 
-// PDU -> one titanium tube (2 m) -> wing-tip brake, as optimize_test.cc's chain. Design: D in
-// [20, 60] mm, t in [0.5, 4] mm.
-nlohmann::json Chain(const std::string& shear_modulus = "44 GPa") {
-  nlohmann::json j = nlohmann::json::parse(R"json({
-  "format": "highlift-project/1",
-  "name": "one tube",
-  "components": [
-    {"id": "pdu", "type": "pdu", "parameters": {"motor_count": 2, "motor_inertia": "3e-4 kg*m^2",
-      "ratio": 20, "gear_inertia": "0.02 kg*m^2"}},
-    {"id": "shaft_1", "type": "torque_shaft", "labels": {"side": "left"},
-     "parameters": {"length": "2 m",
-                    "outer_diameter": {"value": 40, "min": 20, "max": 60, "unit": "mm", "design": true},
-                    "wall_thickness": {"value": 2, "min": 0.5, "max": 4, "unit": "mm", "design": true},
-                    "density": "4420 kg/m^3", "shear_modulus": "44 GPa", "allowable_shear_stress": "500 MPa"}},
-    {"id": "wtb", "type": "wing_tip_brake", "labels": {"side": "left"}, "parameters": {"inertia": "5e-4 kg*m^2"}}
-  ],
-  "connections": [["pdu.left", "shaft_1.a"], ["shaft_1.b", "wtb.a"]],
-  "requirements": [
-    {"id": "capacity", "expression": "shaft_1.torque_capacity >= 2000 N*m", "description": "ultimate torque"},
-    {"id": "stiffness", "expression": "shaft_1.c >= 5000 N*m/rad", "description": "torsional stiffness"}
-  ]
-})json");
-  j["components"][1]["parameters"]["shear_modulus"] = shear_modulus;
-  return j;
-}
-
-Project Load(const nlohmann::json& j) { return ParseProject(j.dump(), "chain.json"); }
+using testing::LoadChain;
+using testing::OneTubeChain;
 
 struct Lightest {
   double mass = std::numeric_limits<double>::infinity();
@@ -81,7 +57,7 @@ double ContinuousMass(double G) {
 TEST(OptimizeTubeSizes, FindsTheLightestStandardSizeFoundByEnumeration) {
   Options o;
   o.tube_sizes = componentdb::StandardTubeSizes();
-  const Report r = Optimize(Load(Chain()), o);
+  const Report r = Optimize(LoadChain(OneTubeChain()), o);
   ASSERT_EQ(r.status, Status::kOptimal) << r.BriefReport() << "\n" << r.FullReport();
   const Lightest e = Enumerate(o.tube_sizes, 44e9);
   ASSERT_FALSE(e.designation.empty());
@@ -118,7 +94,7 @@ TEST(OptimizeTubeSizes, FindsTheLightestStandardSizeFoundByEnumeration) {
 TEST(OptimizeTubeSizes, IsRobustOverTheRemainingUncertainParameters) {
   Options o;
   o.tube_sizes = componentdb::StandardTubeSizes();
-  const Report r = Optimize(Load(Chain("[43, 51] GPa")), o);
+  const Report r = Optimize(LoadChain(OneTubeChain("[43, 51] GPa")), o);
   ASSERT_EQ(r.status, Status::kOptimal) << r.FullReport();
   const Lightest e = Enumerate(o.tube_sizes, 43e9);
   EXPECT_NEAR(r.best, e.mass, 1e-9 * e.mass) << e.designation << "\n" << r.FullReport();
@@ -134,7 +110,7 @@ TEST(OptimizeTubeSizes, UsesAStockListAndOnlyItsSizesWithinTheDomains) {
       "designation,outer_diameter [mm],wall_thickness [mm]\n"
       "big-thin,70,1\nsmall,50,1.2\nmid,60,1.4\nok,60,1.6\nalt,56,2\nheavy,60,3\n",
       "stock.csv");
-  const Report r = Optimize(Load(Chain()), o);
+  const Report r = Optimize(LoadChain(OneTubeChain()), o);
   ASSERT_EQ(r.status, Status::kOptimal) << r.FullReport();
   const Lightest e = Enumerate(o.tube_sizes, 44e9);
   EXPECT_EQ(e.designation, "ok");
@@ -145,11 +121,11 @@ TEST(OptimizeTubeSizes, UsesAStockListAndOnlyItsSizesWithinTheDomains) {
 
 // The diameter fixed (56 mm): only the wall is a design variable, from the sizes of that diameter.
 TEST(OptimizeTubeSizes, WithOnlyTheWallADesignVariableTheSizesOfTheGivenDiameter) {
-  nlohmann::json j = Chain();
+  nlohmann::json j = OneTubeChain();
   j["components"][1]["parameters"]["outer_diameter"] = "56 mm";
   Options o;
   o.tube_sizes = componentdb::StandardTubeSizes();
-  const Report r = Optimize(Load(j), o);
+  const Report r = Optimize(LoadChain(j), o);
   ASSERT_EQ(r.status, Status::kOptimal) << r.FullReport();
   const Lightest e = Enumerate(o.tube_sizes, 44e9, 0.056, 0.056);
   ASSERT_EQ(r.design.size(), 1u);
@@ -160,7 +136,7 @@ TEST(OptimizeTubeSizes, WithOnlyTheWallADesignVariableTheSizesOfTheGivenDiameter
 
 std::string MessageOf(const nlohmann::json& project, const Options& o) {
   try {
-    Optimize(Load(project), o);
+    Optimize(LoadChain(project), o);
   } catch (const InputError& e) {
     return e.what();
   }
@@ -171,7 +147,7 @@ TEST(OptimizeTubeSizes, BadInputNamesTheShaftItsDomainsAndTheNearestSizes) {
   Options o;
   o.tube_sizes = componentdb::StandardTubeSizes();
   // No size within D in [41, 43] mm.
-  nlohmann::json narrow = Chain();
+  nlohmann::json narrow = OneTubeChain();
   narrow["components"][1]["parameters"]["outer_diameter"] = {{"value", 42}, {"min", 41}, {"max", 43}, {"unit", "mm"},
                                                              {"design", true}};
   const std::string m = MessageOf(narrow, o);
@@ -183,7 +159,7 @@ TEST(OptimizeTubeSizes, BadInputNamesTheShaftItsDomainsAndTheNearestSizes) {
   EXPECT_NE(m.find("45x"), std::string::npos) << m;
   EXPECT_NE(m.find("--tube-sizes FILE"), std::string::npos) << m;
   // Neither D nor t a design variable.
-  nlohmann::json fixed = Chain();
+  nlohmann::json fixed = OneTubeChain();
   fixed["components"][1]["parameters"]["outer_diameter"] = "56 mm";
   fixed["components"][1]["parameters"]["wall_thickness"] = "2 mm";
   fixed["components"][1]["parameters"]["length"] = {{"value", 2}, {"min", 1}, {"max", 3}, {"unit", "m"}, {"design", true}};
