@@ -1128,6 +1128,11 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
           break;
         }
         ++report.statistics.continuous_roots;
+        // The row after the kink reads the evaluation with the new discrete variables.
+        if (reads_values && !sys.Evaluate(t, N_VGetArrayPointer(cv.y), nullptr)) {
+          fail(SimulationStatus::kModelError, sys.error(), t);
+          break;
+        }
         write_row(t);
         report.events.push_back({t, "state", "", what});
         if (static_cast<int>(report.events.size()) > options.max_events) {
@@ -1157,6 +1162,13 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
     }
     if (n_roots > 0 && from_readings && !event) {  // the step end's, read above
       g_prev.swap(end.g);
+      g_prev_time = t;
+    } else if (n_roots > 0 && kinematic_root && pending.active && pending.flag != CV_ROOT_RETURN &&
+               next_output() >= pending.t - eps_t) {
+      // After a kink at a kinematic root inside a step, the rest of the step returns next with
+      // no output point on the way: only the kinematic roots are compared there (the others
+      // are the step end's), and those are functions of the states (System::KinematicRoots).
+      sys.KinematicRoots(t, N_VGetArrayPointer(cv.y), g_prev.data());
       g_prev_time = t;
     } else if (n_roots > 0) {  // the root functions where the next step starts (cached evaluation)
       if (!sys.Evaluate(t, N_VGetArrayPointer(cv.y), nullptr)) {

@@ -109,7 +109,8 @@ class System {
   void AfterEventRow();
 
   /// A root without restart (Element::RootRestarts false) was crossed at (t, y): the elements
-  /// whose roots fired update their discrete variables (Element::ContinuousRoot).
+  /// whose roots fired update their discrete variables (Element::ContinuousRoot). The elements
+  /// are left unevaluated: Evaluate(t, y) gives the values with the new discrete variables.
   bool HandleContinuousRoots(double t, const double* y, const int* root_info);
   /// True when some fired root needs the full event treatment.
   bool NeedsRestart(const int* root_info) const;
