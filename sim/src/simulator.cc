@@ -469,7 +469,6 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
 
   std::vector<double> y0 = sys.InitialState(options.start_time);
   std::vector<double> out(sys.OutputNames().size());
-  std::vector<double> tau;
   for (const auto& el : elements) report.peak_torques.push_back({el->id, 0.0, options.start_time});
   std::vector<char> has_torque(elements.size(), 0);  // (not vector<bool>: set at every sample)
 
@@ -487,7 +486,6 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
   };
   std::vector<Episode> open_episode(elements.size()), worst_episode(elements.size());
   std::vector<int> episode_count(elements.size(), 0);
-  std::vector<double> loss;
   report.passivity.tolerance = options.passivity_tolerance;
   auto close_episode = [&](std::size_t i) {
     Episode& e = open_episode[i];
@@ -497,8 +495,21 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
     }
     e = Episode{};
   };
-  auto monitor = [&](double t) {
-    report.passivity.power_scale = std::max(report.passivity.power_scale, sys.LossPowers(loss));
+  // What a sample reads from an evaluation: the elements' peak torques, dissipated powers (with
+  // the passivity monitor's power scale) and the energy state. A step end's are read from
+  // CVODE's own evaluation of it before the step's output points are evaluated (below).
+  struct Readings {
+    std::vector<double> tau, loss;
+    double loss_scale = 0.0;
+    System::EnergyState energy;
+  };
+  auto read = [&](Readings& r, bool step_end) {
+    if (step_end) r.loss_scale = sys.LossPowers(r.loss);
+    sys.PeakTorques(r.tau);
+    if (options.energy) r.energy = sys.Energy();
+  };
+  auto monitor = [&](double t, const std::vector<double>& loss, double loss_scale) {
+    report.passivity.power_scale = std::max(report.passivity.power_scale, loss_scale);
     const double threshold = -options.passivity_tolerance * report.passivity.power_scale;
     for (std::size_t i = 0; i < loss.size(); ++i) {
       Episode& e = open_episode[i];
@@ -544,10 +555,9 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
   // are interpolated on the output grid.
   bool first_sample = true;
   double last_t = options.start_time, last_loss = 0.0, last_source = 0.0, impulsive_base = 0.0;
-  System::EnergyState energy_now;
-  auto sample = [&](double t, bool step_end = true) {
-    if (step_end) monitor(t);
-    sys.PeakTorques(tau);
+  auto record = [&](double t, const Readings& r, bool step_end) {
+    if (step_end) monitor(t, r.loss, r.loss_scale);
+    const std::vector<double>& tau = r.tau;
     PeakTorque* peaks = report.peak_torques.data();  // each element named once, at the start
     for (std::size_t i = 0; i < tau.size(); ++i) {
       const double v = tau[i];
@@ -559,7 +569,7 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
       }
     }
     if (!options.energy) return;
-    energy_now = sys.Energy();
+    const System::EnergyState& energy_now = r.energy;
     EnergyBalance& b = report.energy;
     if (first_sample) {
       impulsive_base = sys.impulsive_loss();  // the initial projection precedes the balance
@@ -577,6 +587,11 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
     last_t = t;
     last_loss = energy_now.loss_power;
     last_source = energy_now.source_power;
+  };
+  Readings now;
+  auto sample = [&](double t, bool step_end = true) {
+    read(now, step_end);
+    record(t, now, step_end);
   };
   // A row of the evaluated state at t (an output point or an event limit); the values only for
   // a sink that reads them (the CLI without --out and the campaign count or discard the rows).
@@ -929,6 +944,12 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
     t_root = tb;
     return check(CVodeGetDky(cv.mem, tb, 0, interpolated), "CVodeGetDky", tb);
   };
+  struct StepEnd {
+    bool valid = false;
+    Readings readings;
+    std::vector<double> g;  ///< the root functions
+  } end;
+  end.g.assign(g_prev.size(), 1.0);
   while (t < t_end - eps_t) {
     if (InterruptRequested()) {
       fail(SimulationStatus::kInterrupted,
@@ -988,6 +1009,16 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
     // functions are checked there too, as CVODE does at output times in its normal mode: a
     // sign change that a long step hides (a friction element that sticks and breaks away
     // within one step) is located on the interpolant and handled as a root of the step.
+    // When the step passes output points and CVODE's root functions left the elements
+    // evaluated at its end, the step end's readings are taken now: the output points' evaluations
+    // on the interpolant replace that one, and the step end then needs no second evaluation of
+    // the same point unless an event or a row that reads the values needs the elements there.
+    end.valid = flag == CV_SUCCESS && !kinematic_root && next_output() < t_ret - eps_t &&
+                sys.IsEvaluatedAt(t_ret, N_VGetArrayPointer(cv.y));
+    if (end.valid) {
+      read(end.readings, true);
+      if (n_roots > 0) sys.Roots(end.g.data());
+    }
     bool failed = false, hidden_root = false;
     while (next_output() < t_ret - eps_t) {
       const double t_out = next_output();
@@ -1035,12 +1066,19 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
     }
     t = t_ret;
     report.time = t;
-    if (!sys.Evaluate(t, N_VGetArrayPointer(cv.y), nullptr)) {
+    // The step end is sampled from the readings taken above when it has them; the elements are
+    // then evaluated there again (the same values) only for an event or a row that reads them.
+    const bool from_readings = end.valid && !hidden_root;
+    const bool on_output = std::abs(t - next_output()) <= eps_t;
+    const bool time_event = event_ahead && std::abs(t - t_event) <= eps_t && t < t_end - eps_t;
+    const bool event = flag == CV_ROOT_RETURN || hidden_root || kinematic_root || time_event;
+    if (from_readings) record(t, end.readings, true);
+    const bool evaluate = !from_readings || event || (on_output && reads_values);
+    if (evaluate && !sys.Evaluate(t, N_VGetArrayPointer(cv.y), nullptr)) {
       fail(SimulationStatus::kModelError, sys.error(), t);
       break;
     }
-    sample(t);
-    const bool on_output = std::abs(t - next_output()) <= eps_t;
+    if (!from_readings) sample(t);
     if (flag == CV_ROOT_RETURN || hidden_root || kinematic_root) {
       if (kinematic_root) {
         root_info = kinematic_info;
@@ -1076,6 +1114,11 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
           break;
         }
         ++report.statistics.continuous_roots;
+        // The row after the kink reads the evaluation with the new discrete variables.
+        if (reads_values && !sys.Evaluate(t, N_VGetArrayPointer(cv.y), nullptr)) {
+          fail(SimulationStatus::kModelError, sys.error(), t);
+          break;
+        }
         write_row(t);
         report.events.push_back({t, "state", "", what});
         if (static_cast<int>(report.events.size()) > options.max_events) {
@@ -1095,7 +1138,7 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
         break;
       }
       if (on_output) ++k;
-    } else if (event_ahead && std::abs(t - t_event) <= eps_t && t < t_end - eps_t) {
+    } else if (time_event) {
       if (!handle_event(t, "time", "input", nullptr)) break;
       if (on_output) ++k;
     } else if (on_output) {
@@ -1103,7 +1146,17 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
       ++k;
       steps_since_output = 0;
     }
-    if (n_roots > 0) {  // the root functions where the next step starts (cached evaluation)
+    if (n_roots > 0 && from_readings && !event) {  // the step end's, read above
+      g_prev.swap(end.g);
+      g_prev_time = t;
+    } else if (n_roots > 0 && kinematic_root && pending.active && pending.flag != CV_ROOT_RETURN &&
+               next_output() >= pending.t - eps_t) {
+      // After a kink at a kinematic root inside a step, the rest of the step returns next with
+      // no output point on the way: only the kinematic roots are compared there (the others
+      // are the step end's), and those are functions of the states (System::KinematicRoots).
+      sys.KinematicRoots(t, N_VGetArrayPointer(cv.y), g_prev.data());
+      g_prev_time = t;
+    } else if (n_roots > 0) {  // the root functions where the next step starts (cached evaluation)
       if (!sys.Evaluate(t, N_VGetArrayPointer(cv.y), nullptr)) {
         fail(SimulationStatus::kModelError, sys.error(), t);
         break;

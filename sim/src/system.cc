@@ -1879,13 +1879,14 @@ bool System::NeedsRestart(const int* root_info) const {
 
 bool System::HandleContinuousRoots(double t, const double* y, const int* root_info) {
   // The elements see the state of (t, y): the last evaluation when it was there (the step end
-  // just sampled), else a new one; then their discrete variables change and it is redone.
+  // just sampled), else a new one; then their discrete variables change, and the next
+  // Evaluate at (t, y) evaluates it afresh.
   if (!Evaluate(t, y, nullptr)) return false;
   for (auto& el : elements_)
     for (int k = 0; k < el->NumRoots(); ++k)
       if (root_info[el->root_offset + k] != 0) el->ContinuousRoot(k, eval_);
   cache_valid_ = false;
-  return Evaluate(t, y, nullptr);
+  return true;
 }
 
 void System::AfterEventRow() {

@@ -86,6 +86,9 @@ class System {
 
   /// Full evaluation at (t, y). ydot may be null. Returns false with `error` set on failure.
   bool Evaluate(double t, const double* y, double* ydot);
+  /// Whether the elements hold the evaluation of (t, y) (the last one, in the same segment):
+  /// Evaluate(t, y, nullptr) would then return at once, and the readings below are its.
+  bool IsEvaluatedAt(double t, const double* y) const { return cache_enabled_ && AtLastEvaluation(t, y); }
   /// Root functions (after Evaluate at the same point).
   void Roots(double* g) const;
   /// Whether root k is kinematic: a root without restart that is a function of the node angles
@@ -106,7 +109,8 @@ class System {
   void AfterEventRow();
 
   /// A root without restart (Element::RootRestarts false) was crossed at (t, y): the elements
-  /// whose roots fired update their discrete variables (Element::ContinuousRoot).
+  /// whose roots fired update their discrete variables (Element::ContinuousRoot). The elements
+  /// are left unevaluated: Evaluate(t, y) gives the values with the new discrete variables.
   bool HandleContinuousRoots(double t, const double* y, const int* root_info);
   /// True when some fired root needs the full event treatment.
   bool NeedsRestart(const int* root_info) const;

@@ -524,5 +524,40 @@ TEST(OutputSink, ASinkThatDoesNotReadTheValuesGetsTheSameRowsAndResults) {
   EXPECT_EQ(lean.energy.source_work, full.energy.source_work);
 }
 
+// A step that passes output points is evaluated there on the interpolant after CVODE's own
+// evaluation of its end; the step end's readings (dissipated powers, peak torques, root
+// functions) are taken from that evaluation before the output points replace it. The steps do
+// not depend on the output grid, so a grid finer than every step (each step end read that way)
+// and one with no point inside the run (each step end evaluated where it is sampled) must give
+// the same steps, events and passivity monitor, and no smaller peak.
+TEST(OutputSink, StepEndsReadBeforeTheOutputPointsAreThoseOfTheirOwnEvaluation) {
+  SimulationOptions o;
+  o.stop_time = 2.0;
+  o.relative_tolerance = 1e-6;
+  o.passivity_tolerance = 1e-12;  // every sample with negative power starts an episode
+  TimesOnlySink fine_rows, no_rows;
+  o.output_interval = 1e-5;
+  const SimulationReport fine = Simulator(DrivenSpringWithBearingFriction(8, 1.5)).Run(o, fine_rows);
+  o.output_interval = 10.0;
+  const SimulationReport coarse = Simulator(DrivenSpringWithBearingFriction(8, 1.5)).Run(o, no_rows);
+  ASSERT_TRUE(fine.ok()) << fine.FullReport();
+  ASSERT_TRUE(coarse.ok()) << coarse.FullReport();
+  EXPECT_GT(fine_rows.times.size(), 10 * static_cast<std::size_t>(fine.statistics.steps));
+  EXPECT_EQ(fine.statistics.steps, coarse.statistics.steps);
+  EXPECT_EQ(fine.statistics.rhs_evaluations, coarse.statistics.rhs_evaluations);
+  ASSERT_EQ(fine.events.size(), coarse.events.size());
+  EXPECT_GT(fine.events.size(), 4u);  // stick/slip: the root functions read at the step ends matter
+  for (std::size_t i = 0; i < fine.events.size(); ++i) {
+    EXPECT_EQ(fine.events[i].time, coarse.events[i].time) << i;
+    EXPECT_EQ(fine.events[i].what, coarse.events[i].what) << i;
+  }
+  EXPECT_GT(coarse.passivity.power_scale, 0.0);
+  EXPECT_EQ(fine.passivity.power_scale, coarse.passivity.power_scale);  // the largest of every step end's
+  EXPECT_EQ(fine.passivity.BriefReport(), coarse.passivity.BriefReport());
+  ASSERT_EQ(fine.peak_torques.size(), coarse.peak_torques.size());
+  for (std::size_t i = 0; i < fine.peak_torques.size(); ++i)
+    EXPECT_GE(std::abs(fine.peak_torques[i].tau), std::abs(coarse.peak_torques[i].tau)) << fine.peak_torques[i].element;
+}
+
 }  // namespace
 }  // namespace highlift::sim
