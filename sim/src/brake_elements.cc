@@ -218,7 +218,12 @@ void StribeckFriction::Forces(Eval& e) {
 // support).
 void StribeckFriction::Constraints(Eval& e) {
   rigid = stuck = -1;
-  if (frictionless) return;
+  // One node and no stuck mode (frictionless or regularised: not switching, so the mode never
+  // changes): never a constraint, and the system may leave this phase out like a default.
+  if (!split && !IsSwitching()) {
+    unused_phases |= kConstraintsPhase;
+    return;
+  }
   if (split) {
     Constraint& c = e.NewConstraint(index);
     c.row = {{a, 1.0}, {b, -1.0}};

@@ -61,7 +61,7 @@ class ShaftBrake : public msl::Friction {
 /// constraint whose multiplier is tau_load; the sign of tau_load (`quadrant`) makes the loss
 /// linear in the multiplier and is switched at its zero crossings. Otherwise the two flanges are
 /// one node (as MSL BearingFriction). With J > 0 it is the LossyInertia (J on flange_a).
-class StribeckFriction : public msl::Friction {
+class StribeckFriction final : public msl::Friction {
  public:
   StribeckFriction(const NetworkElement& e, bool with_inertia);
 

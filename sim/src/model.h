@@ -157,6 +157,11 @@ struct Eval {
   bool initial = false;
   const double* y = nullptr;
   double* ydot = nullptr;  ///< may be null (output evaluation)
+  /// The number of the point: System counts its evaluation points from 1 (each setting of the
+  /// angles and speeds from a state); within one point the phases of an evaluation may reuse a
+  /// value an element computed in an earlier phase from the same inputs. 0: not counted (an
+  /// Eval set up by hand), nothing is reused.
+  std::uint64_t point = 0;
   std::vector<double> phi, w, acc, force;  ///< per node
   std::vector<double> signal;              ///< per signal output slot (Element::signal_offset)
   /// First and second time derivatives of the signals, per slot (NaN where a block cannot
@@ -356,7 +361,8 @@ class Element {
   /// signal blocks and outputs, not a law that acts in the same solve (an algebraic loop).
   virtual bool SignalsAfterSolve() const { return false; }
   // The defaults do nothing and say so (unused_phases): after the first evaluation the system
-  // calls each phase only on the elements that implement it.
+  // calls each phase only on the elements that implement it. A law that does nothing in a phase
+  // for good (by its parameters, in every mode it can reach) may say so too.
   virtual void Forces(Eval& e) {
     (void)e;
     unused_phases |= kForcesPhase;

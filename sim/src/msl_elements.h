@@ -837,8 +837,23 @@ class LossyGear : public GearBase {
     if (!Regularized()) return mode;
     return WA(e) >= 0 ? kForward : kBackward;
   }
-  // tau_loss = k * tau_a + c0 in the active quadrant.
+  // tau_loss = k * tau_a + c0 in the active quadrant. The forces, the constraint and the loss
+  // after the solve all need it at the same point: computed once per point, mode and quadrant
+  // (the quadrant may change between the passes of one evaluation, Reassume).
   void Law(const Eval& e, double& k, double& c0) const {
+    if (e.point != 0 && e.point == law_point_ && mode == law_mode_ && quadrant == law_quadrant_) {
+      k = law_k_;
+      c0 = law_c0_;
+      return;
+    }
+    LawAt(e, k, c0);
+    law_point_ = e.point;
+    law_mode_ = mode;
+    law_quadrant_ = quadrant;
+    law_k_ = k;
+    law_c0_ = c0;
+  }
+  void LawAt(const Eval& e, double& k, double& c0) const {
     const Coefficients c = RollingCoefficients(e);
     const bool q_pos = quadrant >= 0;
     if (Direction(e) == kForward) {
@@ -1081,6 +1096,9 @@ class LossyGear : public GearBase {
   double tau_a = 0.0, tau_loss = 0.0;
   mutable Memo<1> smooth_memo_;  ///< Smooth at the last w_a
   mutable double smooth_ = 0.0;
+  mutable std::uint64_t law_point_ = 0;  ///< Law at this point (Eval::point), mode and quadrant
+  mutable int law_mode_ = 0, law_quadrant_ = 0;
+  mutable double law_k_ = 0.0, law_c0_ = 0.0;
 };
 
 // ------------------------------------------------------------------------------------------

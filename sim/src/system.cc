@@ -1301,12 +1301,21 @@ void System::EvaluateSignals(const std::vector<int>& order) {
 }
 
 bool System::AtLastEvaluation(double t, const double* y) const {
-  return cache_valid_ && t == cache_t_ && t_segment_ == cache_segment_ && std::equal(y, y + n_states_, cache_y_.begin());
+  if (!cache_valid_ || t != cache_t_ || t_segment_ != cache_segment_) return false;
+  // std::equal's comparisons four states at a time: one branch per four (a hit compares all).
+  const double* c = cache_y_.data();
+  int i = 0;
+  for (; i + 4 <= n_states_; i += 4)
+    if ((y[i] != c[i]) | (y[i + 1] != c[i + 1]) | (y[i + 2] != c[i + 2]) | (y[i + 3] != c[i + 3])) return false;
+  for (; i < n_states_; ++i)
+    if (y[i] != c[i]) return false;
+  return true;
 }
 
 void System::SetKinematics(double t, const double* y) {
   cache_valid_ = false;
   Eval& e = eval_;
+  ++e.point;
   e.t = t;
   e.t_segment = t_segment_;
   e.y = y;
@@ -1572,6 +1581,7 @@ bool System::SolveSchur(Group& g) {
   double* S = g.lu_work.data();     // m x m, column-major
   double* r = g.x.data() + nn;      // right-hand side, then lambda
   const double* inverse_J = g.inverse_J.data();
+  if (m == 1) return SolveSchurOne(g);
   for (int i = 0; i < nn; ++i) acc0[i] = e.force[g.nodes[i]] * inverse_J[i];
   for (int k = 0; k < m; ++k) {
     const auto* ck = e.constraints[g.rows[k]].column.begin();
@@ -1612,6 +1622,49 @@ bool System::SolveSchur(Group& g) {
     }
   }
   for (int i = 0; i < nn; ++i) e.acc[g.nodes[i]] = acc0[i];
+  return true;
+}
+
+// SolveSchur for one constraint (a gear, a tie: most groups), the same operations in the same
+// order as the general loops: the column of the constraint scattered into the group's nodes,
+// the 1 x 1 Schur complement and its right-hand side, the multiplier, the accelerations. Written
+// out with the group's arrays in locals, the general version spends more on its loops (and a
+// memset per constraint) than on the arithmetic.
+bool System::SolveSchurOne(Group& g) {
+  Eval& e = eval_;
+  const int nn = static_cast<int>(g.nodes.size());
+  double* const acc0 = g.x.data();
+  double* const column = g.b.data();
+  const double* const inverse_J = g.inverse_J.data();
+  const int* const nodes = g.nodes.data();
+  const double* const force = e.force.data();
+  for (int i = 0; i < nn; ++i) {
+    acc0[i] = force[nodes[i]] * inverse_J[i];
+    column[i] = 0.0;
+  }
+  Constraint& c = e.constraints[g.rows[0]];
+  const std::pair<int, double>* const ck = c.column.begin();
+  const std::pair<int, double>* const rk = c.row.begin();
+  const int *const column_entry = g.column_entry.data(), *const column_local = g.column_local.data();
+  const int *const row_entry = g.row_entry.data(), *const row_local = g.row_local.data();
+  const int column_end = g.column_begin[1], row_end = g.row_begin[1];
+  for (int p = 0; p < column_end; ++p) {
+    const int i = column_local[p];
+    column[i] += ck[column_entry[p]].second * inverse_J[i];
+  }
+  double s = 0.0;
+  for (int p = 0; p < row_end; ++p) s += rk[row_entry[p]].second * column[row_local[p]];
+  double v = c.rhs;
+  for (int p = 0; p < row_end; ++p) v -= rk[row_entry[p]].second * acc0[row_local[p]];
+  if (!(std::abs(s) > 1e-12 * std::max(0.0, std::abs(s)))) return false;
+  const double lambda = v / s;
+  c.lambda = lambda;
+  for (int p = 0; p < column_end; ++p) {
+    const int i = column_local[p];
+    acc0[i] += ck[column_entry[p]].second * lambda * inverse_J[i];
+  }
+  double* const acc = e.acc.data();
+  for (int i = 0; i < nn; ++i) acc[nodes[i]] = acc0[i];
   return true;
 }
 

@@ -249,6 +249,7 @@ class System {
     std::vector<int> row_begin, row_entry, row_local;
   };
   bool SolveSchur(Group& g);
+  bool SolveSchurOne(Group& g);  ///< SolveSchur of a group with one constraint
   /// The first part of every evaluation: node angles and speeds from y (the massless nodes'
   /// speeds solved), hydraulic pressures, forces and accelerations cleared.
   void SetKinematics(double t, const double* y);
