@@ -195,13 +195,13 @@ class System {
   std::vector<Node> nodes_;
   // The nodes' state indices in compact arrays, for the loops of every evaluation (a Node holds
   // its name and nominal values too: walking nodes_ there reads four times the memory).
-  std::vector<int> node_s_phi_, node_s_w_;  ///< per node; -1 for a ground node
   std::vector<double> node_phi0_;           ///< per node: the angle of a ground node
   struct StateNode {
     int node, s_phi, s_w;
     bool massless;
   };
   std::vector<StateNode> state_nodes_;  ///< the nodes that are not ground, in node order
+  std::vector<int> ground_nodes_;       ///< the ground nodes, in node order
   std::map<std::string, int> port_node_;  ///< flange "element.port" -> node (flat and composite)
   std::vector<int> massless_;                        ///< massless nodes
   std::vector<std::vector<int>> massless_elements_;  ///< the compliant elements on each
