@@ -1,14 +1,17 @@
 // The evaluation caches of the simulator's internals (sim/src/model.h): Memo recognises the
 // arguments of the last call bit for bit; ConstraintEntries keeps up to four entries inside the
-// constraint and spills more, in order. The simulator's results do not depend on either (the
+// constraint and spills more, in order; LossyGear's law is reused only within one evaluation
+// point (Eval::point), mode and quadrant. The simulator's results do not depend on either (the
 // campaign and peak tests compare them); these pin down the cases the models rarely reach.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
+#include <string>
 #include <utility>
 
 #include "model.h"
+#include "msl_elements.h"
 
 namespace highlift::sim::detail {
 namespace {
@@ -52,6 +55,54 @@ TEST(ConstraintEntries, InlineAndSpilledEntriesKeepTheirOrder) {
   ASSERT_EQ(entries.size(), 5u);
   expected = 11;
   for (const auto& [node, coef] : entries) EXPECT_EQ(node, expected++);
+}
+
+// The phases of one evaluation (forces, constraint, loss after the solve) share the law of a
+// point; a new point, another quadrant or mode computes it afresh, and an Eval set up by hand
+// (point 0) never reuses it. (System does not change the speeds within a point; the test does,
+// to see which law is returned.)
+TEST(LossyGearLaw, ReusedOnlyAtTheSamePointModeAndQuadrant) {
+  model::NetworkElement element;
+  element.id = "gear";
+  element.type = "LossyGear";
+  element.parameters = {{{"ratio", 2.0}}, {{"lossTable", {{0, 0.9, 0.8, 2, 1}, {10, 0.5, 0.4, 4, 3}}}}};
+  msl::LossyGear gear(element);
+  gear.Bind([](const std::string& port) { return port == "flange_a" ? 0 : (port == "flange_b" ? 1 : 2); },
+            [](const std::string&) { return -1; });
+  gear.mode = msl::kForward;
+  gear.quadrant = 1;
+  Eval e;
+  e.phi = {0.0, 0.0, 0.0};
+  e.w = {1.0, 0.5, 0.0};
+  auto law = [&] {
+    double k = 0.0, c0 = 0.0;
+    gear.Law(e, k, c0);
+    return std::pair{k, c0};
+  };
+  auto fresh = [&] {
+    double k = 0.0, c0 = 0.0;
+    gear.LawAt(e, k, c0);
+    return std::pair{k, c0};
+  };
+  const auto slow = law();
+  e.w[0] = 5.0;
+  const auto fast = fresh();
+  ASSERT_NE(fast, slow);   // the loss table differs at the two speeds
+  EXPECT_EQ(law(), fast);  // point 0: computed afresh
+
+  e.point = 1;
+  EXPECT_EQ(law(), fast);
+  e.w[0] = 1.0;
+  EXPECT_EQ(law(), fast);  // the same point: the law of its first phase
+  gear.quadrant = -1;
+  EXPECT_EQ(law(), fresh());  // a pass after Reassume flipped the quadrant
+  EXPECT_NE(law(), slow);
+  gear.mode = msl::kBackward;
+  EXPECT_EQ(law(), fresh());
+  gear.mode = msl::kForward;
+  gear.quadrant = 1;
+  e.point = 2;
+  EXPECT_EQ(law(), slow);  // a new point
 }
 
 }  // namespace
