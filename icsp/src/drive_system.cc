@@ -10,6 +10,7 @@
 #include <optional>
 #include <queue>
 #include <set>
+#include <unordered_map>
 
 #include "highlift/core/catalogue.h"
 #include "highlift/core/units.h"
@@ -547,6 +548,7 @@ class Builder {
       // enclosures); the laws below name it.
       names.push_back({Ip, p + "polar_moment"});
       Define(p + "polar_moment", "m^4", "tube polar moment Ip = pi/32 (D^4 - d^4) = pi/8 (D^2 + d^2)(D - t) t", Ip);
+      PolarMomentIdentity(s);
     }
     // Stiffness and inertia as the reduced models take them (its type's lumped law): given
     // values override the tube.
@@ -565,6 +567,30 @@ class Builder {
     if (HasParam(s, "allowable_shear_stress"))
       Define(p + "torque_capacity", "N*m", "torque at the allowable shear stress, tau_allow 2 Ip / D",
              model::TubeTorqueCapacity(R("allowable_shear_stress"), D, Var(p + "polar_moment")));
+  }
+
+  /// A requirement may write a tube's polar moment out in D and t, as the examples' capacity
+  /// requirements do (`tau_allow * 0.19634954 * (D^4 - (D - 2 * t)^4) / D`). HC4 then projects
+  /// the requirement's lower bound onto D and t one at a time, which cuts each only at its far
+  /// end, and the tube's stiffness, inertia and capacity (each read through Ip) keep the lower
+  /// ends of the box's thinnest corner however large a load the tube must carry. The identity
+  /// D^4 - d^4 = 4 (D^2 + d^2)(D - t) t (d = D - 2t) is exact: 4 Ip / k with k the constant of
+  /// TubePolarMoment (pi/8, enclosed as its law reads it). Requirements() puts it in, so the
+  /// requirement bounds Ip, and through it c = G Ip / L, J = rho Ip L and tau_allow 2 Ip / D.
+  void PolarMomentIdentity(const Component& s) {
+    const std::string D = s.id + ".outer_diameter", t = s.id + ".wall_thickness", Ip = s.id + ".polar_moment";
+    const ExprId written = ParseExpression(net(), D + "^4 - (" + D + " - 2 * " + t + ")^4", "the tube law of " + s.id);
+    const ExprId named = ParseExpression(net(), "4 * " + Ip + " / " + Sym(std::numbers::pi / 8.0).Text(),
+                                         "the tube law of " + s.id);
+    identities_.emplace(written.value, named);
+    // The identity also as a law of Ip: through the written form HC4 projects Ip's lower bound
+    // onto D as sharply as it projected the requirement before (iterated, D^4 >= b + (D - 2t)^4
+    // climbs to the least D that carries the load at the thickest wall), which the factored law
+    // does not give back (docs/performance.md); the factored law encloses Ip more tightly forward.
+    net().AddConstraint(named, Relation::kEqual, written,
+                        {s.id + ".polar_moment", "tube polar moment, also written as 4 Ip / (pi/8) = D^4 - d^4",
+                         ConstraintRole::kPhysics, ""});
+    ++out_.physics_constraints;
   }
 
   void Actuator(const Component& g) {
@@ -1128,7 +1154,10 @@ class Builder {
     for (const Requirement& r : project_.requirements) {
       ConstraintId id;
       try {
-        id = AddConstraintText(net(), r.expression, {r.id, r.description, ConstraintRole::kRequirement}, r.where);
+        // As AddConstraintText, with the identities of the laws put in (PolarMomentIdentity).
+        const ParsedConstraint pc = ParseConstraint(net(), r.expression, "requirement '" + r.id + "'", r.where, {}, true);
+        id = net().AddConstraint(net().Replace(pc.lhs, identities_), pc.relation, net().Replace(pc.rhs, identities_),
+                                 {r.id, r.description, ConstraintRole::kRequirement, r.expression});
       } catch (const InputError& e) {
         if (peaks_error_.empty() ||
             (r.expression.find("peak.") == std::string::npos && r.expression.find("travel_time.") == std::string::npos))
@@ -1156,6 +1185,8 @@ class Builder {
   std::optional<reduced_models::PeakStructure> peaks_;  // the sizing cases of reduced_models
   std::map<std::string, int> node_index_;               // component id -> node of peaks_
   std::string peaks_error_;                             // why there are no sizing cases
+  std::unordered_map<int, ExprId> identities_;  // node as a requirement may write it -> an equal node
+                                                // over the derived variables (PolarMomentIdentity)
 };
 
 }  // namespace

@@ -201,6 +201,41 @@ ExprId Network::PowReal(ExprId a, double p) {
   return Intern(n);
 }
 
+ExprId Network::Replace(ExprId e, const std::unordered_map<int, ExprId>& replacements) {
+  HIGHLIFT_CHECK(e.value >= 0 && e.value < num_nodes(), "icsp: expression id out of range");
+  if (replacements.empty()) return e;
+  // Post-order over the DAG below e (each node once), operands rebuilt before their parents.
+  std::unordered_map<int, ExprId> done;
+  std::vector<std::pair<int, bool>> stack{{e.value, false}};
+  while (!stack.empty()) {
+    const auto [id, expanded] = stack.back();
+    stack.pop_back();
+    if (done.count(id)) continue;
+    if (const auto it = replacements.find(id); it != replacements.end()) {
+      done.emplace(id, it->second);
+      continue;
+    }
+    const ExprNode n = nodes_[id];
+    const bool leaf = n.op == Op::kVar || n.op == Op::kConst;
+    const bool binary = !leaf && n.b >= 0;
+    if (leaf) {
+      done.emplace(id, ExprId{id});
+      continue;
+    }
+    if (!expanded) {
+      stack.push_back({id, true});
+      stack.push_back({n.a, false});
+      if (binary) stack.push_back({n.b, false});
+      continue;
+    }
+    ExprNode m = n;
+    m.a = done.at(n.a).value;
+    if (binary) m.b = done.at(n.b).value;
+    done.emplace(id, (m.a == n.a && m.b == n.b) ? ExprId{id} : Intern(m));
+  }
+  return done.at(e.value);
+}
+
 void Network::IndexConstraint(Constraint& c, std::vector<int> vars_of_monotone) {
   const int id = static_cast<int>(constraints_.size());
   if (visit_stamp_.size() < nodes_.size()) visit_stamp_.resize(nodes_.size() * 2 + 16, 0);

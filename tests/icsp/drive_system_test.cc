@@ -6,7 +6,9 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <random>
+#include <tuple>
 
 #include "common/run_cli.h"
 #include "highlift/core/project_io.h"
@@ -105,7 +107,8 @@ TEST(DriveSystem, ExtensionTimeIncludesTheRampsOfTheSpeedProfile) {
 
 /// icsp and `highlift peak` (reduced_models::AnalysePeaks) compute the same sizing cases: for every
 /// case the network builds, the enclosure over the project domains contains reduced_models'
-/// nominal value and matches its enclosure, and at the nominal values it collapses onto it.
+/// nominal value and lies within its enclosure, within 3 %, and at the nominal values it collapses
+/// onto it.
 void ExpectAgreementWithPeak(const std::string& file, int cases) {
   SCOPED_TRACE(file);
   constexpr double kTolerance = 1e-6;  // relative; both sides widen eigenvalues by 1e-9
@@ -129,13 +132,18 @@ void ExpectAgreementWithPeak(const std::string& file, int cases) {
     const Interval torque = In(net, wide, p + "torque");
     EXPECT_LE(torque.lower(), pc.tau_dynamic.nominal);
     EXPECT_GE(torque.upper(), pc.tau_dynamic.nominal);
-    EXPECT_LE(torque.lower(), pc.tau_dynamic.bounds.lo * (1 + kTolerance));
-    EXPECT_GE(torque.upper(), pc.tau_dynamic.bounds.hi * (1 - kTolerance));
-    EXPECT_TRUE(near(torque.lower(), pc.tau_dynamic.bounds.lo)) << torque.lower() << " vs " << pc.tau_dynamic.bounds.lo;
-    EXPECT_TRUE(near(torque.upper(), pc.tau_dynamic.bounds.hi)) << torque.upper() << " vs " << pc.tau_dynamic.bounds.hi;
-    const Interval speed = In(net, wide, p + "speed");
-    EXPECT_TRUE(near(speed.lower(), pc.w_max_bounds.lo)) << speed.lower() << " vs " << pc.w_max_bounds.lo;
-    EXPECT_TRUE(near(speed.upper(), pc.w_max_bounds.hi)) << speed.upper() << " vs " << pc.w_max_bounds.hi;
+    // Within peak's enclosures and close to them: the network encloses each tube's Ip by both of
+    // its exact forms (the factored law and D^4 - d^4), peak by the factored law alone, which
+    // overestimates the range of Ip over a wall domain (t occurs three times), so the network's
+    // enclosures of the tubes' stiffness and inertia, and with them of w and w w1 J*, may be
+    // narrower (by up to 2.1 % on the examples).
+    for (const auto& [name, ours, theirs] : std::vector<std::tuple<std::string, Interval, Domain>>{
+             {"torque", torque, pc.tau_dynamic.bounds}, {"speed", In(net, wide, p + "speed"), pc.w_max_bounds}}) {
+      EXPECT_GE(ours.lower(), theirs.lo * (1 - kTolerance)) << name;
+      EXPECT_LE(ours.upper(), theirs.hi * (1 + kTolerance)) << name;
+      EXPECT_NEAR(ours.lower(), theirs.lo, 0.03 * theirs.lo) << name;
+      EXPECT_NEAR(ours.upper(), theirs.hi, 0.03 * theirs.hi) << name;
+    }
     // At the nominal values: the same w, w1, J*, c*, tau and static torque.
     for (const auto& [name, value] : std::vector<std::pair<std::string, double>>{
              {"speed", pc.w_max}, {"omega", pc.omega}, {"inertia", pc.J_star}, {"stiffness", pc.c_star},
@@ -363,6 +371,56 @@ TEST(DriveSystem, InfeasibleVariantNamesTheConflictingRequirements) {
   EXPECT_NE(text.find("cannot hold for any values in the narrowed domains"), std::string::npos) << text;
   ASSERT_FALSE(r.explanation.chain.empty());
   EXPECT_EQ(net.network.constraint(ConstraintId{r.explanation.chain.front().constraint}).info.label, "extension_time");
+}
+
+// One titanium tube, 2 m, D in [20, 60] mm and t in [0.5, 4] mm, under a capacity requirement
+// written in D and t as the examples write theirs (1.5 x 400 N*m below the ultimate torque,
+// tau_allow pi/16 (D^4 - d^4) / D with pi/16 rounded to 0.19634954).
+Project OneTubeUnderAWrittenCapacityRequirement() {
+  return ParseProject(R"json({
+  "format": "highlift-project/1",
+  "name": "one tube",
+  "components": [
+    {"id": "pdu", "type": "pdu", "parameters": {"motor_count": 2, "motor_inertia": "3e-4 kg*m^2",
+      "ratio": 20, "gear_inertia": "0.02 kg*m^2"}},
+    {"id": "shaft_1", "type": "torque_shaft", "labels": {"side": "left"},
+     "parameters": {"length": "2 m",
+                    "outer_diameter": {"value": 40, "min": 20, "max": 60, "unit": "mm"},
+                    "wall_thickness": {"value": 2, "min": 0.5, "max": 4, "unit": "mm"},
+                    "density": "4420 kg/m^3", "shear_modulus": {"value": 44, "min": 43, "max": 51, "unit": "GPa"},
+                    "allowable_shear_stress": {"value": 550, "min": 500, "max": 600, "unit": "MPa"}}},
+    {"id": "wtb", "type": "wing_tip_brake", "labels": {"side": "left"}, "parameters": {"inertia": "5e-4 kg*m^2"}}
+  ],
+  "connections": [["pdu.left", "shaft_1.a"], ["shaft_1.b", "wtb.a"]],
+  "requirements": [
+    {"id": "capacity", "description": "1.5 x 400 N*m below the ultimate torque",
+     "expression": "1.5 * 400 N*m <= shaft_1.allowable_shear_stress * 0.19634954 * (shaft_1.outer_diameter^4 - (shaft_1.outer_diameter - 2 * shaft_1.wall_thickness)^4) / shaft_1.outer_diameter"}
+  ]
+})json",
+                      "one_tube.json");
+}
+
+// The requirement reads the tube's polar moment (D^4 - d^4 = 32/pi Ip exactly), so a load the tube
+// must carry bounds its stiffness from below: Ip >= 1.5 T D / (tau_allow 0.19634954 32/pi) at the
+// least D and the largest tau_allow, c = G Ip / L at the least G. Projected onto D and t one at a
+// time the requirement cuts neither (the thinnest wall at the largest D and the smallest D with
+// the thickest wall both carry the load), and c kept its value at their thinnest corner, 3.4
+// times lower.
+TEST(DriveSystem, AWrittenCapacityRequirementBoundsTheTubeStiffnessFromBelow) {
+  const CheckResult r = CheckDriveSystem(BuildDriveSystemNetwork(OneTubeUnderAWrittenCapacityRequirement()));
+  ASSERT_TRUE(r.feasible) << r.report.BriefReport();
+  const double D = 0.020, t = 0.0005, L = 2.0, G = 43e9, tau = 600e6, T = 1.5 * 400.0;
+  EXPECT_NEAR(Final(r, "shaft_1.outer_diameter").lower(), 1e3 * D, 1e-12);  // mm: not cut
+  EXPECT_NEAR(Final(r, "shaft_1.wall_thickness").lower(), 1e3 * t, 1e-12);
+  const double ip = T * D / (tau * 0.19634954 * 32 / M_PI);
+  const Interval c = Final(r, "shaft_1.c");
+  EXPECT_NEAR(c.lower(), G * ip / L, 1e-9 * G * ip / L);
+  EXPECT_LE(c.lower(), G * ip / L);  // an enclosure: never above the analytic bound
+  const double corner = G * M_PI / 32 * (std::pow(D, 4) - std::pow(D - 2 * t, 4)) / L;
+  EXPECT_GT(c.lower(), 3 * corner);
+  // The polar moment itself and the inertia J = rho Ip L follow.
+  EXPECT_NEAR(Final(r, "shaft_1.polar_moment").lower(), ip, 1e-9 * ip);
+  EXPECT_NEAR(Final(r, "shaft_1.J").lower(), 4420.0 * ip * L, 1e-9 * 4420.0 * ip * L);
 }
 
 TEST(CheckCommand, FeasibleProjectExitsZero) {

@@ -26,6 +26,23 @@ TEST(Network, SharedSubexpressionIsOneNode) {
   EXPECT_EQ(mul_nodes, 1);
 }
 
+TEST(Network, ReplaceRebuildsOnlyWhatContainsAReplacedNode) {
+  Network net;
+  net.AddVariable("x", Interval(0, 1));
+  net.AddVariable("y", Interval(0, 1));
+  net.AddVariable("s", Interval(0, 2));
+  const ExprId sum = ParseExpression(net, "x + y", "");
+  const ExprId e = ParseExpression(net, "(x + y) * sqrt(x) + (x + y)", "");
+  const ExprId replaced = net.Replace(e, {{sum.value, ParseExpression(net, "s", "")}});
+  EXPECT_EQ(net.ExprText(replaced), net.ExprText(ParseExpression(net, "s * sqrt(x) + s", "")));
+  EXPECT_EQ(replaced, ParseExpression(net, "s * sqrt(x) + s", ""));  // hash-consed: the same node
+  const ExprId untouched = ParseExpression(net, "sqrt(x) * y", "");
+  const int before = net.num_nodes();
+  EXPECT_EQ(net.Replace(untouched, {{sum.value, ParseExpression(net, "s", "")}}), untouched);
+  EXPECT_EQ(net.num_nodes(), before);
+  EXPECT_EQ(net.Replace(e, {}), e);
+}
+
 TEST(Network, ScopesAndAdjacency) {
   Network net;
   const VariableId x = net.AddVariable("x", Interval(0, 1));

@@ -131,6 +131,12 @@ class Network {
   ExprId Sqrt(ExprId a) { return Unary(Op::kSqrt, a); }
   int num_nodes() const { return static_cast<int>(nodes_.size()); }
   const ExprNode& node(ExprId e) const { return nodes_[e.value]; }
+  /// `e` with every node that is a key of `replacements` replaced by its value, the rest rebuilt
+  /// (hash-consed, so an unchanged subexpression is the same node). Sound only when each value
+  /// equals its key for every point of the network's solutions (an exact identity, e.g. a
+  /// polynomial and the derived variable that names it); the drive-system network uses it so that
+  /// a requirement written in a tube's D and t reads the tube's polar moment.
+  ExprId Replace(ExprId e, const std::unordered_map<int, ExprId>& replacements);
 
   /// Adds g OP 0.
   ConstraintId AddConstraint(ExprId g, Relation relation, ConstraintInfo info);
