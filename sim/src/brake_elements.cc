@@ -123,6 +123,7 @@ StribeckFriction::StribeckFriction(const NetworkElement& e, bool with_inertia)
   regularized = !frictionless && w_small > 0.0;
   if (frictionless) mode = msl::kFree;
   if (regularized) mode = msl::kForward;  // always "sliding": the smooth law has no stuck mode
+  smooth_one_node_ = regularized && !split;
 }
 
 std::vector<std::vector<std::string>> StribeckFriction::RigidFlanges() const {
@@ -177,6 +178,20 @@ double StribeckFriction::Tau0Max(const Eval& e) const {
 }
 
 void StribeckFriction::Forces(Eval& e) {
+  // Regularised with one node (the common case): the law of the general path below with the
+  // same operations (the mode, constant, left out of the memo's key; tanh(w/w_small) computed
+  // where the general path's Smooth memo would miss too, as both are keyed on the last w).
+  // tau takes the + 0.0 of AfterSolve here, which then has nothing left to do.
+  if (smooth_one_node_) {
+    const double w = e.w[a] - e.w[m];
+    if (!smooth_law_memo_.Same({w}))
+      law_ = SmoothSign(w / w_small) * (tau_C + tau_S * Decay(f_exp * std::abs(w))) + d_vis * w;
+    tau_stribeck = law_;
+    e.AddForce(a, -law_);
+    e.AddForce(m, law_);
+    tau = law_ + 0.0;
+    return;
+  }
   tau_stribeck = 0.0;
   if (frictionless) {
     tau = 0.0;
@@ -245,6 +260,13 @@ void StribeckFriction::Constraints(Eval& e) {
 }
 
 void StribeckFriction::AfterSolve(Eval& e) {
+  // One node and no stuck mode: Forces has set tau (0 when frictionless, tau_stribeck + 0.0
+  // when regularised), and the system may leave this phase out like a default.
+  if (!split && !IsSwitching()) {
+    tau = frictionless ? 0.0 : tau_stribeck + 0.0;
+    unused_phases |= kAfterSolvePhase;
+    return;
+  }
   if (rigid >= 0) tau_load = e.constraints[rigid].lambda;
   if (stuck >= 0) {
     tau = e.constraints[stuck].lambda;

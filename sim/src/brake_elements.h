@@ -128,6 +128,10 @@ class StribeckFriction final : public msl::Friction {
   mutable double smooth_ = 0.0;
   Memo<2> law_memo_;  // tau_stribeck at the last (w, mode)
   double law_ = 0.0;
+  // Regularised with one node (not split): the law depends on w alone and tau on nothing
+  // after the solve, so Forces takes a path of its own with its memo keyed on w.
+  bool smooth_one_node_ = false;
+  Memo<1> smooth_law_memo_;  // law_ at the last w (smooth_one_node_)
 };
 
 /// Boolean command to the normalized brake torque: applied = trigger or (latch and applied);

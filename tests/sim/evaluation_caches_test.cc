@@ -10,6 +10,8 @@
 #include <string>
 #include <utility>
 
+#include "brake_elements.h"
+#include "highlift/sim/network.h"
 #include "model.h"
 #include "msl_elements.h"
 
@@ -103,6 +105,58 @@ TEST(LossyGearLaw, ReusedOnlyAtTheSamePointModeAndQuadrant) {
   gear.quadrant = 1;
   e.point = 2;
   EXPECT_EQ(law(), slow);  // a new point
+}
+
+// A regularised StribeckFriction on one node (flange_a = flange_b) applies the smooth law
+// tanh(w/w_small)*(tau_C + tau_S*exp(-f_exp*|w|)) + d_vis*w computed afresh for every new w (the
+// same doubles, a -0 law too), sets tau (+0.0 as after the solve) in Forces, and leaves its
+// phase after the solve to the system; with the load loss (two nodes) it keeps that phase.
+TEST(StribeckFrictionLaw, OneNodeRegularisedTakesTauInForces) {
+  auto element = [](double eta_GE) {
+    Network scratch;
+    scratch.AddElement("StribeckFriction", "f",
+                       ElementParameters{{{"tau_C", 2.0}, {"tau_S", 1.5}, {"f_exp", 3.0}, {"d_vis", 0.25},
+                                          {"w_small", 0.1}, {"eta_GE", eta_GE}},
+                                         {}});
+    return scratch.elements().front();
+  };
+  StribeckFriction friction(element(1.0), false);
+  ASSERT_TRUE(friction.regularized);
+  ASSERT_FALSE(friction.split);
+  // flange_a and flange_b on node 0 (as one node after RigidFlanges), the support on node 1.
+  friction.Bind([](const std::string& port) { return port == "support" ? 1 : 0; },
+                [](const std::string&) { return -1; });
+  Eval e;
+  e.phi = {0.0, 0.0};
+  auto law = [](double w) {
+    return std::tanh(w / 0.1) * (2.0 + 1.5 * std::exp(-(3.0 * std::abs(w)))) + 0.25 * w;
+  };
+  for (double w : {0.03, -0.4, 0.03, 25.0, -0.0}) {
+    e.w = {w, 0.0};
+    e.force = {1.0, -1.0};
+    friction.Forces(e);
+    const double expected = law(w);
+    EXPECT_EQ(e.force[0], 1.0 - expected) << "w = " << w;
+    EXPECT_EQ(e.force[1], -1.0 + expected) << "w = " << w;
+    EXPECT_EQ(friction.tau_stribeck, expected);
+    EXPECT_EQ(friction.tau, expected + 0.0);
+  }
+  EXPECT_TRUE(std::signbit(friction.tau_stribeck));  // tanh(-0) = -0: the law keeps the sign
+  EXPECT_FALSE(std::signbit(friction.tau));          // tau as after the solve: +0
+  friction.AfterSolve(e);
+  EXPECT_FALSE(std::signbit(friction.tau));
+  EXPECT_TRUE(friction.unused_phases & Element::kAfterSolvePhase);
+
+  StribeckFriction lossy(element(0.9), false);
+  ASSERT_TRUE(lossy.split);
+  lossy.Bind([](const std::string& port) { return port == "flange_a" ? 0 : (port == "flange_b" ? 1 : 2); },
+             [](const std::string&) { return -1; });
+  e.phi = {0.0, 0.0, 0.0};
+  e.w = {0.2, 0.2, 0.0};
+  e.force = {0.0, 0.0, 0.0};
+  lossy.Forces(e);
+  lossy.AfterSolve(e);
+  EXPECT_FALSE(lossy.unused_phases & Element::kAfterSolvePhase);
 }
 
 }  // namespace
