@@ -14,6 +14,7 @@
 #include "highlift/core/project_io.h"
 #include "highlift/reduced_models/analyses.h"
 #include "highlift/reduced_models/sizing.h"
+#include "optimize/one_tube_chain.h"
 
 namespace highlift::icsp {
 namespace {
@@ -373,31 +374,23 @@ TEST(DriveSystem, InfeasibleVariantNamesTheConflictingRequirements) {
   EXPECT_EQ(net.network.constraint(ConstraintId{r.explanation.chain.front().constraint}).info.label, "extension_time");
 }
 
-// One titanium tube, 2 m, D in [20, 60] mm and t in [0.5, 4] mm, under a capacity requirement
-// written in D and t as the examples write theirs (1.5 x 400 N*m below the ultimate torque,
-// tau_allow pi/16 (D^4 - d^4) / D with pi/16 rounded to 0.19634954).
+// The optimize tests' one titanium tube (2 m, D in [20, 60] mm and t in [0.5, 4] mm, not design
+// variables here) with G and tau_allow uncertain, under a capacity requirement written in D and t
+// as the examples write theirs (1.5 x 400 N*m below the ultimate torque, tau_allow pi/16
+// (D^4 - d^4) / D with pi/16 rounded to 0.19634954).
 Project OneTubeUnderAWrittenCapacityRequirement() {
-  return ParseProject(R"json({
-  "format": "highlift-project/1",
-  "name": "one tube",
-  "components": [
-    {"id": "pdu", "type": "pdu", "parameters": {"motor_count": 2, "motor_inertia": "3e-4 kg*m^2",
-      "ratio": 20, "gear_inertia": "0.02 kg*m^2"}},
-    {"id": "shaft_1", "type": "torque_shaft", "labels": {"side": "left"},
-     "parameters": {"length": "2 m",
-                    "outer_diameter": {"value": 40, "min": 20, "max": 60, "unit": "mm"},
-                    "wall_thickness": {"value": 2, "min": 0.5, "max": 4, "unit": "mm"},
-                    "density": "4420 kg/m^3", "shear_modulus": {"value": 44, "min": 43, "max": 51, "unit": "GPa"},
-                    "allowable_shear_stress": {"value": 550, "min": 500, "max": 600, "unit": "MPa"}}},
-    {"id": "wtb", "type": "wing_tip_brake", "labels": {"side": "left"}, "parameters": {"inertia": "5e-4 kg*m^2"}}
-  ],
-  "connections": [["pdu.left", "shaft_1.a"], ["shaft_1.b", "wtb.a"]],
-  "requirements": [
-    {"id": "capacity", "description": "1.5 x 400 N*m below the ultimate torque",
-     "expression": "1.5 * 400 N*m <= shaft_1.allowable_shear_stress * 0.19634954 * (shaft_1.outer_diameter^4 - (shaft_1.outer_diameter - 2 * shaft_1.wall_thickness)^4) / shaft_1.outer_diameter"}
-  ]
-})json",
-                      "one_tube.json");
+  nlohmann::json j = testing::OneTubeChain();
+  nlohmann::json& shaft = j["components"][1]["parameters"];
+  shaft["outer_diameter"].erase("design");
+  shaft["wall_thickness"].erase("design");
+  shaft["shear_modulus"] = {{"value", 44}, {"min", 43}, {"max", 51}, {"unit", "GPa"}};
+  shaft["allowable_shear_stress"] = {{"value", 550}, {"min", 500}, {"max", 600}, {"unit", "MPa"}};
+  j["requirements"] = nlohmann::json::array(
+      {{{"id", "capacity"},
+        {"description", "1.5 x 400 N*m below the ultimate torque"},
+        {"expression", "1.5 * 400 N*m <= shaft_1.allowable_shear_stress * 0.19634954 * (shaft_1.outer_diameter^4 - "
+                       "(shaft_1.outer_diameter - 2 * shaft_1.wall_thickness)^4) / shaft_1.outer_diameter"}}});
+  return ParseProject(j.dump(), "one_tube.json");
 }
 
 // The requirement reads the tube's polar moment (D^4 - d^4 = 32/pi Ip exactly), so a load the tube
