@@ -221,6 +221,8 @@ class Optimizer {
   void LocalSearch(const std::vector<Interval>& d);
   std::string PeakProof(const std::vector<Interval>& d);
   void CoordinateSearch();
+  void SetupResize();
+  void ResizeTubes();
   void Polish(double lower);
   double ObjectiveAt(const std::vector<double>& x);
   double Shave(Box& box, double lb);
@@ -268,6 +270,16 @@ class Optimizer {
   std::unique_ptr<icsp::Propagator> shaving_propagator_;  ///< the trials' (Options::shaving_ratio)
   std::unique_ptr<Evaluator> evaluator_;
   std::unique_ptr<TubeConstraint> tubes_;   ///< Options::tube_sizes (null: D and t continuous)
+  /// A tube for ResizeTubes: its objective term, its outer diameter and wall (indices into
+  /// design_), the laws that give its own derived quantities from them (variable, node of the law,
+  /// in the order they follow from one another) and the checks that read any of those.
+  struct Resizable {
+    int term = -1;
+    std::size_t d = 0, t = 0;
+    std::vector<std::pair<int, int>> laws;
+    std::vector<int> checks;
+  };
+  std::vector<Resizable> resizable_;
   // Incumbent.
   bool found_ = false;
   double best_ = kInf;
@@ -829,9 +841,14 @@ void Optimizer::ChooseScenario() {
   std::vector<int> active;
   for (int k : probe.failed)
     if (k >= 0 && net().constraint(icsp::ConstraintId{k}).kind == icsp::Constraint::Kind::kExpression) active.push_back(k);
-  if (active.empty())
-    for (int k : checks_)
-      if (net().constraint(icsp::ConstraintId{k}).kind == icsp::Constraint::Kind::kExpression) active.push_back(k);
+  // A parameter that none of the active constraints reads (or that they pull both ways alike) is
+  // put where the other checks want it (the incumbent's slack ones: a tube whose requirement is
+  // not yet tight at the incumbent still binds nearby designs), not at the middle of its domain.
+  const std::size_t num_active = active.size();
+  for (int k : checks_)
+    if (net().constraint(icsp::ConstraintId{k}).kind == icsp::Constraint::Kind::kExpression &&
+        std::find(active.begin(), active.begin() + num_active, k) == active.begin() + num_active)
+      active.push_back(k);
   Box base = initial_;
   for (std::size_t i = 0; i < design_.size(); ++i) base[design_[i]] = Interval(best_x_[i]);
   base[bound_] = icsp::Whole();
@@ -860,7 +877,10 @@ void Optimizer::ChooseScenario() {
     if (lo_ok && hi_ok) {
       worst(lo, at_lo);
       worst(hi, at_hi);
-      for (std::size_t a = 0; a < active.size(); ++a) votes += at_lo[a] > at_hi[a] ? 1 : at_lo[a] < at_hi[a] ? -1 : 0;
+      int others = 0;
+      for (std::size_t a = 0; a < active.size(); ++a)
+        (a < num_active ? votes : others) += at_lo[a] > at_hi[a] ? 1 : at_lo[a] < at_hi[a] ? -1 : 0;
+      if (votes == 0) votes = others;
     } else {
       votes = lo_ok ? -1 : hi_ok ? 1 : 0;
     }
@@ -937,6 +957,173 @@ void Optimizer::CoordinateSearch() {
         hi = t;
       }
     }
+  }
+}
+
+/// The tubes ResizeTubes can resize: an objective term that is a torque shaft's own derived
+/// quantity (its mass) with both its outer diameter and its wall design variables (not with
+/// Options::tube_sizes: the sizes are discrete).
+void Optimizer::SetupResize() {
+  resizable_.clear();
+  if (tubes_ || options_.resize_iterations <= 0) return;
+  const int nc = net().num_constraints();
+  for (int term : terms_) {
+    const std::string& name = net().variable(icsp::VariableId{term}).name;
+    const std::size_t dot = name.rfind('.');
+    if (dot == std::string::npos) continue;
+    const std::string prefix = name.substr(0, dot + 1);
+    const int D = net().FindVariable(prefix + "outer_diameter").value;
+    const int t = net().FindVariable(prefix + "wall_thickness").value;
+    const auto at = [&](int v) { return std::find(design_.begin(), design_.end(), v) - design_.begin(); };
+    if (D < 0 || t < 0 || at(D) == static_cast<long>(design_.size()) || at(t) == static_cast<long>(design_.size()))
+      continue;
+    Resizable r;
+    r.term = term;
+    r.d = static_cast<std::size_t>(at(D));
+    r.t = static_cast<std::size_t>(at(t));
+    // The tube's own laws: definitions z == h whose z and every variable h reads are the tube's
+    // (prefix), h reading D, t or a quantity already derived from them; the first law of each z.
+    std::vector<char> derived(net().num_variables(), 0);
+    derived[D] = derived[t] = 1;
+    auto own = [&](int v) { return net().variable(icsp::VariableId{v}).name.rfind(prefix, 0) == 0; };
+    for (bool more = true; more;) {
+      more = false;
+      for (int c = 0; c < nc; ++c) {
+        if (!definitions_[c]) continue;
+        int z = -1;
+        const int rhs = DefinitionRhs(net(), c, &z);
+        if (rhs < 0 || derived[z] || !own(z)) continue;
+        std::vector<int> reads;
+        VariablesOf(net(), rhs, reads);
+        if (!std::all_of(reads.begin(), reads.end(), own) ||
+            std::none_of(reads.begin(), reads.end(), [&](int v) { return derived[v] != 0; }))
+          continue;
+        r.laws.push_back({z, rhs});
+        derived[z] = 1;
+        more = true;
+      }
+    }
+    if (!derived[term]) continue;  // the term is not the tube's own law of D and t
+    for (int k : checks_) {
+      const icsp::Constraint& con = net().constraint(icsp::ConstraintId{k});
+      if (con.kind != icsp::Constraint::Kind::kExpression) continue;
+      const auto scope = net().ScopeOf(icsp::ConstraintId{k});
+      if (std::any_of(scope.begin(), scope.end(), [&](int v) { return derived[v] != 0; })) r.checks.push_back(k);
+    }
+    resizable_.push_back(std::move(r));
+  }
+}
+
+/// Resizing the incumbent's tubes (Options::resize_iterations; docs/optimize.md, Method 3): a
+/// fully stressed design step. With the loads of a design held at their enclosures over the
+/// remaining domains (its robust check's box), each tube's lightest outer diameter and wall
+/// within their domains is found alone: for walls on a geometric grid, the least diameter at
+/// which every check that reads the tube holds for certain (its laws evaluated at the point, the
+/// loads as they are), then the lightest of those. The tubes move together; the new design is
+/// checked as every candidate (Try), and as stiffer or softer tubes move the loads, the next
+/// iteration resizes for the new design's loads (a design that fails is not kept, only its
+/// loads). The branch and bound's searches move one variable, or one direction, at a time; this
+/// moves a tube along its capacity requirement (a thinner wall at a larger diameter), and every
+/// tube at once.
+void Optimizer::ResizeTubes() {
+  if (resizable_.empty() || !found_) return;
+  std::vector<Interval> whole;
+  for (int v : design_) whole.push_back(initial_[v]);
+  std::vector<double> x = best_x_;
+  Box loads = best_candidate_.box;
+  const int kWalls = 24, kSteps = 40;
+  for (int it = 0; it < options_.resize_iterations && Seconds() < options_.max_seconds; ++it) {
+    std::vector<double> next = x;
+    bool moved = false;
+    for (const Resizable& r : resizable_) {
+      const int D = design_[r.d], t = design_[r.t];
+      const Box keep = loads;  // restored below: the trial points change the tube's own quantities
+      auto at = [&](double d, double w, bool* ok) {
+        loads[D] = Interval(d);
+        loads[t] = Interval(w);
+        for (const auto& [z, rhs] : r.laws) {
+          evaluator_->Reset(&loads);
+          loads[z] = evaluator_->Eval(rhs);
+        }
+        evaluator_->Reset(&loads);
+        *ok = true;
+        for (int k : r.checks) {
+          const icsp::Constraint& con = net().constraint(icsp::ConstraintId{k});
+          if (!Certain(evaluator_->Eval(con.root), con.relation)) {
+            *ok = false;
+            break;
+          }
+        }
+        return loads[r.term].upper();
+      };
+      const Interval dd = initial_[D], tt = initial_[t];
+      // The least diameter with every check certain at wall w, and the tube's mass there (+inf:
+      // none within the domain).
+      auto least = [&](double w, double* d) {
+        bool ok = false;
+        at(dd.upper(), w, &ok);
+        if (!ok) return kInf;
+        double lo = dd.lower(), hi = dd.upper();
+        at(lo, w, &ok);
+        if (ok) hi = lo;
+        for (int s = 0; s < kSteps && !ok; ++s) {
+          const double m = 0.5 * (lo + hi);
+          bool okm = false;
+          at(m, w, &okm);
+          (okm ? hi : lo) = m;
+        }
+        *d = hi;
+        const double mass = at(hi, w, &ok);
+        return ok ? mass : kInf;
+      };
+      bool ok = false;
+      double best_mass = at(x[r.d], x[r.t], &ok);
+      if (!ok) best_mass = kInf;
+      double best_d = x[r.d], best_w = x[r.t];
+      auto wall = [&](int i) { return tt.lower() * std::pow(tt.upper() / tt.lower(), static_cast<double>(i) / kWalls); };
+      int best_i = -1;
+      for (int i = 0; i <= kWalls; ++i) {
+        const double w = wall(i);
+        bool unused = false;
+        if (!(at(dd.lower(), w, &unused) < best_mass)) break;  // thicker walls only weigh more
+        double d = 0.0;
+        const double mass = least(w, &d);
+        if (mass < best_mass) best_mass = mass, best_d = d, best_w = w, best_i = i;
+      }
+      // Between the grid's neighbours of the best wall: a golden-section search along the
+      // requirement (each wall at its least diameter; +inf where none fits, so it closes in on a
+      // wall where the diameter reaches its upper end).
+      if (best_i >= 0) {
+        double a = wall(std::max(0, best_i - 1)), b = wall(std::min(kWalls, best_i + 1));
+        const double g = 0.5 * (std::sqrt(5.0) - 1.0);
+        double c = b - g * (b - a), e = a + g * (b - a), dc = 0.0, de = 0.0;
+        double fc = least(c, &dc), fe = least(e, &de);
+        for (int s = 0; s < kSteps; ++s) {
+          if (fc < best_mass) best_mass = fc, best_d = dc, best_w = c;
+          if (fe < best_mass) best_mass = fe, best_d = de, best_w = e;
+          if (fc < fe) {
+            b = e, e = c, fe = fc, de = dc;
+            c = b - g * (b - a);
+            fc = least(c, &dc);
+          } else {
+            a = c, c = e, fc = fe, dc = de;
+            e = a + g * (b - a);
+            fe = least(e, &de);
+          }
+        }
+      }
+      loads = keep;
+      if (best_d != x[r.d] || best_w != x[r.t]) {
+        next[r.d] = best_d;
+        next[r.t] = best_w;
+        moved = true;
+      }
+    }
+    if (!moved) break;
+    const Candidate c = Try(next, whole);
+    if (icsp::IsEmpty(c.box[objective_])) break;
+    x = next;
+    loads = c.box;
   }
 }
 
@@ -1218,6 +1405,7 @@ void Optimizer::Setup() {
   evaluator_ = std::make_unique<Evaluator>(net());
   SetupTubeSizes();
   FindSharedProducts();
+  SetupResize();
 }
 
 std::string Optimizer::FailureText(const Candidate& c) const {
@@ -1406,6 +1594,7 @@ Report Optimizer::Run() {
     // After the 1st, 2nd, 4th, ... improvement: the count may pass a power of two within one local
     // search (several improvements in one box), so the next polish is due when it reaches it.
     if (counters_.improvements >= next_polish) {
+      ResizeTubes();
       CoordinateSearch();
       ChooseScenario();
       polish_due = true;
@@ -1719,6 +1908,9 @@ void Options::Validate() const {
   if (polish_evaluations < 0)
     throw InputError("optimize: polish_evaluations = " + std::to_string(polish_evaluations) +
                      " must be >= 0 (0: no polish)");
+  if (resize_iterations < 0)
+    throw InputError("optimize: resize_iterations = " + std::to_string(resize_iterations) +
+                     " must be >= 0 (0: the incumbent's tubes are not resized)");
   if (!pareto.empty() && (pareto == "mass" || pareto == "inertia"))
     throw InputError("optimize: the second objective of --pareto is bounded by a constraint, so it must be an "
                      "expression of the constraint language, not '" + pareto + "'; give '" + pareto +

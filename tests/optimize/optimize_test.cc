@@ -286,6 +286,14 @@ TEST(OptimizeOptions, DefaultsAreValidAndBadOnesNamed) {
     EXPECT_NE(std::string(e.what()).find("polish_evaluations"), std::string::npos);
   }
   o = Options{};
+  o.resize_iterations = -1;
+  try {
+    o.Validate();
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("resize_iterations"), std::string::npos);
+  }
+  o = Options{};
   o.dependency_splits = -1;
   try {
     o.Validate();
@@ -304,6 +312,7 @@ TEST(OptimizeStatus, RoundTripsToStrings) {
 TEST(Optimize, StopsAtTheBoxLimitWithAnHonestStatus) {
   Options o;
   o.max_boxes = 2;
+  o.resize_iterations = 0;  // with it the chain closes in the first box (ResizingTheTubes... below)
   const Report r = Optimize(LoadChain(OneTubeChain()), o);
   EXPECT_TRUE(r.status == Status::kStoppedAtLimit || r.status == Status::kNoDesignFound) << r.BriefReport();
   if (r.found) {
@@ -351,6 +360,7 @@ TEST(Optimize, PolishTradesTheWallForTheDiameterAndStaysRobustlyFeasible) {
   Options o;
   o.max_boxes = 1;
   o.polish_evaluations = 0;
+  o.resize_iterations = 0;  // the polish alone (the resizing finds the optimum in the first box)
   const Report plain = Optimize(LoadChain(OneTubeChain("[43, 51] GPa")), o);
   ASSERT_TRUE(plain.found) << plain.FullReport();
   o.polish_evaluations = 500;
@@ -366,6 +376,33 @@ TEST(Optimize, PolishTradesTheWallForTheDiameterAndStaysRobustlyFeasible) {
   const PointCheck c = check.Check({polished.design[0].value_si, polished.design[1].value_si});
   EXPECT_TRUE(c.feasible) << c.failure;
   EXPECT_NEAR(c.objective, polished.best, 1e-9 * polished.best);
+}
+
+// The resizing of the incumbent's tubes (Options::resize_iterations): in the first box, the
+// tube sized alone for its requirements with the loads held (here none: the requirements read
+// only the tube) lands on the analytic optimum, where the searches of one box leave it short, and
+// the design passes the same robust check as every candidate, with the reported mass.
+TEST(Optimize, ResizingTheTubesReachesTheAnalyticOptimumInTheFirstBox) {
+  const double m = AnalyticMass(43e9);
+  Options o;
+  o.max_boxes = 1;
+  o.polish_evaluations = 0;
+  o.resize_iterations = 0;
+  const Report plain = Optimize(LoadChain(OneTubeChain("[43, 51] GPa")), o);
+  ASSERT_TRUE(plain.found) << plain.FullReport();
+  o.resize_iterations = 6;
+  const Report resized = Optimize(LoadChain(OneTubeChain("[43, 51] GPa")), o);
+  ASSERT_TRUE(resized.found) << resized.FullReport();
+  EXPECT_LT(resized.best, plain.best * (1 - 1e-3)) << plain.BriefReport() << "\n" << resized.BriefReport();
+  EXPECT_GE(resized.best, m * (1 - 1e-9)) << resized.BriefReport();
+  EXPECT_LE(resized.best, m * (1 + 1e-6)) << resized.BriefReport();
+  EXPECT_LE(resized.lower_bound, m * (1 + 1e-12)) << resized.BriefReport();
+  ASSERT_EQ(resized.design.size(), 2u);
+  EXPECT_NEAR(resized.design[0].value, 60.0, 1e-3) << "the diameter at its upper end";
+  DesignEvaluator check(LoadChain(OneTubeChain("[43, 51] GPa")), o);
+  const PointCheck c = check.Check({resized.design[0].value_si, resized.design[1].value_si});
+  EXPECT_TRUE(c.feasible) << c.failure;
+  EXPECT_NEAR(c.objective, resized.best, 1e-9 * resized.best);
 }
 
 TEST(Optimize, DesignFlagRoundTripsThroughTheProjectFile) {

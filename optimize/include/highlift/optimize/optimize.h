@@ -68,6 +68,11 @@ struct Options {
   /// check as every candidate) and a fifth of max_seconds per call. 0: no polish. Not with
   /// tube_sizes.
   int polish_evaluations = 3000;
+  /// Resizing the incumbent's tubes (docs/optimize.md, Method 3), before each coordinate search:
+  /// each tube whose outer diameter and wall are both design variables sized alone to the lightest
+  /// that meets every check reading it with the loads of the design held, all tubes at once, then
+  /// checked as every candidate; again with the new design's loads, up to this many times. 0: none.
+  int resize_iterations = 6;
   double propagation_ratio = 0.01;  ///< HC4 agenda ratio of the contractor (docs/icsp.md; 0: exact
                                     ///< fixed point, slower, same certificates)
   /// Lower bounds by shaving (3B consistency on the objective, as IbexOpt's lower bounding by
