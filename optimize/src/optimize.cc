@@ -810,7 +810,9 @@ void Optimizer::Consider(const std::vector<double>& x, const Candidate& c) {
 }
 
 /// The objective's response to each design variable at the middle of the domains (definitions
-/// only): its sign gives the direction of the local search, its size the bisection priority.
+/// only): its sign gives the direction of the local search, its size the bisection priority. For
+/// a variable the objective does not read, the end of its domain in `root` (the contracted root
+/// box) that the checks favour, if any (prefer_).
 void Optimizer::Sensitivities(const Box& root) {
   const std::size_t n = design_.size();
   sign_.assign(n, 0.0);
@@ -1029,8 +1031,9 @@ void Optimizer::CoordinateSearch() {
     if (from == to) continue;
     // Such a variable does not change the objective, so a feasible point of it is taken even when
     // it is no lighter (a tie); twice the steps, since its end is usually a requirement's bound
-    // (the extension time), not the domain's.
-    const bool tie = prefer_[i] != 0.0 && !tubes_;
+    // (the extension time), not the domain's. Evaluated as given: it is no tube's D or t (those
+    // the objective reads), so with --tube-sizes the incumbent stays made of sizes.
+    const bool tie = prefer_[i] != 0.0;
     double lo = 0.0, hi = 1.0;
     for (int s = 0; s <= (tie ? 2 : 1) * options_.line_search_steps; ++s) {
       const double t = s == 0 ? 1.0 : 0.5 * (lo + hi);
