@@ -6,10 +6,14 @@
 // The design problem per example: every torque shaft's outer diameter (0.6-1.2 x the example's
 // value) and wall thickness (0.4-2 x), every station torque limiter's and system torque
 // limiter's extend lock-out setting and every wing-tip brake's static capacity (their domains),
-// every station limiter's brake torque (0.5-8 x the example's value); objective: mass. Every other
-// parameter keeps its (estimated) domain. Designs are verified by size, not peak (see below).
+// every station limiter's brake torque (0.5-8 x the example's value); on the A380-class flaps also
+// the geared rotary actuators' ratio (100-300:1, domain.md s6), one ratio shared by all twelve
+// (Options::same_value: the flaps of both wings move together, so their actuators are identical);
+// objective: mass. Every other parameter keeps its (estimated) domain. Designs are verified by size,
+// not peak (see below).
 //
-// Counters: best (kg), lower_bound (kg), gap, boxes, candidates; the random search: best_random (kg),
+// Counters: best (kg), lower_bound (kg), gap, boxes, candidates, ratio (the shared actuator ratio of the
+// best design, with the ratio a design variable); the random search: best_random (kg),
 // feasible_random (how many of its samples were robustly feasible), seconds_random; the evolutionary
 // search: best_nsga, feasible_nsga, seconds_nsga; gap_* is each one's best against the optimizer's
 // certified bound. BM_OptimizeTubeSizes: the A380-class problem with every shaft one of the standard tube
@@ -30,7 +34,10 @@
 namespace highlift {
 namespace {
 
-Project DesignProblem(const std::string& name) {
+/// The design problem of `name`; with `ratio`, every geared rotary actuator's ratio is a design
+/// variable over 100-300:1 (domain.md s6; marked before estimating, so that no law reads its domain
+/// as an uncertainty), all of them one value (SameRatio).
+Project DesignProblem(const std::string& name, bool ratio = false) {
   Project project = LoadProject(std::string(HIGHLIFT_SOURCE_DIR) + "/examples/" + name);
   // The tube geometry is marked before estimating, so that the estimator leaves each tube's
   // stiffness and inertia to the network's tube law over the design (as `highlift optimize`
@@ -48,6 +55,11 @@ Project DesignProblem(const std::string& name) {
         t->second.domain = {0.4 * *t->second.nominal, 2.0 * *t->second.nominal};
         t->second.design = true;
       }
+    }
+    if (ratio && c.type == "geared_rotary_actuator") {
+      Parameter& r = c.parameters.at("ratio");
+      r.domain = {100.0, 300.0};
+      r.design = true;
     }
   }
   componentdb::ComponentDatabase database =
@@ -69,6 +81,17 @@ Project DesignProblem(const std::string& name) {
     if (c.type == "wing_tip_brake") mark("static_capacity");
   }
   return project;
+}
+
+/// Options::same_value for DesignProblem(..., true): every geared rotary actuator's ratio one value
+/// (the first actuator's); empty when the project has none marked.
+std::vector<std::vector<std::string>> SameRatio(const Project& project) {
+  std::vector<std::string> group;
+  for (const Component& c : project.components)
+    if (c.type == "geared_rotary_actuator" && c.parameters.count("ratio") && c.parameters.at("ratio").design)
+      group.push_back(c.id + ".ratio");
+  if (group.size() < 2) return {};
+  return {group};
 }
 
 struct BaselineResult {
@@ -197,12 +220,16 @@ optimize::Report RunOptimize(benchmark::State& state, const Project& project, co
   state.counters["candidates"] = r.candidates;
   state.counters["optimal"] = r.status == optimize::Status::kOptimal ? 1 : 0;
   state.counters["seconds"] = r.seconds;
+  for (const optimize::DesignValue& v : r.design)  // the shared actuator ratio of the best design
+    if (v.same_as.empty() && v.name.size() > 6 && v.name.compare(v.name.size() - 6, 6, ".ratio") == 0)
+      state.counters["ratio"] = v.value;
   return r;
 }
 
-void BM_Optimize(benchmark::State& state, const char* example, double gap, double seconds) {
-  const Project project = DesignProblem(example);
+void BM_Optimize(benchmark::State& state, const char* example, double gap, double seconds, bool ratio) {
+  const Project project = DesignProblem(example, ratio);
   optimize::Options o;
+  o.same_value = SameRatio(project);
   o.relative_gap = gap;
   o.max_seconds = seconds;
   // peak is not verified: on every bundled example the actuators' rupture loads exceed their
@@ -227,9 +254,10 @@ void BM_Optimize(benchmark::State& state, const char* example, double gap, doubl
 /// The same design problem with every shaft's D and t one of the standard tube sizes
 /// (Options::tube_sizes, ISO 3 R20): the discrete optimum against the continuous one above. No
 /// baselines (DesignEvaluator checks points as given, not snapped to sizes).
-void BM_OptimizeTubeSizes(benchmark::State& state, const char* example, double gap, double seconds) {
-  const Project project = DesignProblem(example);
+void BM_OptimizeTubeSizes(benchmark::State& state, const char* example, double gap, double seconds, bool ratio) {
+  const Project project = DesignProblem(example, ratio);
   optimize::Options o;
+  o.same_value = SameRatio(project);
   o.relative_gap = gap;
   o.max_seconds = seconds;
   o.verify_peak = false;  // as BM_Optimize
@@ -240,13 +268,13 @@ void BM_OptimizeTubeSizes(benchmark::State& state, const char* example, double g
   state.SetLabel(r.BriefReport() + "; " + sizes);
 }
 
-BENCHMARK_CAPTURE(BM_Optimize, a320_flaps, "a320_class_flaps.json", 0.01, 10.0)
+BENCHMARK_CAPTURE(BM_Optimize, a320_flaps, "a320_class_flaps.json", 0.01, 10.0, false)
     ->Unit(benchmark::kSecond)->Iterations(1);
-BENCHMARK_CAPTURE(BM_Optimize, a320_slats, "a320_class_slats.json", 0.01, 10.0)
+BENCHMARK_CAPTURE(BM_Optimize, a320_slats, "a320_class_slats.json", 0.01, 10.0, false)
     ->Unit(benchmark::kSecond)->Iterations(1);
-BENCHMARK_CAPTURE(BM_Optimize, a380_flaps, "a380_class_flaps.json", 0.01, 60.0)
+BENCHMARK_CAPTURE(BM_Optimize, a380_flaps, "a380_class_flaps.json", 0.01, 60.0, true)
     ->Unit(benchmark::kSecond)->Iterations(1);
-BENCHMARK_CAPTURE(BM_OptimizeTubeSizes, a380_flaps, "a380_class_flaps.json", 0.01, 60.0)
+BENCHMARK_CAPTURE(BM_OptimizeTubeSizes, a380_flaps, "a380_class_flaps.json", 0.01, 60.0, true)
     ->Unit(benchmark::kSecond)->Iterations(1);
 
 }  // namespace

@@ -228,7 +228,7 @@ class Optimizer {
   double Shave(Box& box, double lb);
   bool ShaveSlice(Box& box, int v, double slice, const std::vector<char>& enabled = {});
   void ShavingNeighbourhoods();
-  void Sensitivities();
+  void Sensitivities(const Box& root);
   void ChooseScenario();
   std::vector<double> StepTowardsSmaller(const std::vector<double>& x) const;
   void SetupTubeSizes();
@@ -246,6 +246,21 @@ class Optimizer {
   icsp::DriveSystemNetwork dsn_;
   std::vector<int> design_;             ///< variable indices
   std::vector<std::string> design_names_;
+  /// Options::same_value: a parameter that follows design variable `leader` (an index of design_).
+  struct Follower {
+    int var = -1;
+    std::size_t leader = 0;
+    std::string name;
+  };
+  std::vector<Follower> followers_;
+  std::vector<std::pair<std::size_t, Interval>> same_domains_;  ///< a group's domain (the intersection)
+  /// The design as parameter values (SI) for FixDesign: the design variables and their followers.
+  std::vector<std::pair<std::string, double>> DesignValues(const std::vector<double>& x) const {
+    std::vector<std::pair<std::string, double>> values;
+    for (std::size_t i = 0; i < design_.size(); ++i) values.push_back({design_names_[i], x[i]});
+    for (const Follower& f : followers_) values.push_back({f.name, x[f.leader]});
+    return values;
+  }
   int objective_ = -1, bound_ = -1, bound_constraint_ = -1;
   std::string objective_unit_;
   std::vector<MassTerm> mass_terms_;
@@ -258,6 +273,7 @@ class Optimizer {
   std::vector<SharedProduct> products_; ///< definitions the robust check encloses by partition
   Box initial_;
   std::vector<double> sign_, sensitivity_;
+  std::vector<double> prefer_;          ///< +1 / -1: the end of its domain the checks favour (0: none)
   std::vector<int> uncertain_;          ///< parameter variables with a domain that are not design variables
   std::vector<double> scenario_;        ///< a point of their domains at which the boxes are contracted
   bool have_scenario_ = false;
@@ -298,6 +314,14 @@ void Optimizer::ChooseDesignVariables() {
     for (const auto& [pname, p] : c.parameters)
       if (p.design && std::find(names.begin(), names.end(), c.id + "." + pname) == names.end())
         names.push_back(c.id + "." + pname);
+  // Options::same_value: the first name of each group is the design variable, the others follow it.
+  std::set<std::string> following;
+  for (const std::vector<std::string>& group : options_.same_value) {
+    if (std::find(names.begin(), names.end(), group.front()) == names.end()) names.push_back(group.front());
+    following.insert(group.begin() + 1, group.end());
+  }
+  names.erase(std::remove_if(names.begin(), names.end(), [&](const std::string& n) { return following.count(n) > 0; }),
+              names.end());
   if (names.empty() && !allow_no_design_)
     throw InputError("no design variable: mark parameters of the project with \"design\": true, or name them with "
                      "--design COMPONENT.PARAMETER (e.g. --design shaft_l1.wall_thickness)");
@@ -321,6 +345,31 @@ void Optimizer::ChooseDesignVariables() {
     if (std::find(design_.begin(), design_.end(), v.value) != design_.end()) continue;
     design_.push_back(v.value);
     design_names_.push_back(name);
+  }
+  for (const std::vector<std::string>& group : options_.same_value) {
+    const std::size_t leader =
+        std::find(design_names_.begin(), design_names_.end(), group.front()) - design_names_.begin();
+    const icsp::VariableId lv{design_[leader]};
+    Interval common = net().variable(lv).initial;
+    for (std::size_t k = 1; k < group.size(); ++k) {
+      const std::string& name = group[k];
+      const auto dot = name.find('.');
+      const Component* c = dot == std::string::npos ? nullptr : project_.FindComponent(name.substr(0, dot));
+      const icsp::VariableId v = c ? net().FindVariable(name) : icsp::VariableId{-1};
+      if (!c || !c->parameters.count(name.substr(dot + 1)) || v.value < 0)
+        throw InputError("same value '" + name + "' (group of " + group.front() + "): not a parameter of the project; "
+                         "name it as COMPONENT.PARAMETER with a component id and one of its parameters");
+      common = icsp::Meet(common, net().variable(v).initial);
+      if (icsp::IsEmpty(common) || !(common.upper() > common.lower()))
+        throw InputError("same value: the domains of " + group.front() + " and " + name +
+                         " have no common range to choose from; give each of the group the same \"min\" and \"max\"");
+      followers_.push_back({v.value, leader, name});
+      net().AddConstraint(net().Var(v), icsp::Relation::kEqual, net().Var(lv),
+                          {"same:" + name, name + " takes the value of the design variable " + group.front() +
+                                               " (identical parts, Options::same_value)",
+                           icsp::ConstraintRole::kPhysics, name + " == " + group.front()});
+    }
+    same_domains_.push_back({leader, common});
   }
 }
 
@@ -567,9 +616,7 @@ Candidate Optimizer::Evaluate(const std::vector<double>& x, bool verify) {
   if (!c.failed.empty() || !std::isfinite(c.value)) return c;
   if (verify && (verify_size_ || verify_peak_)) {
     ++counters_.reduced_model_checks;
-    std::vector<std::pair<std::string, double>> values;
-    for (std::size_t i = 0; i < design_.size(); ++i) values.push_back({design_names_[i], x[i]});
-    const Project p = FixDesign(project_, values);
+    const Project p = FixDesign(project_, DesignValues(x));
     if (verify_size_) {
       reduced_models::SizingOptions so;
       const reduced_models::SizingReport sr = reduced_models::Size(p, so);
@@ -775,8 +822,10 @@ void Optimizer::Consider(const std::vector<double>& x, const Candidate& c) {
 }
 
 /// The objective's response to each design variable at the middle of the domains (definitions
-/// only): its sign gives the direction of the local search, its size the bisection priority.
-void Optimizer::Sensitivities() {
+/// only): its sign gives the direction of the local search, its size the bisection priority. For
+/// a variable the objective does not read, the end of its domain in `root` (the contracted root
+/// box) that the checks favour, if any (prefer_).
+void Optimizer::Sensitivities(const Box& root) {
   const std::size_t n = design_.size();
   sign_.assign(n, 0.0);
   sensitivity_.assign(n, 0.0);
@@ -797,6 +846,53 @@ void Optimizer::Sensitivities() {
       sign_[i] = d > 0 ? 1.0 : -1.0;
       sensitivity_[i] = std::fabs(d);
     }
+  }
+  // A variable the objective does not read (an actuator ratio, a setting) may still move it through
+  // the constraints: a larger actuator ratio lowers every torque on the drive line, so more designs
+  // meet the requirements, up to the extension time. When the checks it moves nearly all favour
+  // one end of its domain in the root box (at the box's middle, at least nine in ten of them
+  // closer to holding at that end), the searches treat that end as the light one and, since the
+  // objective does not mind, as the safe one too (LocalSearch): a box's middle at the ratio's
+  // middle fails the limiter margins that its upper end meets. Only where the searches look
+  // depends on it, not the certificate.
+  prefer_.assign(n, 0.0);
+  std::vector<double> centre(n);
+  for (std::size_t i = 0; i < n; ++i) centre[i] = Mid(root[design_[i]]);
+  auto slack = [&](const std::vector<double>& x, std::vector<double>& out) {
+    Box box = initial_;
+    for (std::size_t k = 0; k < n; ++k) box[design_[k]] = Interval(x[k]);
+    box[bound_] = icsp::Whole();
+    out.assign(checks_.size(), kInf);
+    if (propagator_->Propagate(box, definitions_).status == icsp::Status::kInfeasible) return;
+    evaluator_->Reset(&box);
+    for (std::size_t a = 0; a < checks_.size(); ++a) {
+      const icsp::Constraint& con = net().constraint(icsp::ConstraintId{checks_[a]});
+      if (con.kind != icsp::Constraint::Kind::kExpression) continue;
+      const Interval g = evaluator_->Eval(con.root);
+      if (icsp::IsEmpty(g)) continue;
+      out[a] = con.relation == icsp::Relation::kLessEqual      ? g.upper()
+               : con.relation == icsp::Relation::kGreaterEqual ? -g.lower()
+                                                                : std::max(g.upper(), -g.lower());
+    }
+  };
+  std::vector<double> at_lo, at_hi;
+  for (std::size_t i = 0; i < n; ++i) {
+    const Interval d = root[design_[i]];
+    if (sign_[i] != 0.0 || !(d.upper() > d.lower())) continue;
+    std::vector<double> x = centre;
+    x[i] = d.lower();
+    slack(x, at_lo);
+    x[i] = d.upper();
+    slack(x, at_hi);
+    int lo_better = 0, hi_better = 0;
+    for (std::size_t a = 0; a < checks_.size(); ++a) {
+      const double u = at_lo[a], v = at_hi[a];
+      if (u == v || !(std::fabs(u - v) > 1e-9 * std::max(std::fabs(u), std::fabs(v)))) continue;
+      (u < v ? lo_better : hi_better) += 1;
+    }
+    if (hi_better >= 9 * lo_better && hi_better > 0) prefer_[i] = 1.0;
+    else if (lo_better >= 9 * hi_better && lo_better > 0) prefer_[i] = -1.0;
+    sign_[i] = -prefer_[i];  // the objective "likes" the end the checks favour
   }
 }
 
@@ -915,6 +1011,12 @@ std::string Optimizer::PeakProof(const std::vector<Interval>& d) {
     par.domain = {d[i].lower(), d[i].upper()};
     par.nominal = Mid(d[i]);
   }
+  for (const Follower& f : followers_) {
+    const auto dot = f.name.find('.');
+    Parameter& par = p.FindComponent(f.name.substr(0, dot))->parameters[f.name.substr(dot + 1)];
+    par.domain = {d[f.leader].lower(), d[f.leader].upper()};
+    par.nominal = Mid(d[f.leader]);
+  }
   reduced_models::PeakOptions po;
   po.rank = false;
   ++counters_.peak_checks;
@@ -935,7 +1037,11 @@ std::string Optimizer::PeakProof(const std::vector<Interval>& d) {
 void Optimizer::CoordinateSearch() {
   std::vector<std::size_t> order(design_.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return sensitivity_[a] > sensitivity_[b]; });
+  // The variables the objective does not read but the checks favour at one end (prefer_: an
+  // actuator ratio) first: moved towards that end, they free the others.
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return (prefer_[a] != 0.0) != (prefer_[b] != 0.0) ? prefer_[a] != 0.0 : sensitivity_[a] > sensitivity_[b];
+  });
   std::vector<Interval> whole;
   for (int v : design_) whole.push_back(initial_[v]);
   for (std::size_t i : order) {
@@ -943,13 +1049,26 @@ void Optimizer::CoordinateSearch() {
     const Interval dom = initial_[design_[i]];
     const double from = best_x_[i], to = sign_[i] > 0 ? dom.lower() : dom.upper();
     if (from == to) continue;
+    // Such a variable does not change the objective, so a feasible point of it is taken even when
+    // it is no lighter (a tie); twice the steps, since its end is usually a requirement's bound
+    // (the extension time), not the domain's. Evaluated as given: it is no tube's D or t (those
+    // the objective reads), so with --tube-sizes the incumbent stays made of sizes.
+    const bool tie = prefer_[i] != 0.0;
     double lo = 0.0, hi = 1.0;
-    for (int s = 0; s <= options_.line_search_steps; ++s) {
+    for (int s = 0; s <= (tie ? 2 : 1) * options_.line_search_steps; ++s) {
       const double t = s == 0 ? 1.0 : 0.5 * (lo + hi);
       std::vector<double> x = best_x_;
       const double base = from;  // best_x_[i] may have moved: keep the segment of this variable
       x[i] = base + t * (to - base);
-      const Candidate c = Try(x, whole);
+      Candidate c = tie ? Evaluate(x, true) : Try(x, whole);
+      if (tie) {
+        Consider(x, c);
+        if (c.feasible && c.value <= best_) {
+          best_ = c.value;
+          best_x_ = x;
+          best_candidate_ = c;
+        }
+      }
       if (c.feasible) {
         if (s == 0) break;  // the end itself is feasible
         lo = t;
@@ -1251,6 +1370,11 @@ void Optimizer::LocalSearch(const std::vector<Interval>& d) {
     mid[i] = Mid(d[i]);
     light[i] = sign_[i] > 0 ? d[i].lower() : sign_[i] < 0 ? d[i].upper() : mid[i];
     safe[i] = sign_[i] > 0 ? d[i].upper() : sign_[i] < 0 ? d[i].lower() : mid[i];
+    // The objective does not read it: near the end the checks favour, a step of the line search
+    // (2^-line_search_steps of the box) inside it, where a requirement that bounds it (the
+    // extension time at the root box's end) holds for certain.
+    if (prefer_[i] != 0.0)
+      safe[i] = light[i] = light[i] - prefer_[i] * std::ldexp(d[i].upper() - d[i].lower(), -options_.line_search_steps);
   }
   std::vector<double> anchor = mid;
   Candidate c = Try(mid, d);
@@ -1385,11 +1509,15 @@ void Optimizer::Setup() {
   ClassifyConstraints();
   ProbeReducedModels();
   initial_ = net().InitialBox();
+  for (const auto& [leader, common] : same_domains_) initial_[design_[leader]] = common;
+  for (const Follower& f : followers_) initial_[f.var] = initial_[design_[f.leader]];
   for (const Component& c : project_.components)
     for (const auto& [pname, par] : c.parameters) {
       (void)par;
       const icsp::VariableId v = net().FindVariable(c.id + "." + pname);
       if (v.value < 0 || std::find(design_.begin(), design_.end(), v.value) != design_.end()) continue;
+      if (std::any_of(followers_.begin(), followers_.end(), [&](const Follower& f) { return f.var == v.value; }))
+        continue;
       const Interval d = initial_[v.value];
       if (std::isfinite(d.lower()) && std::isfinite(d.upper()) && d.upper() > d.lower()) uncertain_.push_back(v.value);
     }
@@ -1452,7 +1580,7 @@ Report Optimizer::Run() {
     throw InputError("objective '" + options_.objective + "' is unbounded below over the domains ("
                      "no finite lower bound after propagation): give the "
                      "parameters it depends on finite \"min\" and \"max\" in the project, or minimize another objective");
-  Sensitivities();
+  Sensitivities(root);
   {
     // A constraint that no design variable reaches (not even through the laws that define derived
     // quantities) and that does not hold for certain over the remaining domains fails for every
@@ -1740,8 +1868,17 @@ void Optimizer::Finish(Report& r) {
     if (best_x_[i] - initial_[design_[i]].lower() <= 1e-6 * w) dv.at_bound = "lower";
     if (initial_[design_[i]].upper() - best_x_[i] <= 1e-6 * w) dv.at_bound = "upper";
     r.design.push_back(dv);
-    values.push_back({design_names_[i], best_x_[i]});
   }
+  for (const Follower& f : followers_) {
+    DesignValue dv = r.design[f.leader];
+    dv.name = f.name;
+    dv.same_as = design_names_[f.leader];
+    dv.nominal = std::nan("");
+    for (const auto& [var, nominal] : dsn_.nominal)
+      if (var == f.var) dv.nominal = icsp::ToDisplay(nominal, dv.unit);
+    r.design.push_back(dv);
+  }
+  values = DesignValues(best_x_);
   for (std::size_t t = 0; t < mass_terms_.size(); ++t) {
     MassTerm m = mass_terms_[t];
     if (mass_vars_[t] >= 0) {
@@ -1928,6 +2065,15 @@ void Options::Validate() const {
     if (c.parts.empty())
       throw InputError("optimize: no part to choose from for component '" + c.component +
                        "'; give at least one part (the database's parts of its type)");
+  std::set<std::string> grouped;
+  for (const std::vector<std::string>& group : same_value) {
+    if (group.size() < 2)
+      throw InputError("optimize: a same_value group names " + std::to_string(group.size()) +
+                       " parameter(s); give at least two (the design variable first, then the parameters that follow it)");
+    for (const std::string& name : group)
+      if (!grouped.insert(name).second)
+        throw InputError("optimize: '" + name + "' is named twice in same_value; give each parameter in one group once");
+  }
   if (dependency_splits < 0 || dependency_splits > 10000)
     throw InputError("optimize: dependency_splits = " + std::to_string(dependency_splits) + " must be from 0 to 10000");
   if (shaving_tries < 0 || shaving_tries > 20)
@@ -1998,7 +2144,7 @@ std::string Report::FullReport() const {
     if (!tube_table.empty()) columns.push_back("tube size");
     TextTable t(columns, {2, 4});
     for (const DesignValue& d : design) {
-      std::vector<std::string> row = {d.name, d.unit, Number(d.value), "[" + Number(d.lower) + ", " + Number(d.upper) + "]",
+      std::vector<std::string> row = {d.same_as.empty() ? d.name : d.name + " (= " + d.same_as + ")", d.unit, Number(d.value), "[" + Number(d.lower) + ", " + Number(d.upper) + "]",
                                       std::isfinite(d.nominal) ? Number(d.nominal) : "-", d.at_bound};
       if (!tube_table.empty()) row.push_back(d.tube_size);
       t.AddRow(row);
@@ -2078,6 +2224,7 @@ nlohmann::json Report::ToJson() const {
     nlohmann::json row = {{"name", v.name}, {"unit", v.unit}, {"value", v.value}, {"domain", {v.lower, v.upper}},
                           {"nominal", FiniteOrNull(v.nominal)}, {"at_bound", v.at_bound}};
     if (!tube_table.empty()) row["tube_size"] = v.tube_size;
+    if (!v.same_as.empty()) row["same_as"] = v.same_as;
     d.push_back(row);
   }
   j["design"] = d;
@@ -2244,6 +2391,7 @@ double ObjectiveAt(const Project& project, const Options& options, const std::st
   Options o = options;
   o.objective = objective;
   o.design.clear();
+  o.same_value.clear();  // the design, followers included, is fixed
   o.tube_sizes = {};  // the design is fixed: nothing left to restrict
   o.max_seconds = std::max(0.1, seconds);
   detail::Optimizer opt(FixDesign(project, values), o);

@@ -54,6 +54,15 @@ struct Options {
   /// Design variables "component.parameter", in addition to the parameters the project marks
   /// with "design": true. Each needs a finite domain of positive width.
   std::vector<std::string> design;
+  /// Parameters that take one value together: identical parts (every geared rotary actuator of a
+  /// drive line has one ratio, or the flaps it drives would not move together). Each group is one
+  /// design variable: its first name (added to the design variables when it is not one), which
+  /// the others follow exactly through a law `other == first` of the constraint network (so they
+  /// are neither uncertain parameters nor design variables of their own); its domain is the
+  /// intersection of the group's domains. The design, the written project and `size` and `peak`
+  /// give every member the value. Each group names at least two parameters, each name in one
+  /// group. Empty by default.
+  std::vector<std::vector<std::string>> same_value;
   int max_boxes = 20000;            ///< stop (kStoppedAtLimit) after processing this many boxes
   double relative_gap = 1e-6;       ///< stop when (best - lower bound) <= relative_gap * |best|
   double absolute_gap = 1e-12;      ///< ... or when best - lower bound <= absolute_gap (SI units)
@@ -140,6 +149,7 @@ struct DesignValue {
   double nominal = 0.0;     ///< the project's nominal value (NaN when it has none)
   std::string at_bound;     ///< "lower", "upper" or "" (the domain limits the design)
   std::string tube_size;    ///< with Options::tube_sizes: the size of this shaft's D and t, e.g. "45x1.8"
+  std::string same_as;      ///< Options::same_value: the design variable this parameter follows ("" for one)
 };
 
 /// A constraint that limits the design: at the best design it holds, a small step towards a
