@@ -35,6 +35,11 @@ class OptimizeCommand : public Command {
                    "a design variable COMPONENT.PARAMETER (repeatable), chosen within its domain; in addition to the "
                    "parameters the project marks \"design\": true")
         ->delimiter(',');
+    app.add_option("--same-value", same_value_,
+                   "A,B[,C...]: identical parts (repeatable, one group each): A is a design variable and B, C, ... "
+                   "take its value (e.g. every actuator's ratio: gra_l1.ratio,gra_l2.ratio); each needs a \"min\" and "
+                   "\"max\" with a common range")
+        ->allow_extra_args(false);
     app.add_option("--pareto", pareto_,
                    "OBJ1,OBJ2: the Pareto front of two objectives by epsilon constraints (OBJ1 as --minimize; OBJ2 an "
                    "expression of the constraint language, e.g. mass,peak.jam_l1.torque)");
@@ -74,6 +79,19 @@ class OptimizeCommand : public Command {
   }
 
   int Run() override {
+    for (const std::string& text : same_value_) {
+      std::vector<std::string> group;
+      for (std::size_t from = 0;;) {
+        const std::size_t comma = text.find(',', from);
+        group.push_back(text.substr(from, comma == std::string::npos ? std::string::npos : comma - from));
+        if (group.back().empty())
+          throw InputError("--same-value '" + text + "': an empty name; give COMPONENT.PARAMETER names separated by "
+                           "commas, the design variable first (e.g. gra_l1.ratio,gra_l2.ratio)");
+        if (comma == std::string::npos) break;
+        from = comma + 1;
+      }
+      options_.same_value.push_back(std::move(group));
+    }
     options_.verify_size = !no_verify_;
     options_.verify_peak = !no_verify_ && !no_verify_peak_;
     options_.Validate();
@@ -94,7 +112,11 @@ class OptimizeCommand : public Command {
     std::optional<componentdb::ComponentDatabase> database;
     EstimatedProject loaded;
     if (choose_part_.empty()) {
-      loaded = LoadEstimatedProject(common_, !no_estimate_, options_.design);
+      // Every member of a --same-value group is marked as the design variables are, so that the
+      // estimator leaves what follows from it by a law to the network (as for the design).
+      std::vector<std::string> marked = options_.design;
+      for (const std::vector<std::string>& group : options_.same_value) marked.insert(marked.end(), group.begin(), group.end());
+      loaded = LoadEstimatedProject(common_, !no_estimate_, marked);
     } else {
       // Each part combination is estimated after its parts are applied (what a part implies
       // follows it), so the project is loaded as given.
@@ -217,6 +239,7 @@ class OptimizeCommand : public Command {
   optimize::Options options_;
   std::string write_;
   std::vector<std::string> choose_part_;
+  std::vector<std::string> same_value_;  // --same-value, one group per occurrence
   std::string tube_sizes_;
   std::string pareto_;
   bool verify_transient_ = false;

@@ -103,6 +103,70 @@ TEST(OptimizeCli, WrittenDesignPassesCheckAndSize) {
     }
 }
 
+/// Gives every actuator of the design problem `problem` a ratio of 100-300:1; returns the group
+/// "gra_l1.ratio,gra_l2.ratio,..." of --same-value.
+std::string RatioDomains(const std::filesystem::path& problem) {
+  nlohmann::json p = nlohmann::json::parse(std::ifstream(problem));
+  std::string group;
+  for (auto& c : p["components"])
+    if (c["type"] == "geared_rotary_actuator") {
+      c["parameters"]["ratio"] = {{"value", 200.0}, {"min", 100.0}, {"max", 300.0}};
+      group += (group.empty() ? "" : ",") + c["id"].get<std::string>() + ".ratio";
+    }
+  std::ofstream(problem) << p.dump(1);
+  return group;
+}
+
+// --same-value on the command line (Options::same_value): the A320-class flaps' eight actuators
+// with one ratio over 100-300:1, beside the design problem above. One design variable; the other
+// seven follow it in the design table and in the written project, which `size` passes.
+TEST(OptimizeCli, SameValueMakesOneRatioForEveryActuator) {
+  const std::filesystem::path dir = std::filesystem::path(HIGHLIFT_BINARY_DIR) / "optimize-cli-test-same";
+  const std::filesystem::path problem = A320DesignProblem(dir), best = dir / "best.json";
+  std::filesystem::remove(best);
+  const std::string group = RatioDomains(problem);
+  ASSERT_EQ(group.substr(0, 13), "gra_l1.ratio,");
+  const CliResult r = RunCli({"optimize", problem.string(), "--no-verify-peak", "--gap", "0.01", "--same-value", group,
+                              "--write", best.string(), "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  const nlohmann::json doc = nlohmann::json::parse(r.out);
+  EXPECT_EQ(doc["status"], "optimal");
+  double leader = 0.0;
+  int followers = 0;
+  for (const auto& v : doc["design"]) {
+    if (v["name"] == "gra_l1.ratio") leader = v["value"].get<double>();
+    if (v.contains("same_as")) {
+      EXPECT_EQ(v["same_as"], "gra_l1.ratio") << v.dump();
+      ++followers;
+    }
+  }
+  EXPECT_EQ(followers, 7);
+  EXPECT_GT(leader, 200.0);  // bounded by the extension time, not the domain (same_value_test)
+  EXPECT_LT(leader, 300.0);
+  const nlohmann::json written = nlohmann::json::parse(std::ifstream(best));
+  for (const auto& c : written["components"])
+    if (c["type"] == "geared_rotary_actuator") {
+      EXPECT_EQ(c["parameters"]["ratio"]["provenance"], "optimized") << c["id"];
+    }
+  const CliResult size = RunCli({"size", best.string()});
+  EXPECT_EQ(size.exit_code, 0) << size.out << size.err;
+}
+
+TEST(OptimizeCli, SameValueBadGroupsExit2NamingTheForm) {
+  const std::filesystem::path dir = std::filesystem::path(HIGHLIFT_BINARY_DIR) / "optimize-cli-test-same-bad";
+  const std::filesystem::path problem = A320DesignProblem(dir);
+  RatioDomains(problem);
+  const CliResult one = RunCli({"optimize", problem.string(), "--same-value", "gra_l1.ratio"});
+  EXPECT_EQ(one.exit_code, 2) << one.out << one.err;
+  EXPECT_NE(one.err.find("give at least two"), std::string::npos) << one.err;
+  const CliResult empty = RunCli({"optimize", problem.string(), "--same-value", "gra_l1.ratio,,gra_l2.ratio"});
+  EXPECT_EQ(empty.exit_code, 2) << empty.out << empty.err;
+  EXPECT_NE(empty.err.find("an empty name"), std::string::npos) << empty.err;
+  const CliResult unknown = RunCli({"optimize", problem.string(), "--same-value", "gra_l1.ratio,gra_zz.ratio"});
+  EXPECT_EQ(unknown.exit_code, 2) << unknown.out << unknown.err;
+  EXPECT_NE(unknown.err.find("gra_zz.ratio"), std::string::npos) << unknown.err;
+}
+
 TEST(OptimizeCli, WriteRefusesToOverwriteTheProject) {
   const std::filesystem::path dir = std::filesystem::path(HIGHLIFT_BINARY_DIR) / "optimize-cli-test-overwrite";
   const std::filesystem::path problem = A320DesignProblem(dir);
