@@ -30,57 +30,18 @@
 #include "highlift/core/project_io.h"
 #include "highlift/estimation/estimator.h"
 #include "highlift/optimize/optimize.h"
+#include "../../tests/optimize/design_problem.h"
 
 namespace highlift {
 namespace {
 
-/// The design problem of `name`; with `ratio`, every geared rotary actuator's ratio is a design
-/// variable over 100-300:1 (domain.md s6; marked before estimating, so that no law reads its domain
-/// as an uncertainty), all of them one value (SameRatio).
+/// The design problem of `name` (tests/optimize/design_problem.h, with the shipped database); with
+/// `ratio`, every geared rotary actuator's ratio is a design variable over 100-300:1 (domain.md s6),
+/// all of them one value (SameRatio).
 Project DesignProblem(const std::string& name, bool ratio = false) {
-  Project project = LoadProject(std::string(HIGHLIFT_SOURCE_DIR) + "/examples/" + name);
-  // The tube geometry is marked before estimating, so that the estimator leaves each tube's
-  // stiffness and inertia to the network's tube law over the design (as `highlift optimize`
-  // does); estimated afterwards, they were intervals at the example's geometry, and the jam loads
-  // did not follow the walls.
-  for (Component& c : project.components) {
-    if (c.type == "torque_shaft") {
-      auto it = c.parameters.find("outer_diameter");
-      if (it != c.parameters.end() && it->second.nominal) {
-        it->second.domain = {0.6 * *it->second.nominal, 1.2 * *it->second.nominal};
-        it->second.design = true;
-      }
-      auto t = c.parameters.find("wall_thickness");
-      if (t != c.parameters.end() && t->second.nominal) {
-        t->second.domain = {0.4 * *t->second.nominal, 2.0 * *t->second.nominal};
-        t->second.design = true;
-      }
-    }
-    if (ratio && c.type == "geared_rotary_actuator") {
-      Parameter& r = c.parameters.at("ratio");
-      r.domain = {100.0, 300.0};
-      r.design = true;
-    }
-  }
-  componentdb::ComponentDatabase database =
+  const componentdb::ComponentDatabase database =
       componentdb::OpenDatabase("", componentdb::ComponentDatabase::Mode::kReadOnly);
-  estimation::EstimateProject(project, &database, {});
-  for (Component& c : project.components) {
-    auto mark = [&](const std::string& p) {
-      auto it = c.parameters.find(p);
-      if (it != c.parameters.end() && it->second.domain.width() > 0) it->second.design = true;
-    };
-    if (c.type == "station_torque_limiter" || c.type == "system_torque_limiter") mark("lockout_torque_extend");
-    if (c.type == "station_torque_limiter") {  // the examples' brakes are below size's rule: a domain
-      auto it = c.parameters.find("max_brake_torque");
-      if (it != c.parameters.end() && it->second.nominal) {
-        it->second.domain = {0.5 * *it->second.nominal, 8.0 * *it->second.nominal};
-        it->second.design = true;
-      }
-    }
-    if (c.type == "wing_tip_brake") mark("static_capacity");
-  }
-  return project;
+  return testing::BenchmarkDesignProblem(name, ratio, &database);
 }
 
 /// Options::same_value for DesignProblem(..., true): every geared rotary actuator's ratio one value

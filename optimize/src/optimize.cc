@@ -94,6 +94,14 @@ bool Certain(const Interval& g, icsp::Relation r) {
   return false;
 }
 
+/// How far g OP 0 is from holding at its worst point of the box g was evaluated on (<= 0: it holds
+/// there; g not empty): g's upper end for <=, minus its lower end for >=, the larger for ==.
+double WorstExcess(const Interval& g, icsp::Relation r) {
+  return r == icsp::Relation::kLessEqual      ? g.upper()
+         : r == icsp::Relation::kGreaterEqual ? -g.lower()
+                                              : std::max(g.upper(), -g.lower());
+}
+
 struct Tolerance {
   double relative, absolute;
   bool Closed(double best, double lower) const {
@@ -870,9 +878,7 @@ void Optimizer::Sensitivities(const Box& root) {
       if (con.kind != icsp::Constraint::Kind::kExpression) continue;
       const Interval g = evaluator_->Eval(con.root);
       if (icsp::IsEmpty(g)) continue;
-      out[a] = con.relation == icsp::Relation::kLessEqual      ? g.upper()
-               : con.relation == icsp::Relation::kGreaterEqual ? -g.lower()
-                                                                : std::max(g.upper(), -g.lower());
+      out[a] = WorstExcess(g, con.relation);
     }
   };
   std::vector<double> at_lo, at_hi;
@@ -955,9 +961,7 @@ void Optimizer::ChooseScenario() {
       const icsp::Constraint& con = net().constraint(icsp::ConstraintId{active[a]});
       const Interval g = evaluator_->Eval(con.root);
       if (icsp::IsEmpty(g)) continue;
-      out[a] = con.relation == icsp::Relation::kLessEqual      ? g.upper()
-               : con.relation == icsp::Relation::kGreaterEqual ? -g.lower()
-                                                                : std::max(g.upper(), -g.lower());
+      out[a] = WorstExcess(g, con.relation);
     }
   };
   scenario_.assign(uncertain_.size(), 0.0);

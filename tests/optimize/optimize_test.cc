@@ -256,51 +256,36 @@ TEST(Optimize, ParetoSecondObjectiveMustBeAnExpression) {
   }
 }
 
+// Options::Validate rejects `o` with a message naming `field`.
+void ExpectRejectedNaming(const Options& o, const std::string& field) {
+  try {
+    o.Validate();
+    ADD_FAILURE() << field << ": accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(field), std::string::npos) << e.what();
+  }
+}
+
 TEST(OptimizeOptions, DefaultsAreValidAndBadOnesNamed) {
   EXPECT_NO_THROW(Options{}.Validate());
   Options o;
   o.relative_gap = -1;
-  try {
-    o.Validate();
-    FAIL();
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("relative_gap"), std::string::npos);
-  }
+  ExpectRejectedNaming(o, "relative_gap");
   o = Options{};
   o.max_boxes = 0;
   EXPECT_THROW(o.Validate(), InputError);
   o = Options{};
   o.shaving_tries = -1;
-  try {
-    o.Validate();
-    FAIL();
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("shaving_tries"), std::string::npos);
-  }
+  ExpectRejectedNaming(o, "shaving_tries");
   o = Options{};
   o.polish_evaluations = -1;
-  try {
-    o.Validate();
-    FAIL();
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("polish_evaluations"), std::string::npos);
-  }
+  ExpectRejectedNaming(o, "polish_evaluations");
   o = Options{};
   o.resize_iterations = -1;
-  try {
-    o.Validate();
-    FAIL();
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("resize_iterations"), std::string::npos);
-  }
+  ExpectRejectedNaming(o, "resize_iterations");
   o = Options{};
   o.dependency_splits = -1;
-  try {
-    o.Validate();
-    FAIL();
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("dependency_splits"), std::string::npos);
-  }
+  ExpectRejectedNaming(o, "dependency_splits");
 }
 
 TEST(OptimizeStatus, RoundTripsToStrings) {

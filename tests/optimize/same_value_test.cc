@@ -18,46 +18,14 @@
 #include "highlift/icsp/propagator.h"
 #include "highlift/optimize/optimize.h"
 #include "highlift/reduced_models/sizing.h"
+#include "optimize/design_problem.h"
 
 namespace highlift::optimize {
 namespace {
 
-/// bench/optimize's design problem on the A320-class flaps (physics estimates only): every shaft's
-/// D (0.6-1.2 x) and t (0.4-2 x), the limiters' lock-outs and the tip brakes' capacities over their
-/// domains, the station limiters' brakes 0.5-8 x; with `ratio`, every actuator's ratio 100-300:1.
-Project Flaps(bool ratio) {
-  Project p = LoadProject(std::filesystem::path(HIGHLIFT_SOURCE_DIR) / "examples" / "a320_class_flaps.json");
-  for (Component& c : p.components) {
-    auto scale = [&](const std::string& name, double lo, double hi) {
-      Parameter& par = c.parameters.at(name);
-      par.domain = {lo * *par.nominal, hi * *par.nominal};
-      par.design = true;
-    };
-    if (c.type == "torque_shaft") {
-      scale("outer_diameter", 0.6, 1.2);
-      scale("wall_thickness", 0.4, 2.0);
-    }
-    if (ratio && c.type == "geared_rotary_actuator") {
-      c.parameters.at("ratio").domain = {100.0, 300.0};
-      c.parameters.at("ratio").design = true;
-    }
-  }
-  estimation::EstimateProject(p, nullptr);
-  for (Component& c : p.components) {
-    auto mark = [&](const std::string& name) {
-      const auto it = c.parameters.find(name);
-      if (it != c.parameters.end() && it->second.domain.width() > 0) it->second.design = true;
-    };
-    if (c.type == "station_torque_limiter" || c.type == "system_torque_limiter") mark("lockout_torque_extend");
-    if (c.type == "station_torque_limiter") {
-      Parameter& b = c.parameters.at("max_brake_torque");
-      b.domain = {0.5 * *b.nominal, 8.0 * *b.nominal};
-      b.design = true;
-    }
-    if (c.type == "wing_tip_brake") mark("static_capacity");
-  }
-  return p;
-}
+/// bench/optimize's design problem on the A320-class flaps (physics estimates only; with
+/// `ratio`, every actuator's ratio 100-300:1).
+Project Flaps(bool ratio) { return testing::BenchmarkDesignProblem("a320_class_flaps.json", ratio, nullptr); }
 
 std::vector<std::vector<std::string>> OneRatio(const Project& p) {
   std::vector<std::string> group;

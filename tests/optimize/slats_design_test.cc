@@ -8,7 +8,6 @@
 
 #include <filesystem>
 #include <string>
-#include <tuple>
 #include <vector>
 
 #include "highlift/componentdb/database.h"
@@ -16,46 +15,15 @@
 #include "highlift/estimation/estimator.h"
 #include "highlift/optimize/optimize.h"
 #include "highlift/reduced_models/sizing.h"
+#include "optimize/design_problem.h"
 
 namespace highlift::optimize {
 namespace {
 
-/// bench/optimize/optimize_bench.cc's DesignProblem("a320_class_slats.json").
-Project SlatsDesignProblem() {
-  Project project =
-      LoadProject(std::filesystem::path(HIGHLIFT_SOURCE_DIR) / "examples" / "a320_class_slats.json");
-  for (Component& c : project.components) {
-    if (c.type != "torque_shaft") continue;
-    for (const auto& [name, lo, hi] : {std::tuple{"outer_diameter", 0.6, 1.2}, {"wall_thickness", 0.4, 2.0}}) {
-      const auto it = c.parameters.find(name);
-      if (it == c.parameters.end() || !it->second.nominal) continue;
-      it->second.domain = {lo * *it->second.nominal, hi * *it->second.nominal};
-      it->second.design = true;
-    }
-  }
-  componentdb::ComponentDatabase database =
-      componentdb::OpenDatabase("", componentdb::ComponentDatabase::Mode::kReadOnly);
-  estimation::EstimateProject(project, &database, {});
-  for (Component& c : project.components) {
-    auto mark = [&](const std::string& p) {
-      const auto it = c.parameters.find(p);
-      if (it != c.parameters.end() && it->second.domain.width() > 0) it->second.design = true;
-    };
-    if (c.type == "station_torque_limiter" || c.type == "system_torque_limiter") mark("lockout_torque_extend");
-    if (c.type == "station_torque_limiter") {
-      const auto it = c.parameters.find("max_brake_torque");
-      if (it != c.parameters.end() && it->second.nominal) {
-        it->second.domain = {0.5 * *it->second.nominal, 8.0 * *it->second.nominal};
-        it->second.design = true;
-      }
-    }
-    if (c.type == "wing_tip_brake") mark("static_capacity");
-  }
-  return project;
-}
-
 TEST(OptimizeSlats, ResizedTubesCloseTheCertifiedGapBelowOnePercentWithinTenBoxes) {
-  const Project project = SlatsDesignProblem();
+  const componentdb::ComponentDatabase database =
+      componentdb::OpenDatabase("", componentdb::ComponentDatabase::Mode::kReadOnly);
+  const Project project = testing::BenchmarkDesignProblem("a320_class_slats.json", false, &database);
   Options o;
   o.relative_gap = 0.01;
   o.max_boxes = 10;
