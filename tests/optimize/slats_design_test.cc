@@ -1,9 +1,12 @@
 // The A320-class slats' design problem of bench/optimize (every tube's outer diameter 0.6-1.2x
 // and wall 0.4-2x the example's, the limiter settings and the tip brakes' capacities): the
 // incumbent's tubes resized along their jam requirements (Options::resize_iterations) and the
-// worst-case point voted by every check where the incumbent's active ones do not decide, the
-// certified gap closes below 1 % within 10 boxes (before: 4.2 % after 60 boxes, 75.34 kg against
-// 72.21 kg; docs/performance.md), and the design passes the robust check and `size`.
+// worst-case point voted by every check where the incumbent's active ones do not decide. Without
+// a torsional buckling law the certified gap closed below 1 % within 10 boxes, with walls at the
+// space's least (0.6 mm, D/t up to 64); with the tubes' capacity at min(tau_allow, tau_cr), the
+// jam requirements also against the buckling stress, the resized tubes stay at D/t <= 38 and the
+// gap after 10 boxes is 3.3 % (2.6 % after 60; docs/performance.md). The design passes the
+// robust check (its jam requirements against the buckling stress too) and `size`.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -20,7 +23,7 @@
 namespace highlift::optimize {
 namespace {
 
-TEST(OptimizeSlats, ResizedTubesCloseTheCertifiedGapBelowOnePercentWithinTenBoxes) {
+TEST(OptimizeSlats, ResizedTubesStayBelowDOverT40WithTheGapBelowFourPercentWithinTenBoxes) {
   const componentdb::ComponentDatabase database =
       componentdb::OpenDatabase("", componentdb::ComponentDatabase::Mode::kReadOnly);
   const Project project = testing::BenchmarkDesignProblem("a320_class_slats.json", false, &database);
@@ -32,9 +35,20 @@ TEST(OptimizeSlats, ResizedTubesCloseTheCertifiedGapBelowOnePercentWithinTenBoxe
   o.verify_peak = false;  // as the benchmark: the actuators' rupture loads fail peak at every design
   const Report r = Optimize(project, o);
   ASSERT_TRUE(r.found) << r.FullReport();
-  EXPECT_EQ(r.status, Status::kOptimal) << r.BriefReport();
-  EXPECT_LE(r.gap, 0.01) << r.BriefReport();
+  EXPECT_LE(r.gap, 0.04) << r.BriefReport();
   EXPECT_LE(r.lower_bound, r.best);
+  // Every designed tube's slenderness: its buckling stress (laws.h) grows as (t/r)^(3/2).
+  int tubes = 0;
+  for (const DesignValue& d : r.design) {
+    if (d.name.size() < 15 || d.name.compare(d.name.size() - 15, 15, ".outer_diameter") != 0) continue;
+    const std::string wall = d.name.substr(0, d.name.size() - 15) + ".wall_thickness";
+    for (const DesignValue& w : r.design)
+      if (w.name == wall) {
+        ++tubes;
+        EXPECT_LT(d.value_si / w.value_si, 40.0) << d.name;
+      }
+  }
+  EXPECT_EQ(tubes, 24);
   // The design is what the robust check accepts, with the reported mass, and `size` passes it.
   DesignEvaluator check(project, o);
   std::vector<double> x;
