@@ -1,7 +1,6 @@
 #include "highlift/icsp/drive_system.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -572,7 +571,6 @@ class Builder {
              "torsional buckling stress of the tube, tau_cr (elastic, long or moderate length, knock-down gamma; "
              "NASA SP-8007 s. 4.1.4)",
              model::TubeBucklingStress(R("shear_modulus"), R("poisson_ratio"), R("buckling_knockdown"), D, t, L));
-      buckling_.push_back(s.id);
     }
     if (HasParam(s, "allowable_shear_stress")) {
       if (buckling)
@@ -584,32 +582,6 @@ class Builder {
         Define(p + "torque_capacity", "N*m", "torque at the allowable shear stress, tau_allow 2 Ip / D",
                model::TubeTorqueCapacity(R("allowable_shear_stress"), D, Var(p + "polar_moment")));
     }
-  }
-
-  /// A requirement written against a tube's allowable shear stress (the examples' capacity
-  /// requirements, `1.5 * peak.jam_l1.shaft_l1 <= shaft_l1.allowable_shear_stress * 0.19634954
-  /// * (D^4 - (D - 2 t)^4) / D`) holds against its torsional buckling stress too: the same
-  /// expression with `<shaft>.allowable_shear_stress` read as `<shaft>.buckling_stress`, a
-  /// second constraint of the same requirement (a thin wall buckles before it reaches the
-  /// material's allowable). Empty when the expression reads no such tube's allowable.
-  std::string AgainstBuckling(const std::string& expression) const {
-    auto ident = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.'; };
-    std::string out = expression;
-    bool any = false;
-    for (const std::string& id : buckling_) {
-      const std::string from = id + ".allowable_shear_stress", to = id + ".buckling_stress";
-      for (std::size_t at = out.find(from); at != std::string::npos; at = out.find(from, at)) {
-        const std::size_t end = at + from.size();
-        if ((at > 0 && ident(out[at - 1])) || (end < out.size() && ident(out[end]))) {
-          at = end;
-          continue;
-        }
-        out.replace(at, from.size(), to);
-        at += to.size();
-        any = true;
-      }
-    }
-    return any ? out : std::string();
   }
 
   /// A requirement may write a tube's polar moment out in D and t, as the examples' capacity
@@ -1211,13 +1183,6 @@ class Builder {
       }
       out_.requirement_of[id.value] = r.id;
       ++out_.requirement_constraints;
-      if (const std::string buckling = AgainstBuckling(r.expression); !buckling.empty()) {
-        const ParsedConstraint pc = ParseConstraint(net(), buckling, "requirement '" + r.id + "' (torsional buckling)", r.where, {}, true);
-        const ConstraintId bid = net().AddConstraint(
-            net().Replace(pc.lhs, identities_), pc.relation, net().Replace(pc.rhs, identities_),
-            {r.id, r.description + " (against the tubes' torsional buckling stress)", ConstraintRole::kRequirement, buckling});
-        out_.requirement_of[bid.value] = r.id;  // the same requirement: counted once
-      }
     }
   }
 
@@ -1235,7 +1200,6 @@ class Builder {
   std::optional<reduced_models::PeakStructure> peaks_;  // the sizing cases of reduced_models
   std::map<std::string, int> node_index_;               // component id -> node of peaks_
   std::string peaks_error_;                             // why there are no sizing cases
-  std::vector<std::string> buckling_;  // the tubes with a torsional buckling stress (Shaft)
   std::unordered_map<int, ExprId> identities_;  // node as a requirement may write it -> an equal node
                                                 // over the derived variables (PolarMomentIdentity)
 };
