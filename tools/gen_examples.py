@@ -102,11 +102,9 @@ def table_position(points, unit):
 # Tubes
 
 def tube_capacity_expression(shaft):
-    """Ultimate torque of a tube, tau_allow * Ip / (D/2) = tau_allow * pi/16 * (D^4 - d^4) / D,
-    over the shaft's own parameters (the constraint language has no name for pi)."""
-    D = f"{shaft}.outer_diameter"
-    t = f"{shaft}.wall_thickness"
-    return (f"{shaft}.allowable_shear_stress * 0.19634954 * ({D}^4 - ({D} - 2 * {t})^4) / {D}")
+    """Ultimate torque of a tube, min(tau_allow, tau_cr) * Ip / (D/2) with tau_cr its torsional
+    buckling stress: the network's derived <shaft>.torque_capacity (docs/optimize.md)."""
+    return f"{shaft}.torque_capacity"
 
 
 def shaft_parameters(length, D_mm, t_mm, geometry_note, material, x):
@@ -418,13 +416,13 @@ def requirements(wings, stations, d):
         reqs.append(requirement(
             f"jam_{st}_shaft", f"1.5 * peak.jam_{st}.{segment} <= {tube_capacity_expression(segment)}",
             f"peak torque in the shaft inboard of station {st} during a jam there, times the "
-            "factor of safety 1.5 (CS 25.303), stays below the tube's ultimate torque "
-            "tau_allow * Ip / (D/2) = tau_allow * pi/16 * (D^4 - d^4) / D"))
+            "factor of safety 1.5 (CS 25.303), stays below the tube's torque capacity "
+            "min(tau_allow, tau_cr) * Ip / (D/2), tau_cr its torsional buckling stress"))
     last = wings["left"]["shafts"][-1]
     reqs.append(requirement(
         "rupture_wtb_shaft", f"1.5 * peak.rupture_wtb.{last} <= {tube_capacity_expression(last)}",
         "peak torque in the outboard shaft when the left WTB stops the back-driven shaft after "
-        "the rupture, times 1.5, stays below the tube's ultimate torque"))
+        "the rupture, times 1.5, stays below the tube's torque capacity (shear or torsional buckling)"))
     # No requirement compares the rupture's peak with the WTB's static capacity: the peak at the
     # brake is its own friction torque (the single-DOF estimate is capped there, where the brake
     # slips), and holding the wing afterwards is the static requirement wtb_capacity_<side> above.

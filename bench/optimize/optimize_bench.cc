@@ -184,6 +184,20 @@ optimize::Report RunOptimize(benchmark::State& state, const Project& project, co
   for (const optimize::DesignValue& v : r.design)  // the shared actuator ratio of the best design
     if (v.same_as.empty() && v.name.size() > 6 && v.name.compare(v.name.size() - 6, 6, ".ratio") == 0)
       state.counters["ratio"] = v.value;
+  // The designed tubes' slenderness D/t (its torsional buckling stress falls as (t/r)^(3/2)).
+  double most = 0.0, least = INFINITY;
+  for (const optimize::DesignValue& d : r.design) {
+    const std::size_t dot = d.name.rfind(".outer_diameter");
+    if (dot == std::string::npos || dot + 15 != d.name.size()) continue;
+    const std::string wall = d.name.substr(0, dot) + ".wall_thickness";
+    for (const optimize::DesignValue& w : r.design)
+      if (w.name == wall && w.value_si > 0) {
+        most = std::max(most, d.value_si / w.value_si);
+        least = std::min(least, d.value_si / w.value_si);
+      }
+  }
+  state.counters["max_D_over_t"] = r.found && most > 0 ? most : NAN;
+  state.counters["min_D_over_t"] = r.found && most > 0 ? least : NAN;
   return r;
 }
 
@@ -212,6 +226,21 @@ void BM_Optimize(benchmark::State& state, const char* example, double gap, doubl
   }
 }
 
+/// The deterministic run of the design problem (docs/performance.md): at most `boxes` boxes,
+/// no time limit in practice (1000 s), no polish, so the same digits on any load.
+void BM_OptimizeBoxes(benchmark::State& state, const char* example, int boxes, bool ratio) {
+  const Project project = DesignProblem(example, ratio);
+  optimize::Options o;
+  o.same_value = SameRatio(project);
+  o.relative_gap = 0.01;
+  o.max_seconds = 1000.0;
+  o.max_boxes = boxes;
+  o.polish_evaluations = 0;
+  o.verify_peak = false;  // as BM_Optimize
+  const optimize::Report r = RunOptimize(state, project, o);
+  state.SetLabel(r.BriefReport());
+}
+
 /// The same design problem with every shaft's D and t one of the standard tube sizes
 /// (Options::tube_sizes, ISO 3 R20): the discrete optimum against the continuous one above. No
 /// baselines (DesignEvaluator checks points as given, not snapped to sizes).
@@ -235,6 +264,9 @@ BENCHMARK_CAPTURE(BM_Optimize, a320_slats, "a320_class_slats.json", 0.01, 10.0, 
     ->Unit(benchmark::kSecond)->Iterations(1);
 BENCHMARK_CAPTURE(BM_Optimize, a380_flaps, "a380_class_flaps.json", 0.01, 60.0, true)
     ->Unit(benchmark::kSecond)->Iterations(1);
+BENCHMARK_CAPTURE(BM_OptimizeBoxes, a320_flaps_60, "a320_class_flaps.json", 60, false)->Unit(benchmark::kSecond)->Iterations(1);
+BENCHMARK_CAPTURE(BM_OptimizeBoxes, a320_slats_60, "a320_class_slats.json", 60, false)->Unit(benchmark::kSecond)->Iterations(1);
+BENCHMARK_CAPTURE(BM_OptimizeBoxes, a380_flaps_60, "a380_class_flaps.json", 60, true)->Unit(benchmark::kSecond)->Iterations(1);
 BENCHMARK_CAPTURE(BM_OptimizeTubeSizes, a380_flaps, "a380_class_flaps.json", 0.01, 60.0, true)
     ->Unit(benchmark::kSecond)->Iterations(1);
 

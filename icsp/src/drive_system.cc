@@ -10,6 +10,7 @@
 #include <optional>
 #include <queue>
 #include <set>
+#include <string>
 #include <unordered_map>
 
 #include "highlift/core/catalogue.h"
@@ -564,9 +565,23 @@ class Builder {
     if (!tube) return;
     if (HasParam(s, "density"))
       Define(p + "mass", "kg", "tube mass m = rho pi (D - t) t L", model::ShaftMass(R("density"), D, t, L));
-    if (HasParam(s, "allowable_shear_stress"))
-      Define(p + "torque_capacity", "N*m", "torque at the allowable shear stress, tau_allow 2 Ip / D",
-             model::TubeTorqueCapacity(R("allowable_shear_stress"), D, Var(p + "polar_moment")));
+    const bool buckling = HasParam(s, "shear_modulus") && HasParam(s, "poisson_ratio") && HasParam(s, "buckling_knockdown");
+    if (buckling) {
+      Define(p + "buckling_stress", "MPa",
+             "torsional buckling stress of the tube, tau_cr (elastic, long or moderate length, knock-down gamma; "
+             "NASA SP-8007 s. 4.1.4)",
+             model::TubeBucklingStress(R("shear_modulus"), R("poisson_ratio"), R("buckling_knockdown"), D, t, L));
+    }
+    if (HasParam(s, "allowable_shear_stress")) {
+      if (buckling)
+        Define(p + "torque_capacity", "N*m",
+               "torque at the lesser of the allowable shear stress and the buckling stress, min(tau_allow, tau_cr) 2 Ip / D",
+               model::TubeTorqueCapacityWithBuckling(R("allowable_shear_stress"), Var(p + "buckling_stress"), D,
+                                                     Var(p + "polar_moment")));
+      else
+        Define(p + "torque_capacity", "N*m", "torque at the allowable shear stress, tau_allow 2 Ip / D",
+               model::TubeTorqueCapacity(R("allowable_shear_stress"), D, Var(p + "polar_moment")));
+    }
   }
 
   /// A requirement may write a tube's polar moment out in D and t, as the examples' capacity

@@ -6,8 +6,10 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <optional>
 #include <queue>
 #include <set>
+#include <span>
 #include <sstream>
 
 #include "highlift/core/error.h"
@@ -29,6 +31,7 @@ using icsp::Interval;
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr int kTubeBoundRounds = 3;  ///< TubeBounds and propagation per box, at most
 
 bool EndsWith(const std::string& s, const std::string& suffix) {
   return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
@@ -90,6 +93,17 @@ bool Certain(const Interval& g, icsp::Relation r) {
     case icsp::Relation::kLessEqual: return g.upper() <= 0.0;
     case icsp::Relation::kGreaterEqual: return g.lower() >= 0.0;
     case icsp::Relation::kEqual: return g.lower() == 0.0 && g.upper() == 0.0;
+  }
+  return false;
+}
+
+/// g OP 0 holds at no point of the box g was evaluated on.
+bool Impossible(const Interval& g, icsp::Relation r) {
+  if (icsp::IsEmpty(g)) return true;
+  switch (r) {
+    case icsp::Relation::kLessEqual: return g.lower() > 0.0;
+    case icsp::Relation::kGreaterEqual: return g.upper() < 0.0;
+    case icsp::Relation::kEqual: return g.lower() > 0.0 || g.upper() < 0.0;
   }
   return false;
 }
@@ -231,10 +245,13 @@ class Optimizer {
   void CoordinateSearch();
   void SetupResize();
   void ResizeTubes();
+  bool TubeBounds(Box& box, const std::vector<Box>& others);
+  bool TubeContract(Box& box);
+  void ChooseOtherPoints(const Box& at);
   void Polish(double lower);
   double ObjectiveAt(const std::vector<double>& x);
   double Shave(Box& box, double lb);
-  bool ShaveSlice(Box& box, int v, double slice, const std::vector<char>& enabled = {});
+  bool ShaveSlice(Box& box, int v, double slice, const std::vector<char>& enabled = {}, bool tubes = false);
   void ShavingNeighbourhoods();
   void Sensitivities(const Box& root);
   void ChooseScenario();
@@ -287,6 +304,11 @@ class Optimizer {
   bool have_scenario_ = false;
   int scenario_generation_ = 0;         ///< incremented whenever scenario_ is chosen again
   std::string scenario_note_;
+  /// The second point (TubeBounds): scenario_ with each resizable tube's own uncertain parameters
+  /// (its allowable, shear modulus, Poisson's ratio, ...) at the end that weakens the tube.
+  std::vector<char> undecided_;  ///< per uncertain parameter: the first vote left it at the middle
+  /// The further points of TubeContract (ChooseOtherPoints), each one the incumbent passes.
+  std::vector<std::vector<double>> other_points_;
   bool verify_size_ = false, verify_peak_ = false;
   std::string verification_note_;
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
@@ -302,6 +324,7 @@ class Optimizer {
     std::size_t d = 0, t = 0;
     std::vector<std::pair<int, int>> laws;
     std::vector<int> checks;
+    std::vector<std::size_t> own;  ///< the uncertain parameters its laws read (indices into uncertain_)
   };
   std::vector<Resizable> resizable_;
   // Incumbent.
@@ -937,7 +960,11 @@ std::vector<double> Optimizer::StepTowardsSmaller(const std::vector<double>& x) 
 /// over them), or at its middle when it does not move them. Any point of the domains gives a sound
 /// relaxation (a robustly feasible design is feasible at every point, and its worst-case objective
 /// is at least the objective there), so the boxes are contracted at this point: the worse the
-/// point, the tighter the lower bound.
+/// point, the tighter the lower bound. Each parameter is voted with the others at the middle of
+/// their domains: over their whole domains the interval enclosure decouples what shares them (a
+/// jam's w w1 J*: its eigenfrequency at the light corner, J* at the heavy one), so an inertia that
+/// raises a jam load at every point looked better at its upper end and was put at its lower.
+/// Then the further points of the tubes' bounds (ChooseOtherPoints).
 void Optimizer::ChooseScenario() {
   const Candidate probe = Evaluate(StepTowardsSmaller(best_x_), false);
   std::vector<int> active;
@@ -954,6 +981,7 @@ void Optimizer::ChooseScenario() {
   Box base = initial_;
   for (std::size_t i = 0; i < design_.size(); ++i) base[design_[i]] = Interval(best_x_[i]);
   base[bound_] = icsp::Whole();
+  for (int v : uncertain_) base[v] = Interval(Mid(initial_[v]));
   auto worst = [&](const Box& box, std::vector<double>& out) {
     out.assign(active.size(), -kInf);
     evaluator_->Reset(&box);
@@ -965,6 +993,7 @@ void Optimizer::ChooseScenario() {
     }
   };
   scenario_.assign(uncertain_.size(), 0.0);
+  undecided_.assign(uncertain_.size(), 0);
   std::vector<double> at_lo, at_hi;
   for (std::size_t j = 0; j < uncertain_.size(); ++j) {
     const Interval d = initial_[uncertain_[j]];
@@ -986,6 +1015,7 @@ void Optimizer::ChooseScenario() {
     }
     const double inside = 1e-6 * (d.upper() - d.lower());
     scenario_[j] = votes > 0 ? d.lower() + inside : votes < 0 ? d.upper() - inside : Mid(d);
+    undecided_[j] = votes == 0;
   }
   // A point where the propagation itself fails (a stiffness of exactly 0 gives 1/0) would cut off
   // designs that are feasible; so the point is taken a hair (1e-6 of the domain) inside the worst
@@ -996,8 +1026,69 @@ void Optimizer::ChooseScenario() {
   check[bound_] = icsp::Whole();
   have_scenario_ = propagator_->Propagate(check).status != icsp::Status::kInfeasible;
   ++scenario_generation_;
+  other_points_.clear();
+  if (have_scenario_) ChooseOtherPoints(check);
   if (!have_scenario_) scenario_note_ = "the worst-case point of the uncertain parameters was not used (the network "
                                         "rejects the best design there); the bound is the existential relaxation's";
+
+}
+
+/// The further points of TubeContract: a robust design meets every check at every point of the
+/// uncertain domains, so a lower bound may require it at several. The first (scenario_) is voted
+/// by the active checks, each parameter for the end most of them find worse; so a parameter that
+/// raises the loads of many tubes goes where the loads are highest even where it weakens a tube
+/// itself (a tube's shear modulus: its stiffness raises the jam loads through it, its buckling
+/// stress grows with E = 2 G (1 + nu)). The weak point moves each resizable tube's own uncertain
+/// parameters (its allowable, shear modulus, Poisson's ratio, ...) to the end where its own checks
+/// are worse at the incumbent (`at`: the network propagated there at scenario_; the tube's laws
+/// evaluated again, the loads held), by the votes of those checks; it is used when the incumbent
+/// passes the network there. A parameter the first vote left undecided (at the middle of its
+/// domain: no check moved with it there, e.g. the allowable shear stress where the buckling stress
+/// governs min(tau_allow, tau_cr) at the middle point) goes to its weak end in the first point too.
+/// Tried and not kept (docs/performance.md): a point of the parameters the active checks voted
+/// both ways on, and the tubes' own points (each tube's checks' votes) in groups.
+void Optimizer::ChooseOtherPoints(const Box& at) {
+  const std::size_t n = uncertain_.size();
+  auto passes = [&](const std::vector<double>& point) {
+    Box check = initial_;
+    for (std::size_t j = 0; j < n; ++j) check[uncertain_[j]] = Interval(point[j]);
+    for (std::size_t i = 0; i < design_.size(); ++i) check[design_[i]] = Interval(best_x_[i]);
+    check[bound_] = icsp::Whole();
+    return propagator_->Propagate(check).status != icsp::Status::kInfeasible;
+  };
+  std::vector<double> weak = scenario_;
+  Box work = at;
+  for (const Resizable& r : resizable_) {
+    for (std::size_t j : r.own) {
+      const Interval d = initial_[uncertain_[j]];
+      std::vector<double> excess[2];
+      for (int end = 0; end < 2; ++end) {
+        work[uncertain_[j]] = Interval(end == 0 ? d.lower() : d.upper());
+        for (const auto& [z, rhs] : r.laws) {
+          evaluator_->Reset(&work);
+          work[z] = evaluator_->Eval(rhs);
+        }
+        evaluator_->Reset(&work);
+        for (int k : r.checks) {
+          const icsp::Constraint& con = net().constraint(icsp::ConstraintId{k});
+          const Interval g = evaluator_->Eval(con.root);
+          excess[end].push_back(icsp::IsEmpty(g) ? kInf : WorstExcess(g, con.relation));
+        }
+      }
+      work[uncertain_[j]] = at[uncertain_[j]];
+      for (const auto& [z, rhs] : r.laws) work[z] = at[z];
+      const double inside = 1e-6 * (d.upper() - d.lower());
+      int votes = 0;  // > 0: the lower end is worse
+      for (std::size_t a = 0; a < excess[0].size(); ++a)
+        votes += excess[0][a] > excess[1][a] ? 1 : excess[0][a] < excess[1][a] ? -1 : 0;
+      if (votes != 0) weak[j] = votes > 0 ? d.lower() + inside : d.upper() - inside;
+    }
+  }
+  std::vector<double> first = scenario_;
+  for (std::size_t j = 0; j < n; ++j)
+    if (undecided_[j]) first[j] = weak[j];
+  if (first != scenario_ && passes(first)) scenario_ = first;
+  if (weak != scenario_ && passes(weak)) other_points_.push_back(weak);
 
 }
 
@@ -1083,12 +1174,12 @@ void Optimizer::CoordinateSearch() {
   }
 }
 
-/// The tubes ResizeTubes can resize: an objective term that is a torque shaft's own derived
+/// The tubes ResizeTubes can resize and TubeBounds bounds: an objective term that is a torque shaft's own derived
 /// quantity (its mass) with both its outer diameter and its wall design variables (not with
 /// Options::tube_sizes: the sizes are discrete).
 void Optimizer::SetupResize() {
   resizable_.clear();
-  if (tubes_ || options_.resize_iterations <= 0) return;
+  if (tubes_ || (options_.resize_iterations <= 0 && options_.tube_bound_splits <= 0)) return;
   const int nc = net().num_constraints();
   for (int term : terms_) {
     const std::string& name = net().variable(icsp::VariableId{term}).name;
@@ -1124,6 +1215,9 @@ void Optimizer::SetupResize() {
         r.laws.push_back({z, rhs});
         derived[z] = 1;
         more = true;
+        for (int v : reads)
+          for (std::size_t j = 0; j < uncertain_.size(); ++j)
+            if (uncertain_[j] == v && std::find(r.own.begin(), r.own.end(), j) == r.own.end()) r.own.push_back(j);
       }
     }
     if (!derived[term]) continue;  // the term is not the tube's own law of D and t
@@ -1248,6 +1342,160 @@ void Optimizer::ResizeTubes() {
     x = next;
     loads = c.box;
   }
+}
+
+/// The tubes' own lower bound (Options::tube_bound_splits; docs/optimize.md, Method 2). HC4 and
+/// shaving revise one constraint at a time, so a tube's term is bounded at the corner its
+/// diameter's and wall's lower ends make, each contracted by the capacity requirement at the
+/// other's upper end; where the lightest tube lies inside the rectangle (with the buckling
+/// stress, where tau_cr reaches tau_allow: the capacity min(tau_allow, tau_cr) 2 Ip / D has a kink
+/// along D/t = const) that corner is far below it. Here each tube's (D, t) rectangle of `box` is
+/// paved best first (the piece of least mass split across its relatively wider side): a piece is
+/// dropped when its own laws (mass, capacity, stiffness, ...) evaluated over it fall outside their
+/// enclosures in `box`, or a check that reads the tube fails at every point of it (the other
+/// variables, the loads among them, at their enclosures in `box`: every solution in `box` has
+/// them there), so every solution's (D, t) lies in a kept piece. The least mass of the kept pieces
+/// bounds the term from below, and their hull contracts D and t. Stops when that least piece's
+/// mass is known within a tenth of relative_gap or after tube_bound_splits splits. False when a
+/// tube keeps no piece: `box` holds no solution.
+bool Optimizer::TubeBounds(Box& box, const std::vector<Box>& others) {
+  if (resizable_.empty() || options_.tube_bound_splits <= 0) return true;
+  // The boxes a piece is checked in: `box`, and `others` (the same designs at the other points);
+  // the laws of a piece are met with their enclosures in each.
+  std::vector<const Box*> in = {&box};
+  for (const Box& o : others) in.push_back(&o);
+  std::vector<Box> works;
+  for (const Box* b : in) works.push_back(*b);
+  const double eps = 0.1 * options_.relative_gap;
+  constexpr int kGrid = 8;  // the first paving: kGrid x kGrid pieces
+  struct Piece {
+    Interval D, t;
+    double lo = 0.0, hi = 0.0;  // the term's enclosure over the piece
+    std::vector<Interval> z;    // the tube's own quantities over it (in `box`), as r.laws
+  };
+  for (const Resizable& r : resizable_) {
+    const int D = design_[r.d], t = design_[r.t];
+    // The piece's own quantities; false when the piece holds no solution.
+    auto evaluate = [&](Piece& p) {
+      ++counters_.tube_bound_pieces;
+      for (std::size_t b = 0; b < in.size(); ++b) {
+        Box& work = works[b];
+        work[D] = p.D;
+        work[t] = p.t;
+        for (const auto& [z, rhs] : r.laws) {
+          evaluator_->Reset(&work);
+          work[z] = icsp::Meet((*in[b])[z], evaluator_->Eval(rhs));
+          if (icsp::IsEmpty(work[z])) return false;
+        }
+        evaluator_->Reset(&work);
+        for (int k : r.checks) {
+          const icsp::Constraint& con = net().constraint(icsp::ConstraintId{k});
+          if (Impossible(evaluator_->Eval(con.root), con.relation)) return false;
+        }
+      }
+      p.lo = works[0][r.term].lower();
+      p.hi = works[0][r.term].upper();
+      p.z.clear();
+      for (const auto& law : r.laws) p.z.push_back(works[0][law.first]);
+      return true;
+    };
+    const Interval D0 = box[D], t0 = box[t];
+    auto later = [](const Piece& a, const Piece& b) { return a.lo > b.lo; };
+    std::priority_queue<Piece, std::vector<Piece>, decltype(later)> queue(later);
+    auto cut = [](const Interval& x, int i, int n) {
+      const double w = (x.upper() - x.lower()) / n;
+      return Interval(i == 0 ? x.lower() : x.lower() + i * w, i == n - 1 ? x.upper() : x.lower() + (i + 1) * w);
+    };
+    for (int i = 0; i < kGrid; ++i)
+      for (int j = 0; j < kGrid; ++j) {
+        Piece p;
+        p.D = cut(D0, i, kGrid);
+        p.t = cut(t0, j, kGrid);
+        if (evaluate(p)) queue.push(std::move(p));
+      }
+    // Best first: the lightest piece split across its relatively wider side, until its mass is
+    // known within eps.
+      for (int split = 0; !queue.empty() && split < options_.tube_bound_splits; ++split) {
+      const Piece p = queue.top();
+      if (p.hi - p.lo <= eps * std::fabs(p.lo)) break;
+      queue.pop();
+      const double wd = (p.D.upper() - p.D.lower()) / std::max(D0.upper() - D0.lower(), 1e-300);
+      const double wt = (p.t.upper() - p.t.lower()) / std::max(t0.upper() - t0.lower(), 1e-300);
+      Piece a = p, b = p;
+      if (wd >= wt) {
+        a.D = cut(p.D, 0, 2);
+        b.D = cut(p.D, 1, 2);
+      } else {
+        a.t = cut(p.t, 0, 2);
+        b.t = cut(p.t, 1, 2);
+      }
+      if (evaluate(a)) queue.push(std::move(a));
+      if (evaluate(b)) queue.push(std::move(b));
+    }
+    // Restore the tube's own quantities for the next tube (its checks read this tube's as the boxes').
+    for (std::size_t b = 0; b < in.size(); ++b) {
+      works[b][D] = (*in[b])[D];
+      works[b][t] = (*in[b])[t];
+      for (const auto& [z, rhs] : r.laws) works[b][z] = (*in[b])[z];
+    }
+    if (queue.empty()) return false;
+    // Every solution's (D, t) is in a kept piece: the least mass, and the hulls of D, t and the
+    // tube's own quantities (its stiffness and inertia, which the loads read).
+    const double lo = queue.top().lo;
+    Interval hd = queue.top().D, ht = queue.top().t;
+    std::vector<Interval> hz = queue.top().z;
+    auto hull = [](const Interval& a, const Interval& b) {
+      return Interval(std::min(a.lower(), b.lower()), std::max(a.upper(), b.upper()));
+    };
+    for (; !queue.empty(); queue.pop()) {
+      const Piece& p = queue.top();
+      hd = hull(hd, p.D);
+      ht = hull(ht, p.t);
+      for (std::size_t k = 0; k < hz.size(); ++k) hz[k] = hull(hz[k], p.z[k]);
+    }
+    box[D] = icsp::Meet(box[D], hd);
+    box[t] = icsp::Meet(box[t], ht);
+    for (std::size_t k = 0; k < hz.size(); ++k) {
+      const int z = r.laws[k].first;
+      box[z] = icsp::Meet(box[z], hz[k]);
+      if (icsp::IsEmpty(box[z])) return false;
+    }
+    box[r.term] = icsp::Meet(box[r.term], Interval(lo, kInf));
+    if (icsp::IsEmpty(box[r.term])) return false;
+    for (Box& work : works) {  // the contracted D and t hold at either point
+      work[D] = box[D];
+      work[t] = box[t];
+    }
+    for (const auto& law : r.laws) works[0][law.first] = box[law.first];
+  }
+  return true;
+}
+
+/// The contractor with the tubes' own bounds (TubeBounds) on `box` (propagated already): with
+/// the boxes of the other points beside it, again while a round raises the objective's lower bound by a
+/// tenth of the tolerance (the contracted tubes' stiffnesses and inertias raise the loads' lower
+/// ends, which drop more pieces). False when `box` holds no solution.
+bool Optimizer::TubeContract(Box& box) {
+  if (tubes_ || resizable_.empty() || options_.tube_bound_splits <= 0) return true;
+  for (int round = 0; round < kTubeBoundRounds; ++round) {
+    // The same designs at the other points (ChooseOtherPoints): a robust design is in each box.
+    std::vector<Box> others;
+    if (have_scenario_)
+      for (const std::vector<double>& point : other_points_) {
+        Box o = initial_;
+        for (std::size_t j = 0; j < uncertain_.size(); ++j) o[uncertain_[j]] = Interval(point[j]);
+        for (int v : design_) o[v] = box[v];
+        o[bound_] = box[bound_];
+        if (propagator_->Propagate(o).status == icsp::Status::kInfeasible) return false;
+        others.push_back(std::move(o));
+      }
+    const double before = box[objective_].lower();
+    if (!TubeBounds(box, others)) return false;
+    if (propagator_->Propagate(box).status == icsp::Status::kInfeasible) return false;
+    if (!(box[objective_].lower() - before > 0.1 * options_.relative_gap * std::fabs(box[objective_].lower())))
+      break;
+  }
+  return true;
 }
 
 /// The objective at x (the middle of its enclosure over the remaining domains; definitions only),
@@ -1410,14 +1658,16 @@ void Optimizer::LocalSearch(const std::vector<Interval>& d) {
 /// One shaving trial: is "v <= its lower bound + slice" empty in `box` (propagated)? If the
 /// propagation proves it, no solution of the box has v there: v's lower end is cut off (a set
 /// operation on the box, sound as the propagation is).
-bool Optimizer::ShaveSlice(Box& box, int v, double slice, const std::vector<char>& enabled) {
+bool Optimizer::ShaveSlice(Box& box, int v, double slice, const std::vector<char>& enabled, bool tubes) {
   const Interval cur = box[v];
   const double cut = cur.lower() + slice;
   if (!(slice > 0.0) || !(cut < cur.upper())) return false;
   Box trial = box;
   trial[v] = Interval(cur.lower(), cut);
   ++counters_.shaving_propagations;
-  if (shaving_propagator_->Propagate(trial, enabled).status != icsp::Status::kInfeasible) return false;
+  if (shaving_propagator_->Propagate(trial, enabled).status != icsp::Status::kInfeasible &&
+      (!tubes || TubeContract(trial)))
+    return false;
   ++counters_.shaving_cuts;
   box[v] = Interval(cut, cur.upper());
   return true;
@@ -1463,7 +1713,7 @@ double Optimizer::Shave(Box& box, double lb) {
   double slice = 0.25 * gap();
   for (int t = 0; t < tries; ++t) {
     if (!(gap() > 0.0)) break;
-    if (ShaveSlice(box, objective_, slice)) {
+    if (ShaveSlice(box, objective_, slice, {}, true)) {
       cut = true;
       slice *= 2.0;
       lb = std::max(lb, box[objective_].lower());
@@ -1703,7 +1953,8 @@ Report Optimizer::Run() {
     if (!node.term_lo.empty() && (node.term_generation < 0 || node.term_generation == generation))
       for (std::size_t t = 0; t < terms_.size(); ++t)
         box[terms_[t]] = icsp::Meet(box[terms_[t]], Interval(node.term_lo[t], kInf));
-    const icsp::PropagationReport pr = propagator_->Propagate(box);
+    icsp::PropagationReport pr = propagator_->Propagate(box);
+    if (pr.status != icsp::Status::kInfeasible && !TubeContract(box)) pr.status = icsp::Status::kInfeasible;
     if (pr.status == icsp::Status::kInfeasible || (tubes_ && !ContractTubes(box))) {
       if (std::isfinite(best_)) ++counters_.pruned;
       else ++counters_.infeasible_boxes;
@@ -1795,6 +2046,7 @@ Report Optimizer::Run() {
   r.peak_pruned = counters_.peak_pruned;
   r.shaving_propagations = counters_.shaving_propagations;
   r.shaving_cuts = counters_.shaving_cuts;
+  r.tube_bound_pieces = counters_.tube_bound_pieces;
   r.root_lower_bound = icsp::ToDisplay(root_lb_, objective_unit_);
   {
     std::vector<std::pair<std::string, int>> why(rejected_.begin(), rejected_.end());
@@ -2049,6 +2301,9 @@ void Options::Validate() const {
   if (polish_evaluations < 0)
     throw InputError("optimize: polish_evaluations = " + std::to_string(polish_evaluations) +
                      " must be >= 0 (0: no polish)");
+  if (tube_bound_splits < 0)
+    throw InputError("optimize: tube_bound_splits = " + std::to_string(tube_bound_splits) +
+                     " must be >= 0 (0: no tube lower bound)");
   if (resize_iterations < 0)
     throw InputError("optimize: resize_iterations = " + std::to_string(resize_iterations) +
                      " must be >= 0 (0: the incumbent's tubes are not resized)");
@@ -2202,6 +2457,7 @@ std::string Report::FullReport() const {
     o << peak_checks << " boxes through peak over their extent (" << peak_pruned << " proved to fail it), ";
   if (shaving_propagations > 0)
     o << shaving_propagations << " shaving trials (" << shaving_cuts << " cut a slice), ";
+  if (tube_bound_pieces > 0) o << tube_bound_pieces << " pieces of tubes' diameter-wall rectangles bounded, ";
   o << FormatNumber(seconds, 3) << " s\n";
   return o.str();
 }
@@ -2284,7 +2540,7 @@ nlohmann::json Report::ToJson() const {
                    {"reduced_model_checks", reduced_model_checks}, {"improvements", improvements},
                    {"peak_checks", peak_checks}, {"peak_pruned", peak_pruned},
                    {"shaving_propagations", shaving_propagations}, {"shaving_cuts", shaving_cuts},
-                   {"seconds", seconds}};
+                   {"tube_bound_pieces", tube_bound_pieces}, {"seconds", seconds}};
   return j;
 }
 

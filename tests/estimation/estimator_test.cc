@@ -91,8 +91,10 @@ TEST_F(EstimateProjectTest, ShaftStiffnessInertiaAndMassFromTubeGeometry) {
   for (const auto& d : report.derived)
     if (d.component == "shaft_1" && d.name == "torque_capacity") {
       capacity = true;
-      EXPECT_NEAR(*d.nominal, 3828.0, 5.0);  // tau_allow default 550 MPa
-      EXPECT_TRUE(d.domain.contains(3828.0));
+      // tau_allow default 550 MPa, but the 50 x 2 mm tube (D/t 25) buckles first: tau_cr 485 MPa
+      // (G 44 GPa, nu 0.33, knock-down 0.67; laws.h), 3.37 kN*m instead of 3.83.
+      EXPECT_NEAR(*d.nominal, 3374.5, 0.5);
+      EXPECT_TRUE(d.domain.contains(3374.5));
     }
   EXPECT_TRUE(capacity);
   EXPECT_GE(report.from_physics, 3u);

@@ -1,6 +1,9 @@
 // The optimize tests' small chain with an analytic optimum: PDU -> one titanium tube (2 m) ->
 // wing-tip brake. Design: D in [20, 60] mm, t in [0.5, 4] mm; requirements: torque capacity
-// >= 2000 N*m and stiffness >= 5000 N*m/rad.
+// (at the lesser of the allowable shear stress and the torsional buckling stress) >= 1500 N*m and
+// stiffness >= 5000 N*m/rad. The stiffness binds at the optimum (60 x 1.44 mm at 44 GPa, D/t 42,
+// where the tube buckles at 1623 N*m with nu at 0.31); at 2000 N*m buckling binds
+// (optimize_test.cc, TheLightestTubeRespectsTorsionalBuckling).
 #pragma once
 
 #include <string>
@@ -11,7 +14,7 @@
 
 namespace highlift::testing {
 
-inline nlohmann::json OneTubeChain(const std::string& shear_modulus = "44 GPa") {
+inline nlohmann::json OneTubeChain(const std::string& shear_modulus = "44 GPa", const std::string& capacity = "1500 N*m") {
   nlohmann::json j = nlohmann::json::parse(R"json({
   "format": "highlift-project/1",
   "name": "one tube",
@@ -27,11 +30,12 @@ inline nlohmann::json OneTubeChain(const std::string& shear_modulus = "44 GPa") 
   ],
   "connections": [["pdu.left", "shaft_1.a"], ["shaft_1.b", "wtb.a"]],
   "requirements": [
-    {"id": "capacity", "expression": "shaft_1.torque_capacity >= 2000 N*m", "description": "ultimate torque"},
+    {"id": "capacity", "expression": "shaft_1.torque_capacity >= CAPACITY", "description": "ultimate torque"},
     {"id": "stiffness", "expression": "shaft_1.c >= 5000 N*m/rad", "description": "torsional stiffness"}
   ]
 })json");
   j["components"][1]["parameters"]["shear_modulus"] = shear_modulus;
+  j["requirements"][0]["expression"] = "shaft_1.torque_capacity >= " + capacity;
   return j;
 }
 

@@ -2,8 +2,12 @@
 // tube law c = G Ip / L; inertia given, from the linear density or J = rho Ip L; damping given or
 // the structural damping beta*c; drag per length (its bearings and joints) at its two ends.
 // Full resolution: shaft_elements spring-dampers "<id>.e1".."<id>.eN" between the inertias
-// "<id>.m0".."<id>.mN"; reduced resolution: a member of a lumped chain.
+// "<id>.m0".."<id>.mN"; reduced resolution: a member of a lumped chain. Its torque capacity is at
+// the lesser of the allowable shear stress and the tube's torsional buckling stress (laws.h
+// TubeBucklingStress: NASA SP-8007 s. 4.1.4, Timoshenko & Gere s. 11.12).
 #include <algorithm>
+#include <string>
+#include <type_traits>
 
 #include "declaration.h"
 #include "highlift/model/drive_network.h"
@@ -18,7 +22,9 @@ ComponentTypeSpec TorqueShaftDeclaration() {
   t.display_name = "torque shaft";
   t.description =
       "Torque shaft segment: a tube (length, outer diameter, wall thickness, material) or given "
-      "directly by stiffness and inertia. c = G*pi/32*(D^4 - d^4)/L, J = rho*pi/32*(D^4 - d^4)*L.";
+      "directly by stiffness and inertia. c = G*pi/32*(D^4 - d^4)/L, J = rho*pi/32*(D^4 - d^4)*L. "
+      "Torque capacity min(tau_allow, tau_cr)*2*Ip/D, tau_cr the elastic torsional buckling stress of the tube "
+      "(NASA SP-8007 s. 4.1.4: long or moderate length, E = 2*G*(1 + nu), knock-down gamma).";
   t.ports = {Flange("a", "flange nearer the PDU"), Flange("b", "flange farther from the PDU")};
   auto& ps = t.parameters;
   ps.push_back(Param("length", "L", Length(), "m", "length of the segment")
@@ -48,6 +54,16 @@ ComponentTypeSpec TorqueShaftDeclaration() {
                    .Default(500, 600)
                    .Valid(1, 5000)
                    .Source("domain.md s6 (E): Ti-6Al-4V ultimate shear about 550 MPa"));
+  ps.push_back(Param("poisson_ratio", "nu", Dimensionless(), "1", "Poisson's ratio of the tube material (its torsional buckling, E = 2 G (1 + nu))")
+                   .Nominal(0.33)
+                   .Default(0.31, 0.34)
+                   .Valid(0, 0.5)
+                   .Source("(E): Ti-6Al-4V 0.31-0.34 (handbook values; with G 44 GPa, E = 2 G (1 + nu) = 115-118 GPa)"));
+  ps.push_back(Param("buckling_knockdown", "gamma", Dimensionless(), "1",
+                     "imperfection knock-down on the tube's elastic torsional buckling stress (correlation factor)")
+                   .Nominal(0.67)
+                   .Valid(0.05, 1)
+                   .Source("NASA SP-8007 (1968) s. 4.1.4 (P): correlation factor 0.67 for cylinders in torsion"));
   ps.push_back(OptionalStiffness("torsional stiffness of the whole segment; overrides the tube geometry",
                                  ReferenceSide::kShaft, "none: from the tube geometry unless given"));
   ps.push_back(Param("inertia", "J", dimensions::Inertia(), "kg*m^2", "inertia of the whole segment; overrides the tube geometry")
@@ -145,18 +161,26 @@ class TorqueShaftModel final : public NamedModel {
   }
   HIGHLIFT_STEADY_LAW
 
-  /// Its torque capacity at the allowable shear stress, tau_allow 2 Ip / D (against the
-  /// operating torque and the peak loads alike).
+  /// Its torque capacity at the lesser of the allowable shear stress and the torsional buckling
+  /// stress of the tube (laws.h TubeBucklingStress: elastic shell buckling, long or moderate
+  /// length, with the knock-down gamma), min(tau_allow, tau_cr) 2 Ip / D, against the operating
+  /// torque and the peak loads alike. At a point it is named after the stress that governs.
   template <class T>
   std::optional<Allowable<T>> PeakLaw(const ParameterReader<T>& p) const {
-    const T D = p("outer_diameter");
-    return Allowable<T>{"torque capacity",
-                        TubeTorqueCapacity(p("allowable_shear_stress"), D, TubePolarMoment(D, p("wall_thickness")))};
+    const T D = p("outer_diameter"), t = p("wall_thickness");
+    const T tau_allow = p("allowable_shear_stress");
+    const T tau_cr =
+        TubeBucklingStress(p("shear_modulus"), p("poisson_ratio"), p("buckling_knockdown"), D, t, p("length"));
+    std::string name = "torque capacity";
+    if constexpr (std::is_same_v<T, double>) {
+      if (tau_cr < tau_allow) name = "torque capacity (torsional buckling)";
+    }
+    return Allowable<T>{name, TubeTorqueCapacityWithBuckling(tau_allow, tau_cr, D, TubePolarMoment(D, t))};
   }
   HIGHLIFT_PEAK_ALLOWABLE_LAW
   std::optional<Allowable<Interval>> SteadyAllowable(const ParameterReader<Interval>& p) const override {
     auto a = PeakLaw(p);
-    a->name = "torque capacity at the allowable shear stress";
+    a->name = "torque capacity at the allowable shear stress or the torsional buckling stress, the lesser";
     return a;
   }
 
@@ -208,7 +232,8 @@ class TorqueShaftModel final : public NamedModel {
   std::vector<EstimationLaw> EstimationLaws() const override {
     const LawInput G = FromParameter("shear_modulus"), rho = FromParameter("density"),
                    D = FromParameter("outer_diameter"), t = FromParameter("wall_thickness"), L = FromParameter("length"),
-                   tau = FromParameter("allowable_shear_stress");
+                   tau = FromParameter("allowable_shear_stress"), nu = FromParameter("poisson_ratio"),
+                   gamma = FromParameter("buckling_knockdown");
     const auto tube = [](const auto& v) { return v[2].lo >= 0.0 && v[1].lo >= 2.0 * v[2].hi; };
     return {
         EstimateParameter("stiffness", {G, D, t, L}, "physics: c = G pi/32 (D^4 - d^4)/L, d = D - 2t",
@@ -221,8 +246,12 @@ class TorqueShaftModel final : public NamedModel {
         EstimateParameter("drag_per_length", {FromConstant(0.05, 0.1, 0.2), FromLabel("bearing_spacing", dimensions::Length())},
                           "physics: bearing drag 0.05-0.2 N m each (domain.md s6) / bearing_spacing label",
                           [](const auto& v) { return v[0] / v[1]; }),
-        DeriveQuantity("torque_capacity", "N*m", {tau, D, t}, "tau_allow pi/16 (D^4 - d^4)/D",
-                       MonotoneLaw({1, 1, 1}, tube, [](const auto& v) { return ShaftTorqueCapacity(v[0], v[1], v[2]); })),
+        DeriveQuantity("torque_capacity", "N*m", {tau, D, t, G, nu, gamma, L},
+                       "min(tau_allow, tau_cr) pi/16 (D^4 - d^4)/D, tau_cr the torsional buckling stress (laws.h)",
+                       MonotoneLaw({1, 1, 1, 1, 1, 1, -1}, tube, [](const auto& v) {
+                         return TubeTorqueCapacityWithBuckling(v[0], TubeBucklingStress(v[3], v[4], v[5], v[1], v[2], v[6]),
+                                                               v[1], TubePolarMoment(v[1], v[2]));
+                       })),
         DeriveQuantity("mass", "kg", {rho, D, t, L}, "rho pi/4 (D^2 - d^2) L",
                        MonotoneLaw({1, 1, 1, 1}, tube, [](const auto& v) { return ShaftMass(v[0], v[1], v[2], v[3]); }))};
   }

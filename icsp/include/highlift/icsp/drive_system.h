@@ -4,8 +4,10 @@
 // project is a constraint.
 //
 // Names: "<component>.<parameter>" for parameters; derived quantities:
-//   <shaft>.polar_moment, .c (stiffness), .J (inertia), .mass, .torque_capacity, .drive_torque,
-//   .shear_stress; <component>.reflected_inertia / .reflected_stiffness (at the PDU speed) and
+//   <shaft>.polar_moment, .c (stiffness), .J (inertia), .mass, .buckling_stress (torsional
+//   buckling), .torque_capacity (at the lesser of the allowable and the buckling stress: a
+//   requirement on a tube's strength reads it, as the examples' jam requirements do),
+//   .drive_torque, .shear_stress; <component>.reflected_inertia / .reflected_stiffness (at the PDU speed) and
 //   .series_stiffness (the drive line from the PDU to it, in series); <actuator>.max_load,
 //   .input_torque_opposing, .input_torque_aiding; <branch gearbox>.station_torque;
 //   torque.<load case>.<component> (the steady-state torque flow of reduced_models' sizing, with

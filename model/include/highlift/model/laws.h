@@ -54,6 +54,47 @@ T ShaftTorqueCapacity(const T& tau_allow, const T& D, const T& t) {
   return tau_allow * TubePolarMoment(D, t) / (D * T(0.5));
 }
 
+/// Critical shear stress of a thin-walled tube in torsion, elastic buckling [Pa], with G the
+/// shear modulus [Pa], nu Poisson's ratio, gamma the imperfection knock-down (correlation factor),
+/// D, t, L [m]. E = 2 G (1 + nu), r = (D - t)/2 the mean radius:
+///   long tube (length independent):  tau_long = gamma sqrt(2)/6 E (t/r)^(3/2) / (1 - nu^2)^(3/4)
+///   moderate length:                 tau_mod  = 0.747 gamma^(3/4) E (t/r)^(5/4) (r/L)^(1/2) / (1 - nu^2)^(5/8)
+/// and the larger of the two (tau_mod falls as L^(-1/2) toward tau_long, which it meets near
+/// SP-8007's regime boundary Z = 78 (r/t)^2 (1 - nu^2), Z = L^2/(r t) (1 - nu^2)^(1/2)).
+/// Sources: NASA SP-8007 (rev. 1968), "Buckling of thin-walled circular cylinders", s. 4.1.4
+/// torsion: the moderate-length formula and the correlation factor gamma = 0.67; the long-tube
+/// constant sqrt(2)/6 = 0.236 is the exact one of Timoshenko & Gere, Theory of Elastic Stability
+/// (1961) s. 11.12 (Donnell's simplified shell equations give 0.272, 15 % higher; EN 1993-1-6
+/// Annex D gives 0.25 E (t/r)^(3/2), the same for nu = 0.3, and 0.75 E (t/r)^(5/4) (r/L)^(1/2)
+/// at moderate length). Elastic only: no plasticity reduction, so a thick tube (D/t below ~15)
+/// gets a stress above the material's allowable, which then governs.
+/// Example: Ti-6Al-4V (G 44 GPa, nu 0.33), gamma 0.67, 38 x 1.5 mm, L 1.4 m: 475 MPa (long).
+/// Monotone: grows with G, nu (0 <= nu < 1), gamma, t (t < D) and falls with D and L; on
+/// intervals every factor is enclosed from below and above (the natural extension is exact in
+/// t / r = 2 t / (D - t)).
+template <class T>
+T TubeBucklingStress(const T& G, const T& nu, const T& gamma, const T& D, const T& t, const T& L) {
+  using std::max;
+  using std::sqrt;
+  const T r = (D - t) * T(0.5);
+  const T E = T(2.0) * G * (T(1.0) + nu);
+  const T q = T(1.0) - nu * nu;         // 1 - nu^2
+  const T q4 = sqrt(sqrt(q));           // (1 - nu^2)^(1/4)
+  const T s = t / r;                    // t/r
+  const T s4 = sqrt(sqrt(s));           // (t/r)^(1/4)
+  const T tau_long = gamma * T(std::numbers::sqrt2 / 6.0) * E * s * sqrt(s) / (sqrt(q) * q4);
+  const T tau_mod = T(0.747) * sqrt(gamma) * sqrt(sqrt(gamma)) * E * s * s4 * sqrt(r / L) / (sqrt(q) * sqrt(q4));
+  return max(tau_long, tau_mod);
+}
+
+/// Torque capacity of a tube at the lesser of its allowable shear stress and its torsional
+/// buckling stress (TubeBucklingStress) [N*m]: min(tau_allow, tau_cr) 2 Ip / D.
+template <class T>
+T TubeTorqueCapacityWithBuckling(const T& tau_allow, const T& tau_cr, const T& D, const T& Ip) {
+  using std::min;
+  return min(tau_allow, tau_cr) * T(2.0) * Ip / D;
+}
+
 /// Stribeck friction, the paper's equation (3), at speed magnitude w_abs >= 0 [rad/s]:
 /// tau = tau_Coulomb + d_vis w + tau_Stribeck exp(-f_exp w)  [N*m]; opposes the motion.
 template <class T>

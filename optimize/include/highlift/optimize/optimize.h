@@ -82,6 +82,15 @@ struct Options {
   /// that meets every check reading it with the loads of the design held, all tubes at once, then
   /// checked as every candidate; again with the new design's loads, up to this many times. 0: none.
   int resize_iterations = 6;
+  /// The tubes' own lower bound (docs/optimize.md, Method 2): in every box, each tube whose outer
+  /// diameter and wall are both design variables gets its diameter-wall rectangle paved best
+  /// first, each piece kept unless a check reading the tube fails at every point of it (the loads
+  /// at their enclosures over the box), until the lightest kept piece is within a tenth of
+  /// relative_gap or this many pieces were split; the lightest kept piece's mass is a certified
+  /// lower bound of the tube's term, and the kept pieces' hull contracts its diameter and wall.
+  /// HC4 and shaving see one constraint at a time, and a tube's capacity min(tau_allow, tau_cr)
+  /// 2 Ip / D against its mass is a curve in (D, t), not a box. 0: none. Not with tube_sizes.
+  int tube_bound_splits = 256;
   double propagation_ratio = 0.01;  ///< HC4 agenda ratio of the contractor (docs/icsp.md; 0: exact
                                     ///< fixed point, slower, same certificates)
   /// Lower bounds by shaving (3B consistency on the objective, as IbexOpt's lower bounding by
@@ -223,6 +232,7 @@ struct Report {
   int peak_pruned = 0;          ///< ... of which `peak` proved that none of their designs passes it
   int shaving_propagations = 0;  ///< trial propagations of the shaving (Options::shaving_tries)
   int shaving_cuts = 0;         ///< ... of which proved a slice empty (a raised lower bound)
+  int tube_bound_pieces = 0;    ///< pieces of the tubes' diameter-wall rectangles examined (Options::tube_bound_splits)
   /// The certified lower bound of the root box: after HC4 and shaving with the first design known
   /// (or HC4 alone when none was found); display unit.
   double root_lower_bound = 0.0;
