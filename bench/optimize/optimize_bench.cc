@@ -44,16 +44,7 @@ Project DesignProblem(const std::string& name, bool ratio = false) {
   return testing::BenchmarkDesignProblem(name, ratio, &database);
 }
 
-/// Options::same_value for DesignProblem(..., true): every geared rotary actuator's ratio one value
-/// (the first actuator's); empty when the project has none marked.
-std::vector<std::vector<std::string>> SameRatio(const Project& project) {
-  std::vector<std::string> group;
-  for (const Component& c : project.components)
-    if (c.type == "geared_rotary_actuator" && c.parameters.count("ratio") && c.parameters.at("ratio").design)
-      group.push_back(c.id + ".ratio");
-  if (group.size() < 2) return {};
-  return {group};
-}
+using testing::SameRatio;
 
 struct BaselineResult {
   double best = INFINITY;
@@ -186,15 +177,9 @@ optimize::Report RunOptimize(benchmark::State& state, const Project& project, co
       state.counters["ratio"] = v.value;
   // The designed tubes' slenderness D/t (its torsional buckling stress falls as (t/r)^(3/2)).
   double most = 0.0, least = INFINITY;
-  for (const optimize::DesignValue& d : r.design) {
-    const std::size_t dot = d.name.rfind(".outer_diameter");
-    if (dot == std::string::npos || dot + 15 != d.name.size()) continue;
-    const std::string wall = d.name.substr(0, dot) + ".wall_thickness";
-    for (const optimize::DesignValue& w : r.design)
-      if (w.name == wall && w.value_si > 0) {
-        most = std::max(most, d.value_si / w.value_si);
-        least = std::min(least, d.value_si / w.value_si);
-      }
+  for (const auto& [shaft, d_over_t] : testing::TubeSlenderness(r.design)) {
+    most = std::max(most, d_over_t);
+    least = std::min(least, d_over_t);
   }
   state.counters["max_D_over_t"] = r.found && most > 0 ? most : NAN;
   state.counters["min_D_over_t"] = r.found && most > 0 ? least : NAN;

@@ -116,6 +116,20 @@ double WorstExcess(const Interval& g, icsp::Relation r) {
                                               : std::max(g.upper(), -g.lower());
 }
 
+/// A check's vote between the ends of a parameter's domain, from its worst excess at each: +1 when
+/// the lower end is worse (the check comes closer to failing there), -1 the upper, 0 neither.
+int VoteLowerWorse(double at_lower, double at_upper) {
+  return at_lower > at_upper ? 1 : at_lower < at_upper ? -1 : 0;
+}
+
+/// The end of domain d that `votes` (> 0: the lower) calls worse, a hair (1e-6 of the width) inside
+/// it: a point where the propagation itself fails (a stiffness of exactly 0 gives 1/0) would cut off
+/// designs that are feasible; `otherwise` when the votes tie.
+double WorseEnd(const Interval& d, int votes, double otherwise) {
+  const double inside = 1e-6 * (d.upper() - d.lower());
+  return votes > 0 ? d.lower() + inside : votes < 0 ? d.upper() - inside : otherwise;
+}
+
 struct Tolerance {
   double relative, absolute;
   bool Closed(double best, double lower) const {
@@ -248,6 +262,8 @@ class Optimizer {
   bool TubeBounds(Box& box, const std::vector<Box>& others);
   bool TubeContract(Box& box);
   void ChooseOtherPoints(const Box& at);
+  Box AtPoint(const std::vector<double>& point) const;
+  Box AtIncumbent(const std::vector<double>& point) const;
   void Polish(double lower);
   double ObjectiveAt(const std::vector<double>& x);
   double Shave(Box& box, double lb);
@@ -304,10 +320,9 @@ class Optimizer {
   bool have_scenario_ = false;
   int scenario_generation_ = 0;         ///< incremented whenever scenario_ is chosen again
   std::string scenario_note_;
-  /// The second point (TubeBounds): scenario_ with each resizable tube's own uncertain parameters
-  /// (its allowable, shear modulus, Poisson's ratio, ...) at the end that weakens the tube.
   std::vector<char> undecided_;  ///< per uncertain parameter: the first vote left it at the middle
-  /// The further points of TubeContract (ChooseOtherPoints), each one the incumbent passes.
+  /// The further points of TubeContract (ChooseOtherPoints: the tubes' weak point), each one the
+  /// incumbent passes; empty when it is scenario_ itself or the incumbent fails there.
   std::vector<std::vector<double>> other_points_;
   bool verify_size_ = false, verify_peak_ = false;
   std::string verification_note_;
@@ -316,9 +331,10 @@ class Optimizer {
   std::unique_ptr<icsp::Propagator> shaving_propagator_;  ///< the trials' (Options::shaving_ratio)
   std::unique_ptr<Evaluator> evaluator_;
   std::unique_ptr<TubeConstraint> tubes_;   ///< Options::tube_sizes (null: D and t continuous)
-  /// A tube for ResizeTubes: its objective term, its outer diameter and wall (indices into
-  /// design_), the laws that give its own derived quantities from them (variable, node of the law,
-  /// in the order they follow from one another) and the checks that read any of those.
+  /// A tube for ResizeTubes, TubeBounds and ChooseOtherPoints: its objective term, its outer
+  /// diameter and wall (indices into design_), the laws that give its own derived quantities from
+  /// them (variable, node of the law, in the order they follow from one another) and the checks
+  /// that read any of those.
   struct Resizable {
     int term = -1;
     std::size_t d = 0, t = 0;
@@ -327,6 +343,8 @@ class Optimizer {
     std::vector<std::size_t> own;  ///< the uncertain parameters its laws read (indices into uncertain_)
   };
   std::vector<Resizable> resizable_;
+  bool EvalTubeLaws(const Resizable& r, Box& box, const Box* within = nullptr);
+  void Excesses(const Box& box, const std::vector<int>& constraints, double missing, std::vector<double>& out);
   // Incumbent.
   bool found_ = false;
   double best_ = kInf;
@@ -893,16 +911,10 @@ void Optimizer::Sensitivities(const Box& root) {
     Box box = initial_;
     for (std::size_t k = 0; k < n; ++k) box[design_[k]] = Interval(x[k]);
     box[bound_] = icsp::Whole();
-    out.assign(checks_.size(), kInf);
-    if (propagator_->Propagate(box, definitions_).status == icsp::Status::kInfeasible) return;
-    evaluator_->Reset(&box);
-    for (std::size_t a = 0; a < checks_.size(); ++a) {
-      const icsp::Constraint& con = net().constraint(icsp::ConstraintId{checks_[a]});
-      if (con.kind != icsp::Constraint::Kind::kExpression) continue;
-      const Interval g = evaluator_->Eval(con.root);
-      if (icsp::IsEmpty(g)) continue;
-      out[a] = WorstExcess(g, con.relation);
-    }
+    if (propagator_->Propagate(box, definitions_).status == icsp::Status::kInfeasible)
+      out.assign(checks_.size(), kInf);
+    else
+      Excesses(box, checks_, kInf, out);
   };
   std::vector<double> at_lo, at_hi;
   for (std::size_t i = 0; i < n; ++i) {
@@ -982,16 +994,7 @@ void Optimizer::ChooseScenario() {
   for (std::size_t i = 0; i < design_.size(); ++i) base[design_[i]] = Interval(best_x_[i]);
   base[bound_] = icsp::Whole();
   for (int v : uncertain_) base[v] = Interval(Mid(initial_[v]));
-  auto worst = [&](const Box& box, std::vector<double>& out) {
-    out.assign(active.size(), -kInf);
-    evaluator_->Reset(&box);
-    for (std::size_t a = 0; a < active.size(); ++a) {
-      const icsp::Constraint& con = net().constraint(icsp::ConstraintId{active[a]});
-      const Interval g = evaluator_->Eval(con.root);
-      if (icsp::IsEmpty(g)) continue;
-      out[a] = WorstExcess(g, con.relation);
-    }
-  };
+  auto worst = [&](const Box& box, std::vector<double>& out) { Excesses(box, active, -kInf, out); };
   scenario_.assign(uncertain_.size(), 0.0);
   undecided_.assign(uncertain_.size(), 0);
   std::vector<double> at_lo, at_hi;
@@ -1008,29 +1011,22 @@ void Optimizer::ChooseScenario() {
       worst(hi, at_hi);
       int others = 0;
       for (std::size_t a = 0; a < active.size(); ++a)
-        (a < num_active ? votes : others) += at_lo[a] > at_hi[a] ? 1 : at_lo[a] < at_hi[a] ? -1 : 0;
+        (a < num_active ? votes : others) += VoteLowerWorse(at_lo[a], at_hi[a]);
       if (votes == 0) votes = others;
     } else {
       votes = lo_ok ? -1 : hi_ok ? 1 : 0;
     }
-    const double inside = 1e-6 * (d.upper() - d.lower());
-    scenario_[j] = votes > 0 ? d.lower() + inside : votes < 0 ? d.upper() - inside : Mid(d);
+    scenario_[j] = WorseEnd(d, votes, Mid(d));
     undecided_[j] = votes == 0;
   }
-  // A point where the propagation itself fails (a stiffness of exactly 0 gives 1/0) would cut off
-  // designs that are feasible; so the point is taken a hair (1e-6 of the domain) inside the worst
-  // end, and it is used only when the incumbent passes the whole network there.
-  Box check = initial_;
-  for (std::size_t j = 0; j < uncertain_.size(); ++j) check[uncertain_[j]] = Interval(scenario_[j]);
-  for (std::size_t i = 0; i < design_.size(); ++i) check[design_[i]] = Interval(best_x_[i]);
-  check[bound_] = icsp::Whole();
+  // The point is used only when the incumbent passes the whole network there.
+  Box check = AtIncumbent(scenario_);
   have_scenario_ = propagator_->Propagate(check).status != icsp::Status::kInfeasible;
   ++scenario_generation_;
   other_points_.clear();
   if (have_scenario_) ChooseOtherPoints(check);
   if (!have_scenario_) scenario_note_ = "the worst-case point of the uncertain parameters was not used (the network "
                                         "rejects the best design there); the bound is the existential relaxation's";
-
 }
 
 /// The further points of TubeContract: a robust design meets every check at every point of the
@@ -1050,10 +1046,7 @@ void Optimizer::ChooseScenario() {
 void Optimizer::ChooseOtherPoints(const Box& at) {
   const std::size_t n = uncertain_.size();
   auto passes = [&](const std::vector<double>& point) {
-    Box check = initial_;
-    for (std::size_t j = 0; j < n; ++j) check[uncertain_[j]] = Interval(point[j]);
-    for (std::size_t i = 0; i < design_.size(); ++i) check[design_[i]] = Interval(best_x_[i]);
-    check[bound_] = icsp::Whole();
+    Box check = AtIncumbent(point);
     return propagator_->Propagate(check).status != icsp::Status::kInfeasible;
   };
   std::vector<double> weak = scenario_;
@@ -1064,24 +1057,14 @@ void Optimizer::ChooseOtherPoints(const Box& at) {
       std::vector<double> excess[2];
       for (int end = 0; end < 2; ++end) {
         work[uncertain_[j]] = Interval(end == 0 ? d.lower() : d.upper());
-        for (const auto& [z, rhs] : r.laws) {
-          evaluator_->Reset(&work);
-          work[z] = evaluator_->Eval(rhs);
-        }
-        evaluator_->Reset(&work);
-        for (int k : r.checks) {
-          const icsp::Constraint& con = net().constraint(icsp::ConstraintId{k});
-          const Interval g = evaluator_->Eval(con.root);
-          excess[end].push_back(icsp::IsEmpty(g) ? kInf : WorstExcess(g, con.relation));
-        }
+        EvalTubeLaws(r, work);
+        Excesses(work, r.checks, kInf, excess[end]);
       }
       work[uncertain_[j]] = at[uncertain_[j]];
       for (const auto& [z, rhs] : r.laws) work[z] = at[z];
-      const double inside = 1e-6 * (d.upper() - d.lower());
       int votes = 0;  // > 0: the lower end is worse
-      for (std::size_t a = 0; a < excess[0].size(); ++a)
-        votes += excess[0][a] > excess[1][a] ? 1 : excess[0][a] < excess[1][a] ? -1 : 0;
-      if (votes != 0) weak[j] = votes > 0 ? d.lower() + inside : d.upper() - inside;
+      for (std::size_t a = 0; a < excess[0].size(); ++a) votes += VoteLowerWorse(excess[0][a], excess[1][a]);
+      weak[j] = WorseEnd(d, votes, weak[j]);
     }
   }
   std::vector<double> first = scenario_;
@@ -1089,7 +1072,21 @@ void Optimizer::ChooseOtherPoints(const Box& at) {
     if (undecided_[j]) first[j] = weak[j];
   if (first != scenario_ && passes(first)) scenario_ = first;
   if (weak != scenario_ && passes(weak)) other_points_.push_back(weak);
+}
 
+/// initial_ with the uncertain parameters at `point` (a value each, in the order of uncertain_).
+Box Optimizer::AtPoint(const std::vector<double>& point) const {
+  Box box = initial_;
+  for (std::size_t j = 0; j < uncertain_.size(); ++j) box[uncertain_[j]] = Interval(point[j]);
+  return box;
+}
+
+/// The network's box at the incumbent and `point`, the objective unbounded.
+Box Optimizer::AtIncumbent(const std::vector<double>& point) const {
+  Box box = AtPoint(point);
+  for (std::size_t i = 0; i < design_.size(); ++i) box[design_[i]] = Interval(best_x_[i]);
+  box[bound_] = icsp::Whole();
+  return box;
 }
 
 /// `highlift peak` over a whole box of designs (AnalysePeaks' enclosures over the box and the
@@ -1099,18 +1096,14 @@ void Optimizer::ChooseOtherPoints(const Box& at) {
 std::string Optimizer::PeakProof(const std::vector<Interval>& d) {
   if (!verify_peak_) return "";
   Project p = project_;
-  for (std::size_t i = 0; i < design_.size(); ++i) {
-    const std::string& name = design_names_[i];
+  std::vector<std::pair<std::string, Interval>> ranges;  // the design variables, then their followers
+  for (std::size_t i = 0; i < design_.size(); ++i) ranges.push_back({design_names_[i], d[i]});
+  for (const Follower& f : followers_) ranges.push_back({f.name, d[f.leader]});
+  for (const auto& [name, range] : ranges) {
     const auto dot = name.find('.');
     Parameter& par = p.FindComponent(name.substr(0, dot))->parameters[name.substr(dot + 1)];
-    par.domain = {d[i].lower(), d[i].upper()};
-    par.nominal = Mid(d[i]);
-  }
-  for (const Follower& f : followers_) {
-    const auto dot = f.name.find('.');
-    Parameter& par = p.FindComponent(f.name.substr(0, dot))->parameters[f.name.substr(dot + 1)];
-    par.domain = {d[f.leader].lower(), d[f.leader].upper()};
-    par.nominal = Mid(d[f.leader]);
+    par.domain = {range.lower(), range.upper()};
+    par.nominal = Mid(range);
   }
   reduced_models::PeakOptions po;
   po.rank = false;
@@ -1258,11 +1251,7 @@ void Optimizer::ResizeTubes() {
       auto at = [&](double d, double w, bool* ok) {
         loads[D] = Interval(d);
         loads[t] = Interval(w);
-        for (const auto& [z, rhs] : r.laws) {
-          evaluator_->Reset(&loads);
-          loads[z] = evaluator_->Eval(rhs);
-        }
-        evaluator_->Reset(&loads);
+        EvalTubeLaws(r, loads);
         *ok = true;
         for (int k : r.checks) {
           const icsp::Constraint& con = net().constraint(icsp::ConstraintId{k});
@@ -1344,6 +1333,33 @@ void Optimizer::ResizeTubes() {
   }
 }
 
+/// The worst excess (WorstExcess) over `box` of each of `constraints`, in their order; `missing`
+/// for one that is not an expression or whose enclosure is empty.
+void Optimizer::Excesses(const Box& box, const std::vector<int>& constraints, double missing,
+                         std::vector<double>& out) {
+  out.assign(constraints.size(), missing);
+  evaluator_->Reset(&box);
+  for (std::size_t a = 0; a < constraints.size(); ++a) {
+    const icsp::Constraint& con = net().constraint(icsp::ConstraintId{constraints[a]});
+    if (con.kind != icsp::Constraint::Kind::kExpression) continue;
+    const Interval g = evaluator_->Eval(con.root);
+    if (!icsp::IsEmpty(g)) out[a] = WorstExcess(g, con.relation);
+  }
+}
+
+/// r's own laws evaluated in order over `box` (its D and t as set there), so `box` holds the tube's
+/// quantities and the evaluator is left reset on it for r's checks; with `within`, each is met
+/// with its enclosure there: false when one runs empty.
+bool Optimizer::EvalTubeLaws(const Resizable& r, Box& box, const Box* within) {
+  for (const auto& [z, rhs] : r.laws) {
+    evaluator_->Reset(&box);
+    box[z] = within ? icsp::Meet((*within)[z], evaluator_->Eval(rhs)) : evaluator_->Eval(rhs);
+    if (within && icsp::IsEmpty(box[z])) return false;
+  }
+  evaluator_->Reset(&box);
+  return true;
+}
+
 /// The tubes' own lower bound (Options::tube_bound_splits; docs/optimize.md, Method 2). HC4 and
 /// shaving revise one constraint at a time, so a tube's term is bounded at the corner its
 /// diameter's and wall's lower ends make, each contracted by the capacity requirement at the
@@ -1355,7 +1371,7 @@ void Optimizer::ResizeTubes() {
 /// enclosures in `box`, or a check that reads the tube fails at every point of it (the other
 /// variables, the loads among them, at their enclosures in `box`: every solution in `box` has
 /// them there), so every solution's (D, t) lies in a kept piece. The least mass of the kept pieces
-/// bounds the term from below, and their hull contracts D and t. Stops when that least piece's
+/// bounds the term from below, and their hulls contract D, t and the tube's own quantities. Stops when that least piece's
 /// mass is known within a tenth of relative_gap or after tube_bound_splits splits. False when a
 /// tube keeps no piece: `box` holds no solution.
 bool Optimizer::TubeBounds(Box& box, const std::vector<Box>& others) {
@@ -1382,12 +1398,7 @@ bool Optimizer::TubeBounds(Box& box, const std::vector<Box>& others) {
         Box& work = works[b];
         work[D] = p.D;
         work[t] = p.t;
-        for (const auto& [z, rhs] : r.laws) {
-          evaluator_->Reset(&work);
-          work[z] = icsp::Meet((*in[b])[z], evaluator_->Eval(rhs));
-          if (icsp::IsEmpty(work[z])) return false;
-        }
-        evaluator_->Reset(&work);
+        if (!EvalTubeLaws(r, work, in[b])) return false;
         for (int k : r.checks) {
           const icsp::Constraint& con = net().constraint(icsp::ConstraintId{k});
           if (Impossible(evaluator_->Eval(con.root), con.relation)) return false;
@@ -1415,7 +1426,7 @@ bool Optimizer::TubeBounds(Box& box, const std::vector<Box>& others) {
       }
     // Best first: the lightest piece split across its relatively wider side, until its mass is
     // known within eps.
-      for (int split = 0; !queue.empty() && split < options_.tube_bound_splits; ++split) {
+    for (int split = 0; !queue.empty() && split < options_.tube_bound_splits; ++split) {
       const Piece p = queue.top();
       if (p.hi - p.lo <= eps * std::fabs(p.lo)) break;
       queue.pop();
@@ -1472,8 +1483,8 @@ bool Optimizer::TubeBounds(Box& box, const std::vector<Box>& others) {
 }
 
 /// The contractor with the tubes' own bounds (TubeBounds) on `box` (propagated already): with
-/// the boxes of the other points beside it, again while a round raises the objective's lower bound by a
-/// tenth of the tolerance (the contracted tubes' stiffnesses and inertias raise the loads' lower
+/// the boxes of the other points beside it, again while a round raises the objective's lower bound
+/// by a tenth of the tolerance (the contracted tubes' stiffnesses and inertias raise the loads' lower
 /// ends, which drop more pieces). False when `box` holds no solution.
 bool Optimizer::TubeContract(Box& box) {
   if (tubes_ || resizable_.empty() || options_.tube_bound_splits <= 0) return true;
@@ -1482,8 +1493,7 @@ bool Optimizer::TubeContract(Box& box) {
     std::vector<Box> others;
     if (have_scenario_)
       for (const std::vector<double>& point : other_points_) {
-        Box o = initial_;
-        for (std::size_t j = 0; j < uncertain_.size(); ++j) o[uncertain_[j]] = Interval(point[j]);
+        Box o = AtPoint(point);
         for (int v : design_) o[v] = box[v];
         o[bound_] = box[bound_];
         if (propagator_->Propagate(o).status == icsp::Status::kInfeasible) return false;
@@ -1944,10 +1954,8 @@ Report Optimizer::Run() {
       ++counters_.pruned;
       continue;
     }
-    Box box = initial_;
+    Box box = have_scenario_ ? AtPoint(scenario_) : initial_;
     const int generation = have_scenario_ ? scenario_generation_ : -1;
-    if (have_scenario_)
-      for (std::size_t j = 0; j < uncertain_.size(); ++j) box[uncertain_[j]] = Interval(scenario_[j]);
     for (std::size_t i = 0; i < design_.size(); ++i) box[design_[i]] = node.d[i];
     box[bound_] = std::isfinite(best_) ? Interval(-kInf, best_) : icsp::Whole();
     if (!node.term_lo.empty() && (node.term_generation < 0 || node.term_generation == generation))

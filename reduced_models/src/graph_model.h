@@ -237,13 +237,6 @@ T ShaftSegmentMass(const Component& c, const ParameterMode& mode) {
   return ShaftMass(Read<T>(c, "density", mode), Read<T>(c, "outer_diameter", mode),
                    Read<T>(c, "wall_thickness", mode), Read<T>(c, "length", mode));
 }
-/// Torque capacity of a tube at its allowable shear stress: tau = tau_allow Ip / (D/2).
-template <class T>
-T ShaftTorqueCapacity(const Component& c, const ParameterMode& mode) {
-  const T D = Read<T>(c, "outer_diameter", mode);
-  return Read<T>(c, "allowable_shear_stress", mode) * TubePolarMoment(D, Read<T>(c, "wall_thickness", mode)) /
-         (D * T(0.5));
-}
 
 /// A transmission with scalar T; Project() turns it into the public double Transmission.
 template <class T>

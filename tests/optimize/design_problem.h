@@ -10,10 +10,13 @@
 
 #include <filesystem>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "highlift/componentdb/database.h"
 #include "highlift/core/project_io.h"
 #include "highlift/estimation/estimator.h"
+#include "highlift/optimize/optimize.h"
 
 namespace highlift::testing {
 
@@ -51,6 +54,33 @@ inline Project BenchmarkDesignProblem(const std::string& example, bool ratio,
     if (c.type == "wing_tip_brake") mark("static_capacity");
   }
   return project;
+}
+
+/// Options::same_value for BenchmarkDesignProblem(..., true, ...): every geared rotary actuator's
+/// ratio marked as a design variable, one value (the first actuator's); empty when fewer than two.
+inline std::vector<std::vector<std::string>> SameRatio(const Project& project) {
+  std::vector<std::string> group;
+  for (const Component& c : project.components)
+    if (c.type == "geared_rotary_actuator" && c.parameters.count("ratio") && c.parameters.at("ratio").design)
+      group.push_back(c.id + ".ratio");
+  if (group.size() < 2) return {};
+  return {group};
+}
+
+/// Each designed tube's slenderness D/t (its torsional buckling stress falls as (t/r)^(3/2)): the
+/// shafts whose outer diameter and wall are both in `design`, in the order of their diameters.
+inline std::vector<std::pair<std::string, double>> TubeSlenderness(const std::vector<optimize::DesignValue>& design) {
+  const std::string diameter = ".outer_diameter";
+  std::vector<std::pair<std::string, double>> out;
+  for (const optimize::DesignValue& d : design) {
+    if (d.name.size() < diameter.size() ||
+        d.name.compare(d.name.size() - diameter.size(), diameter.size(), diameter) != 0)
+      continue;
+    const std::string shaft = d.name.substr(0, d.name.size() - diameter.size());
+    for (const optimize::DesignValue& w : design)
+      if (w.name == shaft + ".wall_thickness" && w.value_si > 0) out.push_back({shaft, d.value_si / w.value_si});
+  }
+  return out;
 }
 
 }  // namespace highlift::testing

@@ -27,13 +27,6 @@ namespace {
 /// `ratio`, every actuator's ratio 100-300:1).
 Project Flaps(bool ratio) { return testing::BenchmarkDesignProblem("a320_class_flaps.json", ratio, nullptr); }
 
-std::vector<std::vector<std::string>> OneRatio(const Project& p) {
-  std::vector<std::string> group;
-  for (const Component& c : p.components)
-    if (c.type == "geared_rotary_actuator") group.push_back(c.id + ".ratio");
-  return {group};
-}
-
 Options Fast() {
   Options o;
   o.relative_gap = 0.01;
@@ -45,7 +38,7 @@ Options Fast() {
 TEST(OptimizeSameValue, OneRatioForEveryActuatorBoundedByTheExtensionTime) {
   const Project problem = Flaps(true);
   Options o = Fast();
-  o.same_value = OneRatio(problem);
+  o.same_value = testing::SameRatio(problem);
   ASSERT_EQ(o.same_value.front().size(), 8u);
   const Report r = Optimize(problem, o);
   ASSERT_TRUE(r.found) << r.BriefReport() << "\n" << r.FullReport();

@@ -47,13 +47,6 @@ T ShaftMass(const T& rho, const T& D, const T& t, const T& L) {
   return ShaftMassPerLength(rho, D, t) * L;
 }
 
-/// Torque capacity of a tube at the allowable shear stress tau_allow [Pa] at its outer fibre
-/// [N*m]: tau = tau_allow Ip / (D/2). Example: Ti 50 x 2.0 mm at 550 MPa: 3.83 kN*m.
-template <class T>
-T ShaftTorqueCapacity(const T& tau_allow, const T& D, const T& t) {
-  return tau_allow * TubePolarMoment(D, t) / (D * T(0.5));
-}
-
 /// Critical shear stress of a thin-walled tube in torsion, elastic buckling [Pa], with G the
 /// shear modulus [Pa], nu Poisson's ratio, gamma the imperfection knock-down (correlation factor),
 /// D, t, L [m]. E = 2 G (1 + nu), r = (D - t)/2 the mean radius:
@@ -87,14 +80,6 @@ T TubeBucklingStress(const T& G, const T& nu, const T& gamma, const T& D, const 
   return max(tau_long, tau_mod);
 }
 
-/// Torque capacity of a tube at the lesser of its allowable shear stress and its torsional
-/// buckling stress (TubeBucklingStress) [N*m]: min(tau_allow, tau_cr) 2 Ip / D.
-template <class T>
-T TubeTorqueCapacityWithBuckling(const T& tau_allow, const T& tau_cr, const T& D, const T& Ip) {
-  using std::min;
-  return min(tau_allow, tau_cr) * T(2.0) * Ip / D;
-}
-
 /// Stribeck friction, the paper's equation (3), at speed magnitude w_abs >= 0 [rad/s]:
 /// tau = tau_Coulomb + d_vis w + tau_Stribeck exp(-f_exp w)  [N*m]; opposes the motion.
 template <class T>
@@ -120,6 +105,14 @@ T GearInputTorque(const T& tau_out, const T& ratio, const T& eta_opposing, const
 template <class T>
 T TubeTorqueCapacity(const T& tau_allow, const T& D, const T& Ip) {
   return tau_allow * T(2.0) * Ip / D;
+}
+
+/// Torque capacity of a tube at the lesser of its allowable shear stress and its torsional
+/// buckling stress (TubeBucklingStress) [N*m]: min(tau_allow, tau_cr) 2 Ip / D.
+template <class T>
+T TubeTorqueCapacityWithBuckling(const T& tau_allow, const T& tau_cr, const T& D, const T& Ip) {
+  using std::min;
+  return TubeTorqueCapacity(min(tau_allow, tau_cr), D, Ip);
 }
 
 /// Shear stress at the surface of a tube carrying torque tau [Pa]: tau D / (2 Ip).
