@@ -447,6 +447,51 @@ bool StartState(System& sys, const SimulationOptions& options, std::vector<doubl
   return true;
 }
 
+// What a sample of the run is: a step end (or an event's limit, or the start), where the
+// solution is smooth on both sides; a kink (a root crossed without a restart: an actuator
+// reversing, a backlash contact), where the torques are continuous but their slopes are not;
+// an output point on the interpolant, which only the energy balance reads.
+enum class SampleKind { kStepEnd, kKink, kOutputPoint };
+
+// The two samples before the current one within one smooth stretch of the run (no restart
+// between them), for locating the peaks between samples.
+struct PeakTrack {
+  int samples = 0;             ///< in the stretch so far, counted up to 2
+  bool middle_smooth = false;  ///< the last sample is not a kink: it may be a parabola's middle
+  double t1 = 0.0, t2 = 0.0;   ///< times of the samples before the last one and of the last one
+  std::vector<double> v1, v2;  ///< the elements' torques there
+  void Push(double t, const std::vector<double>& tau, bool smooth) {
+    v1.swap(v2);
+    v2 = tau;
+    t1 = t2;
+    t2 = t;
+    samples = std::min(samples + 1, 2);
+    middle_smooth = smooth;
+  }
+  void Restart() { samples = 0; }  ///< an event restarts the integration: a new stretch
+};
+
+// The peak of |tau| between three consecutive samples (t0, v0), (t1, v1), (t2, v2) of a smooth
+// stretch, when |v1| is the largest of the three and all have one sign: the vertex of the
+// parabola through them. The vertex replaces `peak` when it is larger and it rises above |v1|
+// by no more than the samples' own variation |v1| - min(|v0|, |v2|): a larger rise is the
+// parabola's, not the solution's (very unequal spacing, or samples that differ by their
+// roundoff on a flat top), and the sampled peak stands then. For a smooth maximum the located
+// value's error falls with the cube of the spacing instead of its square.
+void LocatePeak(double t0, double v0, double t1, double v1, double t2, double v2, PeakTorque& peak) {
+  if (!(v0 * v1 > 0.0 && v2 * v1 > 0.0)) return;  // (NaN or a sign change: no vertex)
+  const double a0 = std::abs(v0), a1 = std::abs(v1), a2 = std::abs(v2);
+  if (!(a1 >= a0 && a1 >= a2 && t0 < t1 && t1 < t2)) return;
+  const double d01 = (a1 - a0) / (t1 - t0), d12 = (a2 - a1) / (t2 - t1);
+  const double c = (d12 - d01) / (t2 - t0);  // half the parabola's second derivative
+  if (!(c < 0.0)) return;                     // a straight line: the sample is the peak
+  const double t_peak = std::clamp(0.5 * (t0 + t1) - 0.5 * d01 / c, t0, t2);
+  const double a_peak = a0 + d01 * (t_peak - t0) + c * (t_peak - t0) * (t_peak - t1);
+  if (!(a_peak > std::abs(peak.tau)) || a_peak - a1 > a1 - std::min(a0, a2)) return;
+  peak.tau = std::copysign(a_peak, v1);
+  peak.time = t_peak;
+}
+
 class Cvode {
  public:
   Cvode() = default;
@@ -515,9 +560,11 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
     double loss_scale = 0.0;
     System::EnergyState energy;
   };
-  auto read = [&](Readings& r, bool step_end) {
-    if (step_end) r.loss_scale = sys.LossPowers(r.loss);
-    sys.PeakTorques(r.tau);
+  auto read = [&](Readings& r, SampleKind kind) {
+    if (kind != SampleKind::kOutputPoint) {
+      r.loss_scale = sys.LossPowers(r.loss);
+      sys.PeakTorques(r.tau);
+    }
     if (options.energy) r.energy = sys.Energy();
   };
   auto monitor = [&](double t, const std::vector<double>& loss, double loss_scale) {
@@ -562,23 +609,30 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
     out.resize(columns.size());
     report.energy.computed = true;
   }
-  // Peak torques and the energy balance follow the solution at every integrator step (and at
-  // both limits of every event), so they do not depend on the output interval; output rows
-  // are interpolated on the output grid.
+  // Peak torques follow the solution at every integrator step end and at both limits of every
+  // event, and are located between them (PeakTrack); they do not depend on the output interval
+  // nor on whether the rows are written. The energy balance also reads the output points when
+  // it is asked for; output rows are interpolated on the output grid.
   bool first_sample = true;
   double last_t = options.start_time, last_loss = 0.0, last_source = 0.0, impulsive_base = 0.0;
-  auto record = [&](double t, const Readings& r, bool step_end) {
-    if (step_end) monitor(t, r.loss, r.loss_scale);
-    const std::vector<double>& tau = r.tau;
-    PeakTorque* peaks = report.peak_torques.data();  // each element named once, at the start
-    for (std::size_t i = 0; i < tau.size(); ++i) {
-      const double v = tau[i];
-      if (std::isnan(v)) continue;
-      has_torque[i] = 1;
-      if (std::abs(v) > std::abs(peaks[i].tau)) {
-        peaks[i].tau = v;
-        peaks[i].time = t;
+  PeakTrack track;
+  auto record = [&](double t, const Readings& r, SampleKind kind) {
+    if (kind != SampleKind::kOutputPoint) {
+      monitor(t, r.loss, r.loss_scale);
+      const std::vector<double>& tau = r.tau;
+      PeakTorque* peaks = report.peak_torques.data();  // each element named once, at the start
+      const bool locate = track.samples >= 2 && track.middle_smooth;
+      for (std::size_t i = 0; i < tau.size(); ++i) {
+        const double v = tau[i];
+        if (std::isnan(v)) continue;
+        has_torque[i] = 1;
+        if (std::abs(v) > std::abs(peaks[i].tau)) {
+          peaks[i].tau = v;
+          peaks[i].time = t;
+        }
+        if (locate) LocatePeak(track.t1, track.v1[i], track.t2, track.v2[i], t, v, peaks[i]);
       }
+      track.Push(t, tau, kind == SampleKind::kStepEnd);
     }
     if (!options.energy) return;
     const System::EnergyState& energy_now = r.energy;
@@ -601,13 +655,14 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
     last_source = energy_now.source_power;
   };
   Readings now;
-  auto sample = [&](double t, bool step_end = true) {
-    read(now, step_end);
-    record(t, now, step_end);
+  auto sample = [&](double t, SampleKind kind = SampleKind::kStepEnd) {
+    read(now, kind);
+    record(t, now, kind);
   };
   // A row of the evaluated state at t (an output point or an event limit); the values only for
   // a sink that reads them (the CLI without --out and the campaign count or discard the rows).
   const bool reads_values = sink.ReadsValues();
+  const bool evaluate_outputs = reads_values || options.energy;
   auto write_row = [&](double t) {
     if (reads_values) sys.Outputs(out.data());
     if (reads_values && options.energy) {
@@ -834,6 +889,7 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
     }
     if (who.empty()) report.events.push_back({te, kind, "", what});
     for (std::size_t i = 0; i < who.size(); ++i) report.events.push_back({te, kind, who[i], changes[i]});
+    track.Restart();  // the integration restarts here: the peaks are not located across it
     sample_and_row(te);  // right limit
     sys.AfterEventRow();
     if (static_cast<int>(report.events.size()) > options.max_events) {
@@ -1019,18 +1075,24 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
         kinematic_root = true;
       }
     }
-    // The output points the step passed (those at t_ret itself are written below). The root
-    // functions are checked there too, as CVODE does at output times in its normal mode: a
-    // sign change that a long step hides (a friction element that sticks and breaks away
-    // within one step) is located on the interpolant and handled as a root of the step.
-    // When the step passes output points and CVODE's root functions left the elements
-    // evaluated at its end, the step end's readings are taken now: the output points' evaluations
-    // on the interpolant replace that one, and the step end then needs no second evaluation of
-    // the same point unless an event or a row that reads the values needs the elements there.
-    end.valid = flag == CV_SUCCESS && !kinematic_root && next_output() < t_ret - eps_t &&
+    // The output points the step passed (those at t_ret itself are written below), evaluated on
+    // the interpolant for a sink that reads the rows, for the energy balance, and in a step
+    // longer than the output interval: there the root functions are checked at the output
+    // points, as CVODE does at output times in its normal mode. A sign change that such a step
+    // hides (a friction element that sticks and breaks away within one step) is located on the
+    // interpolant and handled as a root of the step. So every pair of crossings more than an
+    // output interval apart is seen, and the check does not depend on whether the rows are
+    // read. The peaks and the passivity monitor do not read the output points.
+    // When the output points are evaluated and CVODE's root functions left the elements
+    // evaluated at the step's end, the step end's readings are taken now: the output points'
+    // evaluations replace that one, and the step end then needs no second evaluation of the
+    // same point unless an event or a row that reads the values needs the elements there.
+    const bool check_roots = n_roots > 0 && t_ret - t > dt;
+    const bool evaluate_points = evaluate_outputs || check_roots;
+    end.valid = flag == CV_SUCCESS && !kinematic_root && evaluate_points && next_output() < t_ret - eps_t &&
                 sys.IsEvaluatedAt(t_ret, N_VGetArrayPointer(cv.y));
     if (end.valid) {
-      read(end.readings, true);
+      read(end.readings, SampleKind::kStepEnd);
       if (n_roots > 0) sys.Roots(end.g.data());
     }
     bool failed = false, hidden_root = false;
@@ -1038,11 +1100,11 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
       const double t_out = next_output();
       HIGHLIFT_CHECK(t_out < t_end + eps_t && (k == 1 || t0 + static_cast<double>(k - 1) * dt < t_end - eps_t),
                      "a CVODE step ended past the stop time");
-      if (!interpolate(t_out)) {
+      if (evaluate_points && !interpolate(t_out)) {
         failed = true;
         break;
       }
-      if (n_roots > 0) {
+      if (check_roots) {
         sys.Roots(g_out.data());
         if (SignChanged(g_prev, g_out, directions, root_info, kinematic, 0)) {
           double t_root = t_out;
@@ -1060,7 +1122,7 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
         g_prev.swap(g_out);
         g_prev_time = t_out;
       }
-      sample(t_out, false);  // interpolated: not a step of the passivity monitor
+      if (options.energy) sample(t_out, SampleKind::kOutputPoint);
       write_row(t_out);
       ++k;
       steps_since_output = 0;
@@ -1086,13 +1148,14 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
     const bool on_output = std::abs(t - next_output()) <= eps_t;
     const bool time_event = event_ahead && std::abs(t - t_event) <= eps_t && t < t_end - eps_t;
     const bool event = flag == CV_ROOT_RETURN || hidden_root || kinematic_root || time_event;
-    if (from_readings) record(t, end.readings, true);
+    const SampleKind end_kind = event ? SampleKind::kKink : SampleKind::kStepEnd;
+    if (from_readings) record(t, end.readings, end_kind);
     const bool evaluate = !from_readings || event || (on_output && reads_values);
     if (evaluate && !sys.Evaluate(t, N_VGetArrayPointer(cv.y), nullptr)) {
       fail(SimulationStatus::kModelError, sys.error(), t);
       break;
     }
-    if (!from_readings) sample(t);
+    if (!from_readings) sample(t, end_kind);
     if (flag == CV_ROOT_RETURN || hidden_root || kinematic_root) {
       if (kinematic_root) {
         root_info = kinematic_info;
@@ -1164,10 +1227,11 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
       g_prev.swap(end.g);
       g_prev_time = t;
     } else if (n_roots > 0 && kinematic_root && pending.active && pending.flag != CV_ROOT_RETURN &&
-               next_output() >= pending.t - eps_t) {
+               (next_output() >= pending.t - eps_t || pending.t - t <= dt)) {
       // After a kink at a kinematic root inside a step, the rest of the step returns next with
-      // no output point on the way: only the kinematic roots are compared there (the others
-      // are the step end's), and those are functions of the states (System::KinematicRoots).
+      // no root check at an output point on the way: only the kinematic roots are compared
+      // there (the others are the step end's), and those are functions of the states
+      // (System::KinematicRoots).
       sys.KinematicRoots(t, N_VGetArrayPointer(cv.y), g_prev.data());
       g_prev_time = t;
     } else if (n_roots > 0) {  // the root functions where the next step starts (cached evaluation)
