@@ -622,15 +622,22 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
       const std::vector<double>& tau = r.tau;
       PeakTorque* peaks = report.peak_torques.data();  // each element named once, at the start
       const bool locate = track.samples >= 2 && track.middle_smooth;
+      const double* before = track.v1.data();
+      const double* middle = track.v2.data();
       for (std::size_t i = 0; i < tau.size(); ++i) {
         const double v = tau[i];
         if (std::isnan(v)) continue;
         has_torque[i] = 1;
-        if (std::abs(v) > std::abs(peaks[i].tau)) {
+        const double a = std::abs(v), a_peak = std::abs(peaks[i].tau);
+        if (a > a_peak) {
           peaks[i].tau = v;
           peaks[i].time = t;
         }
-        if (locate) LocatePeak(track.t1, track.v1[i], track.t2, track.v2[i], t, v, peaks[i]);
+        if (!locate) continue;
+        // (A located value is at most 2 |middle|: only a middle sample above half the peak and
+        // not below the new one can raise it.)
+        const double a_middle = std::abs(middle[i]);
+        if (a_middle >= a && 2.0 * a_middle > a_peak) LocatePeak(track.t1, before[i], track.t2, middle[i], t, v, peaks[i]);
       }
       track.Push(t, tau, kind == SampleKind::kStepEnd);
     }

@@ -154,7 +154,7 @@ struct SolverStatistics {
 };
 
 /// The energy balance of a run (SimulationOptions::energy), integrated by the trapezoidal rule
-/// over the output rows: source work = change of kinetic and potential energy + dissipated work
+/// over the step ends, event limits and output points: source work = change of kinetic and potential energy + dissipated work
 /// + kinetic energy removed by speed projections at events.
 struct EnergyBalance {
   bool computed = false;
@@ -199,7 +199,11 @@ struct PassivityReport {
   std::string BriefReport() const;
 };
 
-/// Largest absolute torque seen in one element, and when.
+/// Largest absolute torque of one element over a run, and when: over the integrator's step
+/// ends and event limits, located between them where three samples of a smooth stretch have
+/// their largest |tau| in the middle (the vertex of the parabola through them); the output
+/// points are not read, so the peak does not depend on the output interval
+/// (docs/simulation.md).
 struct PeakTorque {
   std::string element;
   double tau = 0.0;   ///< signed value at the peak, N*m
