@@ -1455,14 +1455,11 @@ bool Optimizer::TubeBounds(Box& box, const std::vector<Box>& others) {
     const double lo = queue.top().lo;
     Interval hd = queue.top().D, ht = queue.top().t;
     std::vector<Interval> hz = queue.top().z;
-    auto hull = [](const Interval& a, const Interval& b) {
-      return Interval(std::min(a.lower(), b.lower()), std::max(a.upper(), b.upper()));
-    };
     for (; !queue.empty(); queue.pop()) {
       const Piece& p = queue.top();
-      hd = hull(hd, p.D);
-      ht = hull(ht, p.t);
-      for (std::size_t k = 0; k < hz.size(); ++k) hz[k] = hull(hz[k], p.z[k]);
+      hd = boost::numeric::hull(hd, p.D);
+      ht = boost::numeric::hull(ht, p.t);
+      for (std::size_t k = 0; k < hz.size(); ++k) hz[k] = boost::numeric::hull(hz[k], p.z[k]);
     }
     box[D] = icsp::Meet(box[D], hd);
     box[t] = icsp::Meet(box[t], ht);
