@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <vector>
 
 namespace highlift::sim::detail {
 namespace {
@@ -272,25 +273,36 @@ int CopySparse(SUNMatrix A, SUNMatrix B) {
 }
 
 // A = c*A + I when every diagonal entry is in the pattern; otherwise SUNDIALS inserts them.
+// The diagonal is found by a binary search per column (the rows of a column are sorted in the
+// simulator's matrices; an unsorted one is handed to SUNDIALS), then every entry is scaled in one
+// loop and 1 added on the diagonal: the same doubles as c*a + (diagonal ? 1 : 0) per entry.
 int ScaleAddISparse(sunrealtype c, SUNMatrix A) {
   SUNMatrixContent_Sparse m = SM_CONTENT_S(A);
   if (m->sparsetype != CSC_MAT || m->M != m->N) return SUNMatScaleAddI_Sparse(c, A);
   const sunindextype n = Columns(A);
   const sunindextype* ptr = m->indexptrs;
   const sunindextype* row = m->indexvals;
-  // First make sure every column holds its diagonal (the pattern does; a caller's may not).
+  thread_local std::vector<sunindextype> diagonal;
+  diagonal.resize(static_cast<std::size_t>(n));
   for (sunindextype j = 0; j < n; ++j) {
-    bool found = false;
-    for (sunindextype k = ptr[j]; k < ptr[j + 1]; ++k)
-      if (row[k] == j) {
-        found = true;
-        break;
-      }
-    if (!found) return SUNMatScaleAddI_Sparse(c, A);
+    const sunindextype* begin = row + ptr[j];
+    const sunindextype* end = row + ptr[j + 1];
+    const sunindextype* at = std::lower_bound(begin, end, j);
+    if (at == end || *at != j) {
+      // Not found: no diagonal entry, or unsorted rows; the plain search decides.
+      bool found = false;
+      for (const sunindextype* k = begin; k != end && !found; ++k) found = *k == j;
+      if (!found) return SUNMatScaleAddI_Sparse(c, A);
+      for (sunindextype jj = 0; jj < n; ++jj)  // unsorted: the entry-by-entry form
+        for (sunindextype k = ptr[jj]; k < ptr[jj + 1]; ++k) m->data[k] = c * m->data[k] + (row[k] == jj ? 1.0 : 0.0);
+      return 0;
+    }
+    diagonal[static_cast<std::size_t>(j)] = at - row;
   }
   double* data = m->data;
-  for (sunindextype j = 0; j < n; ++j)
-    for (sunindextype k = ptr[j]; k < ptr[j + 1]; ++k) data[k] = c * data[k] + (row[k] == j ? 1.0 : 0.0);
+  const sunindextype nnz = ptr[n];
+  for (sunindextype k = 0; k < nnz; ++k) data[k] = c * data[k] + 0.0;
+  for (sunindextype j = 0; j < n; ++j) data[diagonal[static_cast<std::size_t>(j)]] += 1.0;
   return 0;
 }
 
