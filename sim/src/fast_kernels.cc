@@ -6,6 +6,16 @@
 #include <limits>
 #include <vector>
 
+// The element-wise kernels are compiled twice, for the x86-64 baseline (SSE2: two doubles per
+// instruction) and for AVX2 (four), and the loader picks the one the processor runs (GCC's
+// function multiversioning). Element-wise operations give the same doubles either way (no FMA
+// contraction in ISO C++ mode, no reordering); the reductions stay in their scalar order.
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+#define HIGHLIFT_VECTOR_CLONES __attribute__((target_clones("avx2", "default")))
+#else
+#define HIGHLIFT_VECTOR_CLONES
+#endif
+
 namespace highlift::sim::detail {
 namespace {
 
@@ -16,7 +26,7 @@ inline sunindextype L(N_Vector v) { return NV_LENGTH_S(v); }
 // z = a*x + b*y, with the rounding of SUNDIALS' special cases a == b (a*(x + y)) and a == -b
 // (a*(x - y)); multiplications by +-1 are exact, so the other special cases of nvector_serial.c
 // give the same values as the general formula.
-void LinearSum(sunrealtype a, N_Vector x, sunrealtype b, N_Vector y, N_Vector z) {
+HIGHLIFT_VECTOR_CLONES void LinearSum(sunrealtype a, N_Vector x, sunrealtype b, N_Vector y, N_Vector z) {
   const sunindextype n = L(x);
   const double *xd = D(x), *yd = D(y);
   double* zd = D(z);
@@ -34,21 +44,21 @@ void Const(sunrealtype c, N_Vector z) {
   std::fill(zd, zd + L(z), c);
 }
 
-void Prod(N_Vector x, N_Vector y, N_Vector z) {
+HIGHLIFT_VECTOR_CLONES void Prod(N_Vector x, N_Vector y, N_Vector z) {
   const sunindextype n = L(x);
   const double *xd = D(x), *yd = D(y);
   double* zd = D(z);
   for (sunindextype i = 0; i < n; ++i) zd[i] = xd[i] * yd[i];
 }
 
-void Div(N_Vector x, N_Vector y, N_Vector z) {
+HIGHLIFT_VECTOR_CLONES void Div(N_Vector x, N_Vector y, N_Vector z) {
   const sunindextype n = L(x);
   const double *xd = D(x), *yd = D(y);
   double* zd = D(z);
   for (sunindextype i = 0; i < n; ++i) zd[i] = xd[i] / yd[i];
 }
 
-void Scale(sunrealtype c, N_Vector x, N_Vector z) {
+HIGHLIFT_VECTOR_CLONES void Scale(sunrealtype c, N_Vector x, N_Vector z) {
   const sunindextype n = L(x);
   const double* xd = D(x);
   double* zd = D(z);
@@ -191,7 +201,7 @@ sunrealtype MinQuotient(N_Vector num, N_Vector denom) {
 }
 
 // Fused operations (nvector_serial.c semantics, with its aliasing cases).
-int LinearCombination(int nvec, sunrealtype* c, N_Vector* X, N_Vector z) {
+HIGHLIFT_VECTOR_CLONES int LinearCombination(int nvec, sunrealtype* c, N_Vector* X, N_Vector z) {
   if (nvec < 1) return -1;
   if (nvec == 1) {
     Scale(c[0], X[0], z);
@@ -225,7 +235,7 @@ int LinearCombination(int nvec, sunrealtype* c, N_Vector* X, N_Vector z) {
   return 0;
 }
 
-int ScaleAddMulti(int nvec, sunrealtype* a, N_Vector x, N_Vector* Y, N_Vector* Z) {
+HIGHLIFT_VECTOR_CLONES int ScaleAddMulti(int nvec, sunrealtype* a, N_Vector x, N_Vector* Y, N_Vector* Z) {
   if (nvec < 1) return -1;
   if (nvec == 1) {
     LinearSum(a[0], x, 1.0, Y[0], Z[0]);
