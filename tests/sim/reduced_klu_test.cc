@@ -7,6 +7,7 @@
 
 #include <Eigen/Dense>
 #include <cmath>
+#include <memory>
 #include <optional>
 #include <random>
 #include <vector>
@@ -112,6 +113,8 @@ class SolverFixture {
     b_ = N_VNew_Serial(n_, ctx_);
     ls_ = NewReducedKlu(colptr, rows, speed_rows, ctx_);
   }
+  SolverFixture(const SolverFixture&) = delete;
+  SolverFixture& operator=(const SolverFixture&) = delete;
   ~SolverFixture() {
     if (ls_ != nullptr) SUNLinSolFree(ls_);
     N_VDestroy(x_);
@@ -145,17 +148,27 @@ class SolverFixture {
   SUNLinearSolver ls_ = nullptr;
 };
 
+/// A chain, its pattern and a solver for it.
+struct ChainSolver {
+  explicit ChainSolver(int nodes) : chain(nodes) {
+    Pattern(chain.dense, colptr, rows);
+    fixture = std::make_unique<SolverFixture>(colptr, rows, chain.speed_rows);
+  }
+  Chain chain;
+  std::vector<int> colptr, rows;
+  std::unique_ptr<SolverFixture> fixture;
+};
+
 // Against a dense LU of the whole matrix, over several setups (the first factorisation, then
 // KLU's refactorisations on its pivot order) with gammas from 1e-6 to 1e-2.
 TEST(ReducedKlu, SolutionsAreThoseOfTheWholeSystem) {
-  const Chain chain(12);
-  std::vector<int> colptr, rows;
-  Pattern(chain.dense, colptr, rows);
-  const std::vector<char> eliminated = EliminatedStates(colptr, rows, chain.speed_rows);
+  ChainSolver s(12);
+  const Chain& chain = s.chain;
+  SolverFixture& fixture = *s.fixture;
+  const std::vector<char> eliminated = EliminatedStates(s.colptr, s.rows, chain.speed_rows);
   int count = 0;
   for (char e : eliminated) count += e;
   EXPECT_EQ(count, 12 + 11);  // every angle and every twist
-  SolverFixture fixture(colptr, rows, chain.speed_rows);
   ASSERT_NE(fixture.solver(), nullptr);
   EXPECT_EQ(ReducedKluSize(fixture.solver()), 12);
   std::mt19937 rng(7);
@@ -169,16 +182,20 @@ TEST(ReducedKlu, SolutionsAreThoseOfTheWholeSystem) {
   EXPECT_EQ(ReducedKluFullSetups(fixture.solver()), 0);
 }
 
+/// Four inertias on three springs, with a solver.
+class ReducedKluOnFourInertias : public ::testing::Test {
+ protected:
+  void SetUp() override { ASSERT_NE(fixture.solver(), nullptr); }
+  ChainSolver s{4};
+  const Chain& chain = s.chain;
+  SolverFixture& fixture = *s.fixture;
+};
+
 // A matrix whose eliminated row holds an entry outside its speed row (an angle that a law reads
 // back into its own derivative) is not what the reduction assumes: that setup factors the whole
 // matrix, and the solution is still the whole system's. The next matrix of the assumed form is
 // reduced again.
-TEST(ReducedKlu, AMatrixOutsideTheAssumptionIsFactoredWhole) {
-  const Chain chain(4);
-  std::vector<int> colptr, rows;
-  Pattern(chain.dense, colptr, rows);
-  SolverFixture fixture(colptr, rows, chain.speed_rows);
-  ASSERT_NE(fixture.solver(), nullptr);
+TEST_F(ReducedKluOnFourInertias, AMatrixOutsideTheAssumptionIsFactoredWhole) {
   std::mt19937 rng(11);
   Eigen::MatrixXd M = chain.Matrix(rng, 1e-3);
   const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(chain.n, -1.0, 2.0);
@@ -198,11 +215,7 @@ TEST(ReducedKlu, AMatrixOutsideTheAssumptionIsFactoredWhole) {
 
 // A singular matrix fails the setup recoverably (CVODE then retries with a smaller step), and
 // the next regular one is factored afresh.
-TEST(ReducedKlu, ASingularMatrixFailsRecoverablyAndTheNextIsFactoredAfresh) {
-  const Chain chain(4);
-  std::vector<int> colptr, rows;
-  Pattern(chain.dense, colptr, rows);
-  SolverFixture fixture(colptr, rows, chain.speed_rows);
+TEST_F(ReducedKluOnFourInertias, ASingularMatrixFailsRecoverablyAndTheNextIsFactoredAfresh) {
   std::mt19937 rng(3);
   const Eigen::MatrixXd M = chain.Matrix(rng, 1e-3);
   const Eigen::VectorXd b = Eigen::VectorXd::Ones(chain.n);
