@@ -182,7 +182,7 @@ int Solve(SUNLinearSolver S, SUNMatrix, N_Vector x, N_Vector b, sunrealtype) {
   const double* bv = N_VGetArrayPointer(b);
   double* xv = N_VGetArrayPointer(x);
   if (c.use_full) {
-    std::copy(bv, bv + c.n, xv);
+    if (xv != bv) std::copy(bv, bv + c.n, xv);
     const bool ok = klu_l_solve(c.full.symbolic, c.full.numeric, c.n, 1, xv, &c.common) != 0;
     c.last_flag = ok ? SUNLS_SUCCESS : SUNLS_PACKAGE_FAIL_REC;
     return c.last_flag;
