@@ -4,6 +4,17 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <vector>
+
+// The element-wise kernels are compiled twice, for the x86-64 baseline (SSE2: two doubles per
+// instruction) and for AVX2 (four), and the loader picks the one the processor runs (GCC's
+// function multiversioning). Element-wise operations give the same doubles either way (no FMA
+// contraction in ISO C++ mode, no reordering); the reductions stay in their scalar order.
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+#define HIGHLIFT_VECTOR_CLONES __attribute__((target_clones("avx2", "default")))
+#else
+#define HIGHLIFT_VECTOR_CLONES
+#endif
 
 namespace highlift::sim::detail {
 namespace {
@@ -15,7 +26,7 @@ inline sunindextype L(N_Vector v) { return NV_LENGTH_S(v); }
 // z = a*x + b*y, with the rounding of SUNDIALS' special cases a == b (a*(x + y)) and a == -b
 // (a*(x - y)); multiplications by +-1 are exact, so the other special cases of nvector_serial.c
 // give the same values as the general formula.
-void LinearSum(sunrealtype a, N_Vector x, sunrealtype b, N_Vector y, N_Vector z) {
+HIGHLIFT_VECTOR_CLONES void LinearSum(sunrealtype a, N_Vector x, sunrealtype b, N_Vector y, N_Vector z) {
   const sunindextype n = L(x);
   const double *xd = D(x), *yd = D(y);
   double* zd = D(z);
@@ -33,21 +44,21 @@ void Const(sunrealtype c, N_Vector z) {
   std::fill(zd, zd + L(z), c);
 }
 
-void Prod(N_Vector x, N_Vector y, N_Vector z) {
+HIGHLIFT_VECTOR_CLONES void Prod(N_Vector x, N_Vector y, N_Vector z) {
   const sunindextype n = L(x);
   const double *xd = D(x), *yd = D(y);
   double* zd = D(z);
   for (sunindextype i = 0; i < n; ++i) zd[i] = xd[i] * yd[i];
 }
 
-void Div(N_Vector x, N_Vector y, N_Vector z) {
+HIGHLIFT_VECTOR_CLONES void Div(N_Vector x, N_Vector y, N_Vector z) {
   const sunindextype n = L(x);
   const double *xd = D(x), *yd = D(y);
   double* zd = D(z);
   for (sunindextype i = 0; i < n; ++i) zd[i] = xd[i] / yd[i];
 }
 
-void Scale(sunrealtype c, N_Vector x, N_Vector z) {
+HIGHLIFT_VECTOR_CLONES void Scale(sunrealtype c, N_Vector x, N_Vector z) {
   const sunindextype n = L(x);
   const double* xd = D(x);
   double* zd = D(z);
@@ -190,7 +201,7 @@ sunrealtype MinQuotient(N_Vector num, N_Vector denom) {
 }
 
 // Fused operations (nvector_serial.c semantics, with its aliasing cases).
-int LinearCombination(int nvec, sunrealtype* c, N_Vector* X, N_Vector z) {
+HIGHLIFT_VECTOR_CLONES int LinearCombination(int nvec, sunrealtype* c, N_Vector* X, N_Vector z) {
   if (nvec < 1) return -1;
   if (nvec == 1) {
     Scale(c[0], X[0], z);
@@ -224,7 +235,7 @@ int LinearCombination(int nvec, sunrealtype* c, N_Vector* X, N_Vector z) {
   return 0;
 }
 
-int ScaleAddMulti(int nvec, sunrealtype* a, N_Vector x, N_Vector* Y, N_Vector* Z) {
+HIGHLIFT_VECTOR_CLONES int ScaleAddMulti(int nvec, sunrealtype* a, N_Vector x, N_Vector* Y, N_Vector* Z) {
   if (nvec < 1) return -1;
   if (nvec == 1) {
     LinearSum(a[0], x, 1.0, Y[0], Z[0]);
@@ -272,25 +283,36 @@ int CopySparse(SUNMatrix A, SUNMatrix B) {
 }
 
 // A = c*A + I when every diagonal entry is in the pattern; otherwise SUNDIALS inserts them.
+// The diagonal is found by a binary search per column (the rows of a column are sorted in the
+// simulator's matrices; an unsorted one is handed to SUNDIALS), then every entry is scaled in one
+// loop and 1 added on the diagonal: the same doubles as c*a + (diagonal ? 1 : 0) per entry.
 int ScaleAddISparse(sunrealtype c, SUNMatrix A) {
   SUNMatrixContent_Sparse m = SM_CONTENT_S(A);
   if (m->sparsetype != CSC_MAT || m->M != m->N) return SUNMatScaleAddI_Sparse(c, A);
   const sunindextype n = Columns(A);
   const sunindextype* ptr = m->indexptrs;
   const sunindextype* row = m->indexvals;
-  // First make sure every column holds its diagonal (the pattern does; a caller's may not).
+  thread_local std::vector<sunindextype> diagonal;
+  diagonal.resize(static_cast<std::size_t>(n));
   for (sunindextype j = 0; j < n; ++j) {
-    bool found = false;
-    for (sunindextype k = ptr[j]; k < ptr[j + 1]; ++k)
-      if (row[k] == j) {
-        found = true;
-        break;
-      }
-    if (!found) return SUNMatScaleAddI_Sparse(c, A);
+    const sunindextype* begin = row + ptr[j];
+    const sunindextype* end = row + ptr[j + 1];
+    const sunindextype* at = std::lower_bound(begin, end, j);
+    if (at == end || *at != j) {
+      // Not found: no diagonal entry, or unsorted rows; the plain search decides.
+      bool found = false;
+      for (const sunindextype* k = begin; k != end && !found; ++k) found = *k == j;
+      if (!found) return SUNMatScaleAddI_Sparse(c, A);
+      for (sunindextype jj = 0; jj < n; ++jj)  // unsorted: the entry-by-entry form
+        for (sunindextype k = ptr[jj]; k < ptr[jj + 1]; ++k) m->data[k] = c * m->data[k] + (row[k] == jj ? 1.0 : 0.0);
+      return 0;
+    }
+    diagonal[static_cast<std::size_t>(j)] = at - row;
   }
   double* data = m->data;
-  for (sunindextype j = 0; j < n; ++j)
-    for (sunindextype k = ptr[j]; k < ptr[j + 1]; ++k) data[k] = c * data[k] + (row[k] == j ? 1.0 : 0.0);
+  const sunindextype nnz = ptr[n];
+  for (sunindextype k = 0; k < nnz; ++k) data[k] = c * data[k] + 0.0;
+  for (sunindextype j = 0; j < n; ++j) data[diagonal[static_cast<std::size_t>(j)]] += 1.0;
   return 0;
 }
 

@@ -283,6 +283,13 @@ class Element {
   /// Own states (offsets from state_offset) that are twists of a spring: the unknowns of the
   /// static equilibrium at rest (SimulationOptions::initial_equilibrium).
   virtual std::vector<int> TwistStates() const { return {}; }
+  /// The nodes whose speeds alone give the derivative of own state k, in every mode (a relative
+  /// angle: der(phi_rel) = w_b - w_a); empty when it depends on anything else. The linear solver
+  /// eliminates such states before it factors (System::SpeedRows, reduced_klu.h).
+  virtual std::vector<int> StateSpeedNodes(int k) const {
+    (void)k;
+    return {};
+  }
   /// The torque per unit of each own state that is a spring twist (its stiffness, N*m/rad),
   /// 0 for other states: the absolute tolerance of a twist follows from a torque tolerance
   /// (SimulationOptions::torque_tolerance). `stiffness` has NumStates() entries, all 0 on entry.

@@ -202,6 +202,7 @@ class Compliant : public TwoFlange {
     ApplyTorque(e, tau);
   }
   void Derivatives(Eval& e) override { e.ydot[state_offset] = WRel(e); }
+  std::vector<int> StateSpeedNodes(int k) const override { return k == 0 ? std::vector<int>{a, b} : std::vector<int>{}; }
   std::vector<std::string> OutputNames() const override { return {"phi_rel", "w_rel", "tau"}; }
   void Outputs(const Eval& e, double* out) const override {
     out[0] = PhiRel(e);
@@ -761,6 +762,7 @@ class Clutch : public SurfaceFriction {
     rows.push_back({{{p, 1.0}, {m, -1.0}}, y[state_offset]});
   }
   void Derivatives(Eval& e) override { e.ydot[state_offset] = WF(e); }
+  std::vector<int> StateSpeedNodes(int k) const override { return k == 0 ? std::vector<int>{m, p} : std::vector<int>{}; }
   std::vector<std::string> OutputNames() const override {
     if (one_way) return {"phi_rel", "w_rel", "tau", "fn", "stuck", "startForward"};
     return {"phi_rel", "w_rel", "tau", "fn", "mode", "startForward", "startBackward"};

@@ -15,6 +15,7 @@
 #include "highlift/core/message_number.h"
 #include "sundials_compat.h"
 #include "fast_kernels.h"
+#include "reduced_klu.h"
 #include "system.h"
 
 namespace highlift::sim {
@@ -33,8 +34,9 @@ void SimulationOptions::Validate() const {
   if (!(torque_tolerance >= 0)) fail("torque_tolerance must be >= 0 N*m (0: off)");
   if (max_step < 0) fail("max_step must be >= 0 (0: no limit)");
   if (!(passivity_tolerance > 0)) fail("passivity_tolerance must be > 0 (relative to the run's power scale)");
-  if (linear_solver != "auto" && linear_solver != "dense" && linear_solver != "band" && linear_solver != "sparse")
-    fail("linear_solver = '" + linear_solver + "' must be one of auto, dense, band, sparse");
+  if (linear_solver != "auto" && linear_solver != "dense" && linear_solver != "band" && linear_solver != "sparse" &&
+      linear_solver != "sparse_whole")
+    fail("linear_solver = '" + linear_solver + "' must be one of auto, dense, band, sparse, sparse_whole");
 }
 
 std::string ToString(SimulationStatus status) {
@@ -582,7 +584,13 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
       }
     }
   };
+  SUNLinearSolver reduced_solver = nullptr;  // the sparse solver that eliminates states, if used
   auto finish = [&] {
+    if (reduced_solver != nullptr && detail::ReducedKluFullSetups(reduced_solver) > 0) {
+      std::string& name = report.statistics.linear_solver;
+      name.insert(name.size() - 1, "; " + std::to_string(detail::ReducedKluFullSetups(reduced_solver)) +
+                                       " setups factored whole");
+    }
     const double threshold = -options.passivity_tolerance * report.passivity.power_scale;
     for (std::size_t i = 0; i < elements.size(); ++i) {
       if (open_episode[i].open) close_episode(i);
@@ -760,7 +768,8 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
   if (options.max_step > 0 && !check(CVodeSetMaxStep(cv.mem, options.max_step), "CVodeSetMaxStep", t))
     return finish();
   const int mu = std::min(sys.upper_bandwidth(), n - 1), ml = std::min(sys.lower_bandwidth(), n - 1);
-  const bool sparse = options.linear_solver == "sparse" || (options.linear_solver == "auto" && n > 60);
+  const bool sparse = options.linear_solver == "sparse" || options.linear_solver == "sparse_whole" ||
+                      (options.linear_solver == "auto" && n > 60);
   const bool band = options.linear_solver == "band";
   ColoredJacobian colored;
   data.cvode = cv.mem;
@@ -777,16 +786,27 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
     cv.A = SUNSparseMatrix(n, n, static_cast<sunindextype>(colored.rows.size()), CSC_MAT, cv.ctx);
     if (!check_ptr(cv.A, "SUNSparseMatrix")) return finish();
     detail::InstallFastSparseOps(cv.A);
-    cv.ls = SUNLinSol_KLU(cv.y, cv.A, cv.ctx);
-    if (!check_ptr(cv.ls, "SUNLinSol_KLU")) return finish();
-    // Fill-reducing ordering AMD (0) rather than KLU's default COLAMD (1): the pattern is
-    // structurally symmetric (the node groups' cliques), where AMD gives less fill; the drive
-    // models' refactorisations and solves take about 8 % less time (docs/performance.md).
-    if (!check(SUNLinSol_KLUSetOrdering(cv.ls, 0), "SUNLinSol_KLUSetOrdering", t)) return finish();
-    colored.klu = cv.ls;
-    colored.matrix = cv.A;
+    // The angles and twists eliminated before KLU factors the rest (reduced_klu.h), unless
+    // the whole matrix is asked for or nothing can be eliminated.
+    if (options.linear_solver != "sparse_whole")
+      cv.ls = detail::NewReducedKlu(colored.colptr, colored.rows, sys.SpeedRows(), cv.ctx);
+    std::string reduced;
+    if (cv.ls != nullptr) {
+      reduced_solver = cv.ls;
+      reduced = ", " + std::to_string(n - detail::ReducedKluSize(cv.ls)) + " of " + std::to_string(n) +
+                " states eliminated";
+    } else {
+      cv.ls = SUNLinSol_KLU(cv.y, cv.A, cv.ctx);
+      if (!check_ptr(cv.ls, "SUNLinSol_KLU")) return finish();
+      // Fill-reducing ordering AMD (0) rather than KLU's default COLAMD (1): the pattern is
+      // structurally symmetric (the node groups' cliques), where AMD gives less fill; the drive
+      // models' refactorisations and solves take about 8 % less time (docs/performance.md).
+      if (!check(SUNLinSol_KLUSetOrdering(cv.ls, 0), "SUNLinSol_KLUSetOrdering", t)) return finish();
+      colored.klu = cv.ls;
+      colored.matrix = cv.A;
+    }
     report.statistics.linear_solver = "sparse(KLU, " + std::to_string(colored.rows.size()) + " entries, " +
-                                      std::to_string(colored.colors.size()) + " colours)";
+                                      std::to_string(colored.colors.size()) + " colours" + reduced + ")";
   } else if (band) {
     cv.A = SUNBandMatrix(n, mu, ml, cv.ctx);
     if (!check_ptr(cv.A, "SUNBandMatrix")) return finish();

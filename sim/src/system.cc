@@ -1251,6 +1251,30 @@ std::vector<System::NodeStart> System::StartOfFreeNodes(const double* y, const s
   return out;
 }
 
+std::vector<std::optional<std::vector<int>>> System::SpeedRows() const {
+  std::vector<std::optional<std::vector<int>>> rows(n_states_);
+  for (const StateNode& node : state_nodes_) {
+    if (node.massless) rows[node.s_w] = std::vector<int>{};  // held: der(w) = 0
+    else rows[node.s_phi] = std::vector<int>{node.s_w};
+  }
+  for (const auto& el : elements_)
+    for (int k = 0; k < el->NumStates(); ++k) {
+      const std::vector<int> speed_nodes = el->StateSpeedNodes(k);
+      if (speed_nodes.empty()) continue;
+      std::vector<int> row;
+      bool speeds_only = true;
+      for (int n : speed_nodes) {
+        if (nodes_[n].ground) continue;  // at rest
+        if (nodes_[n].massless) speeds_only = false;  // its speed is solved from the torques
+        else row.push_back(nodes_[n].s_w);
+      }
+      std::sort(row.begin(), row.end());
+      row.erase(std::unique(row.begin(), row.end()), row.end());
+      if (speeds_only) rows[el->state_offset + k] = std::move(row);
+    }
+  return rows;
+}
+
 std::vector<double> System::AbsoluteTolerances(double absolute, double torque_tolerance) const {
   std::vector<double> tolerance(n_states_, absolute);
   auto scaled = [&](double nominal) { return std::isnan(nominal) ? absolute : absolute * std::abs(nominal); };

@@ -5,6 +5,7 @@
 
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -34,6 +35,11 @@ class System {
   /// jacobian_rows()[jacobian_colptr()[j] .. jacobian_colptr()[j + 1]).
   const std::vector<int>& jacobian_colptr() const { return jacobian_colptr_; }
   const std::vector<int>& jacobian_rows() const { return jacobian_rows_; }
+  /// Per state, the states its derivative depends on when those are speeds alone, in every
+  /// mode: a node angle on the node's speed, a massless node's held speed state on nothing, a
+  /// relative angle (Element::StateSpeedNodes) on the speeds of its nodes when none of them is
+  /// massless. No value for every other state.
+  std::vector<std::optional<std::vector<int>>> SpeedRows() const;
 
   /// Consistent initial node angles and speeds and element states (throws InputError for
   /// contradictory initial values).

@@ -57,6 +57,9 @@ struct SimulationOptions {
   /// "auto": dense for small networks, sparse (KLU, difference-quotient Jacobian on the
   /// network's sparsity pattern with column colouring) from 60 states on; "dense", "band"
   /// (difference quotients on the band of the state ordering) or "sparse" to force one.
+  /// "sparse" eliminates the node angles and the spring twists (whose derivatives are speeds)
+  /// from each Newton system before KLU factors the rest, where that adds no entry;
+  /// "sparse_whole" factors the whole system (the same solutions up to roundoff; slower).
   std::string linear_solver = "auto";
   /// Start from the static equilibrium at rest: the spring twists that balance the loads
   /// acting at the start time (for instance airloads held by a brake), found after the
@@ -150,7 +153,9 @@ struct SolverStatistics {
   long reinitialisations = 0;
   long continuous_roots = 0;  ///< roots crossed without a restart (kinks)
   int states = 0;
-  std::string linear_solver;  ///< "dense" or "band(mu,ml)"
+  /// "dense", "band(mu,ml)" or "sparse(KLU, ...)" with the states eliminated and the setups
+  /// that had to factor the whole matrix (ReducedKlu).
+  std::string linear_solver;
 };
 
 /// The energy balance of a run (SimulationOptions::energy), integrated by the trapezoidal rule
