@@ -284,8 +284,9 @@ int CopySparse(SUNMatrix A, SUNMatrix B) {
 
 // A = c*A + I when every diagonal entry is in the pattern; otherwise SUNDIALS inserts them.
 // The diagonal is found by a binary search per column (the rows of a column are sorted in the
-// simulator's matrices; an unsorted one is handed to SUNDIALS), then every entry is scaled in one
-// loop and 1 added on the diagonal: the same doubles as c*a + (diagonal ? 1 : 0) per entry.
+// simulator's matrices), then every entry is scaled in one loop and 1 added on the diagonal: the
+// same doubles as c*a + (diagonal ? 1 : 0) per entry. A column without its diagonal, or with
+// unsorted rows, hands the matrix to SUNDIALS.
 int ScaleAddISparse(sunrealtype c, SUNMatrix A) {
   SUNMatrixContent_Sparse m = SM_CONTENT_S(A);
   if (m->sparsetype != CSC_MAT || m->M != m->N) return SUNMatScaleAddI_Sparse(c, A);
@@ -298,15 +299,7 @@ int ScaleAddISparse(sunrealtype c, SUNMatrix A) {
     const sunindextype* begin = row + ptr[j];
     const sunindextype* end = row + ptr[j + 1];
     const sunindextype* at = std::lower_bound(begin, end, j);
-    if (at == end || *at != j) {
-      // Not found: no diagonal entry, or unsorted rows; the plain search decides.
-      bool found = false;
-      for (const sunindextype* k = begin; k != end && !found; ++k) found = *k == j;
-      if (!found) return SUNMatScaleAddI_Sparse(c, A);
-      for (sunindextype jj = 0; jj < n; ++jj)  // unsorted: the entry-by-entry form
-        for (sunindextype k = ptr[jj]; k < ptr[jj + 1]; ++k) m->data[k] = c * m->data[k] + (row[k] == jj ? 1.0 : 0.0);
-      return 0;
-    }
+    if (at == end || *at != j) return SUNMatScaleAddI_Sparse(c, A);
     diagonal[static_cast<std::size_t>(j)] = at - row;
   }
   double* data = m->data;

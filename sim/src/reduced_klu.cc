@@ -50,12 +50,20 @@ namespace {
 /// One eliminated state k: its diagonal and the entries of its column M(v, k) (v kept) and of
 /// its row M(k, v) (v in its speed row), as positions in M's values and reduced indices.
 struct Eliminated {
-  int state = 0;
   long diagonal = 0;                      ///< position of M(k, k)
   std::vector<long> column_pos, row_pos;  ///< positions of M(v, k) and M(k, v)
-  std::vector<int> column_v, row_v;       ///< the reduced index of v
+  std::vector<int> column_v;              ///< the reduced index of each v of the column
   std::vector<long> zero_pos;             ///< the rest of row k in the pattern: must be 0
 };
+
+/// Position of `row` among the entries [begin, end) of `rows` (one column, rows sorted), -1 when
+/// it is not there.
+template <class Index>
+long Find(const std::vector<Index>& rows, long begin, long end, long row) {
+  const auto first = rows.begin() + begin, last = rows.begin() + end;
+  const auto it = std::lower_bound(first, last, static_cast<Index>(row));
+  return it != last && *it == row ? static_cast<long>(it - rows.begin()) : -1;
+}
 
 /// KLU's objects for one matrix (the reduced one, or the full one after a failed check).
 struct Factors {
@@ -132,15 +140,16 @@ int Setup(SUNLinearSolver S, SUNMatrix A) {
   const double* M = SUNSparseMatrix_Data(A);
   // The eliminated rows hold nothing but their speeds, and their diagonals are not small.
   bool reducible = true;
-  for (std::size_t e = 0; e < c.eliminated.size() && reducible; ++e) {
+  for (std::size_t e = 0; e < c.eliminated.size(); ++e) {
     const Eliminated& el = c.eliminated[e];
-    for (long p : el.zero_pos)
-      if (M[p] != 0.0) reducible = false;
     double largest = 0.0;
     for (long p : el.row_pos) largest = std::max(largest, std::abs(M[p]));
     const double d = M[el.diagonal];
-    if (!(std::abs(d) > 1e-8 * largest) || !std::isfinite(d)) reducible = false;
-    if (!reducible) break;
+    if (!std::all_of(el.zero_pos.begin(), el.zero_pos.end(), [&](long p) { return M[p] == 0.0; }) ||
+        !(std::abs(d) > 1e-8 * largest) || !std::isfinite(d)) {
+      reducible = false;
+      break;
+    }
     c.inverse_diagonal[e] = 1.0 / d;
     for (std::size_t i = 0; i < el.row_pos.size(); ++i) c.row_values[c.row_begin[e] + i] = M[el.row_pos[i]];
   }
@@ -246,12 +255,8 @@ SUNLinearSolver NewReducedKlu(const std::vector<int>& colptr, const std::vector<
       c->kept.push_back(j);
     }
   c->m = static_cast<int>(c->kept.size());
-  // Position of M(i, j) in the compressed columns (rows sorted), -1 when outside the pattern.
-  auto position = [&](int i, int j) -> long {
-    const auto begin = rows.begin() + colptr[j], end = rows.begin() + colptr[j + 1];
-    const auto it = std::lower_bound(begin, end, i);
-    return it != end && *it == i ? static_cast<long>(it - rows.begin()) : -1;
-  };
+  // Position of M(i, j) in the compressed columns, -1 when outside the pattern.
+  auto position = [&](int i, int j) { return Find(rows, colptr[j], colptr[j + 1], i); };
   // S: the kept columns and rows of M, in M's order.
   Factors& s = c->reduced;
   s.colptr.push_back(0);
@@ -263,15 +268,12 @@ SUNLinearSolver NewReducedKlu(const std::vector<int>& colptr, const std::vector<
       }
     s.colptr.push_back(static_cast<SuiteSparse_long>(s.rows.size()));
   }
-  auto s_position = [&](int i, int j) -> long {  // full indices, both kept
-    const auto begin = s.rows.begin() + s.colptr[reduced[j]], end = s.rows.begin() + s.colptr[reduced[j] + 1];
-    const auto it = std::lower_bound(begin, end, static_cast<SuiteSparse_long>(reduced[i]));
-    return it != end && *it == reduced[i] ? static_cast<long>(it - s.rows.begin()) : -1;
+  auto s_position = [&](int i, int j) {  // full indices, both kept
+    return Find(s.rows, s.colptr[reduced[j]], s.colptr[reduced[j] + 1], reduced[i]);
   };
   for (int k = 0; k < n; ++k) {
     if (!eliminated[k]) continue;
     Eliminated el;
-    el.state = k;
     el.diagonal = position(k, k);
     const std::vector<int>& row = *speed_rows[k];
     for (int p = colptr[k]; p < colptr[k + 1]; ++p) {
@@ -283,20 +285,17 @@ SUNLinearSolver NewReducedKlu(const std::vector<int>& colptr, const std::vector<
       }
       if (std::find(row.begin(), row.end(), v) == row.end()) el.zero_pos.push_back(position(k, v));
     }
-    for (int v : row) {
-      el.row_pos.push_back(position(k, v));
-      el.row_v.push_back(reduced[v]);
-    }
+    for (int v : row) el.row_pos.push_back(position(k, v));
     c->update_begin.push_back(static_cast<long>(c->update_s.size()));
     for (std::size_t i = 0; i < el.column_pos.size(); ++i)
       for (std::size_t j = 0; j < el.row_pos.size(); ++j) {
-        const long p = s_position(c->kept[el.column_v[i]], c->kept[el.row_v[j]]);
+        const long p = s_position(c->kept[el.column_v[i]], row[j]);
         if (p < 0) return nullptr;  // EliminatedStates guarantees it
         c->update_s.push_back(p);
       }
     c->row_begin.push_back(static_cast<long>(c->row_values.size()));
     c->row_values.resize(c->row_values.size() + el.row_pos.size());
-    c->row_reduced.insert(c->row_reduced.end(), el.row_v.begin(), el.row_v.end());
+    for (int v : row) c->row_reduced.push_back(reduced[v]);
     c->eliminated_state.push_back(k);
     for (long p : el.row_pos)
       if (p < 0) return nullptr;

@@ -586,10 +586,10 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
   };
   SUNLinearSolver reduced_solver = nullptr;  // the sparse solver that eliminates states, if used
   auto finish = [&] {
-    if (reduced_solver != nullptr && detail::ReducedKluFullSetups(reduced_solver) > 0) {
+    const long whole = reduced_solver != nullptr ? detail::ReducedKluFullSetups(reduced_solver) : 0;
+    if (whole > 0) {
       std::string& name = report.statistics.linear_solver;
-      name.insert(name.size() - 1, "; " + std::to_string(detail::ReducedKluFullSetups(reduced_solver)) +
-                                       " setups factored whole");
+      name.insert(name.size() - 1, "; " + std::to_string(whole) + " setups factored whole");
     }
     const double threshold = -options.passivity_tolerance * report.passivity.power_scale;
     for (std::size_t i = 0; i < elements.size(); ++i) {
