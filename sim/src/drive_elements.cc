@@ -396,6 +396,7 @@ class Sensor : public Element {
   }
   std::vector<int> Nodes() const override { return b < 0 ? std::vector<int>{a} : std::vector<int>{a, b}; }
   MasslessRole RoleAt(int) const override { return MasslessRole::kNoTorque; }
+  bool HasReadings() const override { return false; }  // measures: no torque, no power
   std::vector<std::string> OutputNames() const override { return {output_}; }
   void Outputs(const Eval& e, double* out) const override { out[0] = e.signal[signal_offset]; }
   std::vector<std::string> flanges_;

@@ -397,7 +397,9 @@ class Element {
     (void)g;
   }
   virtual void RootDirections(int* direction) const { (void)direction; }
-  /// Earliest time event strictly after t (infinity if none).
+  /// Earliest time event strictly after t (infinity if none). The answer may change only at an
+  /// event (through the element's discrete state): the simulator asks again after each event,
+  /// and until then its steps stop at the time given.
   virtual double NextTimeEvent(double t) const {
     (void)t;
     return INFINITY;
@@ -500,6 +502,11 @@ class Element {
     (void)e;
     return NAN;
   }
+  /// Whether the readings of every step end (PeakTorque, LossPower, SourcePower) may say
+  /// anything of this element. False only for a type that overrides none of the three (its
+  /// readings are NaN, 0 and 0 whatever the state): the run then skips it at every step, and
+  /// checks once at the start that it reads so. True unless a type says otherwise.
+  virtual bool HasReadings() const { return true; }
 };
 
 /// Creates the element law for a network element (throws InputError for unsupported options).

@@ -73,6 +73,7 @@ class Inertia : public Element {
   std::vector<std::vector<std::string>> RigidFlanges() const override {
     return {{"flange_a", "flange_b"}};
   }
+  bool HasReadings() const override { return false; }  // its kinetic energy is the node's
   std::vector<std::string> Flanges() const override { return {"flange_a", "flange_b"}; }
   void Bind(const std::function<int(const std::string&)>& node_of,
             const std::function<int(const std::string&)>&) override {
@@ -1235,6 +1236,7 @@ class EddyCurrentTorque : public TorqueSource {
 class SignalBlock : public Element {
  public:
   bool IsSignalBlock() const override { return true; }
+  bool HasReadings() const override { return false; }  // signals: no torque, no power
   std::vector<std::string> OutputNames() const override { return {"y"}; }
   void Outputs(const Eval& e, double* out) const override { out[0] = e.signal[signal_offset]; }
 };

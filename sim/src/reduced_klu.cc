@@ -94,6 +94,11 @@ struct Content {
   std::vector<double> active_values;
   std::vector<long> active_begin;
   Factors reduced, full;
+  /// 1 at the diagonal's position in M's values, 0 elsewhere: M = -gamma*J + I entry by entry.
+  std::vector<double> identity;
+  /// The next setup is given J (ReducedKluSetGamma) rather than M.
+  bool given_jacobian = false;
+  double gamma = 0.0;
   bool use_full = false;  ///< the last setup factored the full matrix
   long full_setups = 0;
   klu_l_common common;
@@ -135,29 +140,29 @@ bool Factor(Factors& f, SuiteSparse_long size, klu_l_common& common) {
   return f.numeric != nullptr;
 }
 
-int Setup(SUNLinearSolver S, SUNMatrix A) {
-  Content& c = *Get(S);
-  const double* M = SUNSparseMatrix_Data(A);
+/// The setup on M's values as `m(p)` gives them (p: a position in the compressed columns).
+template <class Entry>
+int SetupOn(Content& c, const Entry& m) {
   // The eliminated rows hold nothing but their speeds, and their diagonals are not small.
   bool reducible = true;
   for (std::size_t e = 0; e < c.eliminated.size(); ++e) {
     const Eliminated& el = c.eliminated[e];
     double largest = 0.0;
-    for (long p : el.row_pos) largest = std::max(largest, std::abs(M[p]));
-    const double d = M[el.diagonal];
-    if (!std::all_of(el.zero_pos.begin(), el.zero_pos.end(), [&](long p) { return M[p] == 0.0; }) ||
+    for (long p : el.row_pos) largest = std::max(largest, std::abs(m(p)));
+    const double d = m(el.diagonal);
+    if (!std::all_of(el.zero_pos.begin(), el.zero_pos.end(), [&](long p) { return m(p) == 0.0; }) ||
         !(std::abs(d) > 1e-8 * largest) || !std::isfinite(d)) {
       reducible = false;
       break;
     }
     c.inverse_diagonal[e] = 1.0 / d;
-    for (std::size_t i = 0; i < el.row_pos.size(); ++i) c.row_values[c.row_begin[e] + i] = M[el.row_pos[i]];
+    for (std::size_t i = 0; i < el.row_pos.size(); ++i) c.row_values[c.row_begin[e] + i] = m(el.row_pos[i]);
   }
   c.use_full = !reducible;
   bool ok = false;
   if (reducible) {
     double* sv = c.reduced.values.data();
-    for (std::size_t i = 0; i < c.s_from.size(); ++i) sv[i] = M[c.s_from[i]];
+    for (std::size_t i = 0; i < c.s_from.size(); ++i) sv[i] = m(c.s_from[i]);
     c.active_v.clear();
     c.active_values.clear();
     for (std::size_t e = 0; e < c.eliminated.size(); ++e) {
@@ -167,7 +172,7 @@ int Setup(SUNLinearSolver S, SUNMatrix A) {
       const double* row = c.row_values.data() + c.row_begin[e];
       const long* s_pos = c.update_s.data() + c.update_begin[e];
       for (std::size_t i = 0; i < el.column_pos.size(); ++i) {
-        const double a = M[el.column_pos[i]];
+        const double a = m(el.column_pos[i]);
         if (a == 0.0) continue;
         c.active_v.push_back(el.column_v[i]);
         c.active_values.push_back(a);
@@ -179,11 +184,23 @@ int Setup(SUNLinearSolver S, SUNMatrix A) {
     ok = Factor(c.reduced, c.m, c.common);
   } else {
     ++c.full_setups;
-    std::copy(M, M + c.full.values.size(), c.full.values.begin());
+    for (std::size_t p = 0; p < c.full.values.size(); ++p) c.full.values[p] = m(static_cast<long>(p));
     ok = Factor(c.full, c.n, c.common);
   }
   c.last_flag = ok ? SUNLS_SUCCESS : SUNLS_PACKAGE_FAIL_REC;
   return c.last_flag;
+}
+
+int Setup(SUNLinearSolver S, SUNMatrix A) {
+  Content& c = *Get(S);
+  const double* values = SUNSparseMatrix_Data(A);
+  if (!c.given_jacobian) return SetupOn(c, [values](long p) { return values[p]; });
+  c.given_jacobian = false;
+  // M = I - gamma*J as SUNMatScaleAddI(-gamma, J) forms it (fast_kernels.cc): -gamma*J + 0.0,
+  // then 1 added on the diagonal. The same doubles, read where they are needed.
+  const double scale = -c.gamma;
+  const double* identity = c.identity.data();
+  return SetupOn(c, [values, identity, scale](long p) { return (scale * values[p] + 0.0) + identity[p]; });
 }
 
 int Solve(SUNLinearSolver S, SUNMatrix, N_Vector x, N_Vector b, sunrealtype) {
@@ -304,6 +321,12 @@ SUNLinearSolver NewReducedKlu(const std::vector<int>& colptr, const std::vector<
       if (p < 0) return nullptr;  // not structurally symmetric
     c->eliminated.push_back(std::move(el));
   }
+  c->identity.assign(rows.size(), 0.0);
+  for (int j = 0; j < n; ++j) {
+    const long p = position(j, j);
+    if (p < 0) return nullptr;  // the pattern lacks a diagonal: not for this solver
+    c->identity[p] = 1.0;
+  }
   s.values.assign(s.rows.size(), 0.0);
   c->full.colptr.assign(colptr.begin(), colptr.end());
   c->full.rows.assign(rows.begin(), rows.end());
@@ -331,5 +354,10 @@ SUNLinearSolver NewReducedKlu(const std::vector<int>& colptr, const std::vector<
 int ReducedKluSize(SUNLinearSolver S) { return Get(S)->m; }
 
 long ReducedKluFullSetups(SUNLinearSolver S) { return Get(S)->full_setups; }
+
+void ReducedKluSetGamma(SUNLinearSolver S, double gamma) {
+  Get(S)->given_jacobian = true;
+  Get(S)->gamma = gamma;
+}
 
 }  // namespace highlift::sim::detail

@@ -43,5 +43,11 @@ SUNLinearSolver NewReducedKlu(const std::vector<int>& colptr, const std::vector<
 int ReducedKluSize(SUNLinearSolver S);
 /// How many of its setups factored the whole matrix (the check above failed).
 long ReducedKluFullSetups(SUNLinearSolver S);
+/// The matrix of the next setup of a solver from NewReducedKlu is the Jacobian J, and the
+/// solver forms M = I - gamma*J itself as it reads the entries (the same doubles as
+/// SUNMatScaleAddI(-gamma, J)). CVODE's linear-system function calls it (Simulator::Run), so
+/// the Jacobian stays in CVODE's matrix between its evaluations: no copy of it and no pass of
+/// its own to form M at each setup. Without it a setup reads M.
+void ReducedKluSetGamma(SUNLinearSolver S, double gamma);
 
 }  // namespace highlift::sim::detail

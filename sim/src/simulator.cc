@@ -219,6 +219,11 @@ struct ColoredJacobian {
   /// The KLU solver and its matrix, re-pivoted after a failed refactorisation (SparseJacobian).
   SUNLinearSolver klu = nullptr;
   SUNMatrix matrix = nullptr;
+  /// The solver that eliminates the angles and twists (reduced_klu.h), given J and gamma, and
+  /// whether CVODE's matrix holds a whole Jacobian for it (not before the first evaluation nor
+  /// after one that failed).
+  SUNLinearSolver reduced = nullptr;
+  bool jacobian_in_matrix = false;
 
   void Build(const std::vector<int>& pattern_colptr, const std::vector<int>& pattern_rows) {
     colptr = pattern_colptr;
@@ -358,6 +363,27 @@ int SparseJacobian(sunrealtype t, N_Vector y, N_Vector fy, SUNMatrix J, void* us
     data->message = "Jacobian: unknown exception";
     return -1;
   }
+}
+
+/// CVODE's linear system for the solver that eliminates the angles and twists: the Jacobian
+/// by SparseJacobian when CVODE asks for a new one (jok false), kept in CVODE's matrix A between
+/// them (nothing else writes A), and gamma handed to the solver, which forms I - gamma*J as it
+/// reads J. CVODE's own version copies its saved J into A and scales A at every setup. A
+/// Jacobian that failed half-way is not kept: the next setup evaluates one whatever CVODE says.
+int ReducedLinearSystem(sunrealtype t, N_Vector y, N_Vector fy, SUNMatrix A, sunbooleantype jok,
+                        sunbooleantype* jcur, sunrealtype gamma, void* user, N_Vector tmp1, N_Vector tmp2,
+                        N_Vector tmp3) {
+  ColoredJacobian& jac = *static_cast<CallbackData*>(user)->jacobian;
+  const bool fresh = !jok || !jac.jacobian_in_matrix;
+  *jcur = fresh ? SUNTRUE : SUNFALSE;
+  if (fresh) {
+    jac.jacobian_in_matrix = false;
+    const int flag = SparseJacobian(t, y, fy, A, user, tmp1, tmp2, tmp3);
+    if (flag != 0) return flag;
+    jac.jacobian_in_matrix = true;
+  }
+  detail::ReducedKluSetGamma(jac.reduced, gamma);
+  return 0;
 }
 
 /// Whether a root function changed sign from `before` to `after` in the allowed direction
@@ -569,10 +595,12 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
     }
     if (options.energy) r.energy = sys.Energy();
   };
+  const std::vector<int>& readings_of = sys.ReadingElements();
   auto monitor = [&](double t, const std::vector<double>& loss, double loss_scale) {
     report.passivity.power_scale = std::max(report.passivity.power_scale, loss_scale);
     const double threshold = -options.passivity_tolerance * report.passivity.power_scale;
-    for (std::size_t i = 0; i < loss.size(); ++i) {
+    for (const int reading : readings_of) {  // (the others dissipate nothing: System::ReadingElements)
+      const auto i = static_cast<std::size_t>(reading);
       Episode& e = open_episode[i];
       if (loss[i] < threshold) {
         if (!e.open) e = {true, 0, t, t, loss[i], t};
@@ -632,7 +660,8 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
       const bool locate = track.samples >= 2 && track.middle_smooth;
       const double* before = track.v1.data();
       const double* middle = track.v2.data();
-      for (std::size_t i = 0; i < tau.size(); ++i) {
+      for (const int reading : readings_of) {  // (the others carry no torque)
+        const auto i = static_cast<std::size_t>(reading);
         const double v = tau[i];
         if (std::isnan(v)) continue;
         has_torque[i] = 1;
@@ -710,6 +739,7 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
     }
     report.events.insert(report.events.end(), initial.begin(), initial.end());
     sample_and_row(options.start_time);
+    HIGHLIFT_CHECK(sys.ReadingsAsDeclared(), "an element without readings (Element::HasReadings) reads a torque or a power");
     sys.AfterEventRow();
   }
   if (n == 0) {
@@ -793,6 +823,7 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
     std::string reduced;
     if (cv.ls != nullptr) {
       reduced_solver = cv.ls;
+      colored.reduced = cv.ls;
       reduced = ", " + std::to_string(n - detail::ReducedKluSize(cv.ls)) + " of " + std::to_string(n) +
                 " states eliminated";
     } else {
@@ -821,7 +852,11 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
     report.statistics.linear_solver = "dense";
   }
   if (!check(CVodeSetLinearSolver(cv.mem, cv.ls, cv.A), "CVodeSetLinearSolver", t)) return finish();
-  if (sparse && !check(CVodeSetJacFn(cv.mem, SparseJacobian), "CVodeSetJacFn", t)) return finish();
+  if (sparse && colored.reduced != nullptr) {
+    if (!check(CVodeSetLinSysFn(cv.mem, ReducedLinearSystem), "CVodeSetLinSysFn", t)) return finish();
+  } else if (sparse && !check(CVodeSetJacFn(cv.mem, SparseJacobian), "CVodeSetJacFn", t)) {
+    return finish();
+  }
   // State events: CVODE locates the roots that need the whole model evaluated; the kinematic
   // ones (System::KinematicRoot: a function of the node speeds and angles, no restart) are
   // located here on CVODE's interpolant from the states alone, which saves the dozen model
@@ -1047,13 +1082,20 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
     std::vector<double> g;  ///< the root functions
   } end;
   end.g.assign(g_prev.size(), 1.0);
+  // The next time event, asked of the elements again only after an event: between events their
+  // discrete state is fixed (Element::NextTimeEvent), and the steps stop at that time.
+  double t_event = INFINITY;
+  bool t_event_current = false;
   while (t < t_end - eps_t) {
     if (InterruptRequested()) {
       fail(SimulationStatus::kInterrupted,
            "interrupted by signal " + std::to_string(InterruptSignal()) + " at t = " + FormatMessageNumber(t) + " s", t);
       break;
     }
-    const double t_event = sys.NextTimeEvent(t);
+    if (!t_event_current) {
+      t_event = sys.NextTimeEvent(t);
+      t_event_current = true;
+    }
     const bool event_ahead = t_event <= t_end + eps_t;
     const double stop = event_ahead ? std::min(t_event, t_end) : t_end;
     if (stop != stop_set) {
@@ -1176,6 +1218,7 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
     const bool time_event = event_ahead && std::abs(t - t_event) <= eps_t && t < t_end - eps_t;
     const bool event = flag == CV_ROOT_RETURN || hidden_root || kinematic_root || time_event;
     const SampleKind end_kind = event ? SampleKind::kKink : SampleKind::kStepEnd;
+    if (event) t_event_current = false;
     if (from_readings) record(t, end.readings, end_kind);
     const bool evaluate = !from_readings || event || (on_output && reads_values);
     if (evaluate && !sys.Evaluate(t, N_VGetArrayPointer(cv.y), nullptr)) {

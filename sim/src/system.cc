@@ -292,6 +292,8 @@ System::System(const Network& original) {
     if (kinematic) kinematic_root_elements_.push_back(el.get());
     kinematic_scratch_.resize(std::max<std::size_t>(kinematic_scratch_.size(), el->NumRoots()));
   }
+  for (std::size_t i = 0; i < elements_.size(); ++i)
+    if (elements_[i]->HasReadings()) reading_elements_.push_back(static_cast<int>(i));
   ClassifyMasslessNodes();
   AssignStates(signal_source, slot_owner);
   for (std::size_t n = 0; n < nodes_.size(); ++n) {
@@ -1325,14 +1327,10 @@ void System::EvaluateSignals(const std::vector<int>& order) {
 
 bool System::AtLastEvaluation(double t, const double* y) const {
   if (!cache_valid_ || t != cache_t_ || t_segment_ != cache_segment_) return false;
-  // std::equal's comparisons four states at a time: one branch per four (a hit compares all).
-  const double* c = cache_y_.data();
-  int i = 0;
-  for (; i + 4 <= n_states_; i += 4)
-    if ((y[i] != c[i]) | (y[i + 1] != c[i + 1]) | (y[i + 2] != c[i + 2]) | (y[i + 3] != c[i + 3])) return false;
-  for (; i < n_states_; ++i)
-    if (y[i] != c[i]) return false;
-  return true;
+  // The same doubles bit for bit (memcmp, vectorised: a hit compares every state, several times
+  // per step). A state of -0.0 against 0.0 is a miss, and the point is evaluated again; a NaN
+  // state fails the evaluation either way.
+  return std::memcmp(y, cache_y_.data(), sizeof(double) * static_cast<std::size_t>(n_states_)) == 0;
 }
 
 void System::SetKinematics(double t, const double* y) {
@@ -1852,13 +1850,25 @@ System::EnergyState System::Energy() const {
 }
 
 double System::LossPowers(std::vector<double>& loss) const {
-  loss.resize(elements_.size());
+  if (loss.size() != elements_.size()) loss.assign(elements_.size(), 0.0);
   double scale = 0.0;
-  for (std::size_t i = 0; i < elements_.size(); ++i) {
-    loss[i] = elements_[i]->LossPower(eval_);
-    scale += std::abs(loss[i]) + std::abs(elements_[i]->SourcePower(eval_));
+  for (int i : reading_elements_) {
+    const Element& el = *elements_[static_cast<std::size_t>(i)];
+    loss[static_cast<std::size_t>(i)] = el.LossPower(eval_);
+    scale += std::abs(loss[static_cast<std::size_t>(i)]) + std::abs(el.SourcePower(eval_));
   }
   return scale;
+}
+
+bool System::ReadingsAsDeclared() const {
+  std::vector<char> reads(elements_.size(), 0);
+  for (int i : reading_elements_) reads[static_cast<std::size_t>(i)] = 1;
+  for (std::size_t i = 0; i < elements_.size(); ++i) {
+    const Element& el = *elements_[i];
+    if (!reads[i] && !(std::isnan(el.PeakTorque(eval_)) && el.LossPower(eval_) == 0.0 && el.SourcePower(eval_) == 0.0))
+      return false;
+  }
+  return true;
 }
 
 void System::Roots(double* g) const {
@@ -2051,8 +2061,8 @@ bool System::HydraulicDerivatives(double* ydot) {
 }
 
 void System::PeakTorques(std::vector<double>& tau) const {
-  tau.resize(elements_.size());
-  for (std::size_t i = 0; i < elements_.size(); ++i) tau[i] = elements_[i]->PeakTorque(eval_);
+  if (tau.size() != elements_.size()) tau.assign(elements_.size(), NAN);
+  for (int i : reading_elements_) tau[static_cast<std::size_t>(i)] = elements_[static_cast<std::size_t>(i)]->PeakTorque(eval_);
 }
 
 }  // namespace highlift::sim::detail

@@ -123,8 +123,14 @@ class System {
 
   /// Outputs of the last Evaluate.
   void Outputs(double* out) const;
-  /// Element torques of the last Evaluate (NaN for elements without one).
+  /// Element torques of the last Evaluate (NaN for elements without one). Only the entries of
+  /// ReadingElements() are written: the others are NaN from when `tau` was sized.
   void PeakTorques(std::vector<double>& tau) const;
+  /// The elements whose readings may say something (Element::HasReadings), in order: the run
+  /// reads and monitors only these at each step end.
+  const std::vector<int>& ReadingElements() const { return reading_elements_; }
+  /// Whether every element outside ReadingElements() reads NaN, 0 and 0 at the last Evaluate.
+  bool ReadingsAsDeclared() const;
 
   /// Energy bookkeeping of the last Evaluate.
   struct EnergyState {
@@ -136,7 +142,8 @@ class System {
   EnergyState Energy() const;
   /// The passivity monitor's reading of the last Evaluate: each element's dissipated power
   /// (Element::LossPower, W) into `loss` (one per element), and the power scale
-  /// sum(|loss| + |source power|) over the elements as the result.
+  /// sum(|loss| + |source power|) over the elements as the result. Only the entries of
+  /// ReadingElements() are written: the others are 0 from when `loss` was sized.
   double LossPowers(std::vector<double>& loss) const;
   /// Kinetic energy removed by the speed projections of all events so far (J, >= 0).
   double impulsive_loss() const { return impulsive_loss_; }
@@ -194,6 +201,7 @@ class System {
   /// The elements with root functions (NumRoots() > 0, fixed by their parameters), in order:
   /// Roots() runs at every step end and output point and needs no pass over the others.
   std::vector<Element*> root_elements_;
+  std::vector<int> reading_elements_;  ///< indices of the elements with HasReadings()
   /// The elements each phase of Evaluate calls (all until PrunePhases has run).
   std::vector<Element*> forces_, constraints_, after_solve_, derivatives_;
   bool phases_pruned_ = false;

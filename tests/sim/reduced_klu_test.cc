@@ -84,9 +84,13 @@ struct Chain {
     }
     for (int i = 0; i < nodes; ++i) speed_rows[2 * i] = std::vector<int>{2 * i + 1};
   }
-  /// M = I - gamma J of that structure with random values: angle rows the speed, twist rows the
-  /// speed difference, speed rows random on the pattern.
+  /// M = I - gamma J of that structure (Jacobian below).
   Eigen::MatrixXd Matrix(std::mt19937& rng, double gamma) const {
+    return Eigen::MatrixXd::Identity(n, n) - gamma * Jacobian(rng);
+  }
+  /// J with random values: angle rows the speed, twist rows the speed difference, speed rows
+  /// random on the pattern.
+  Eigen::MatrixXd Jacobian(std::mt19937& rng) const {
     std::uniform_real_distribution<double> u(-1.0, 1.0);
     Eigen::MatrixXd J = Eigen::MatrixXd::Zero(n, n);
     for (int i = 0; i < nodes; ++i) J(2 * i, 2 * i + 1) = 1.0;
@@ -97,7 +101,7 @@ struct Chain {
     for (int i = 0; i < nodes; ++i)
       for (int j = 0; j < n; ++j)
         if (dense[2 * i + 1][j] != 0) J(2 * i + 1, j) = 50.0 * u(rng);
-    return Eigen::MatrixXd::Identity(n, n) - gamma * J;
+    return J;
   }
 };
 
@@ -137,6 +141,22 @@ class SolverFixture {
     double error = 0.0;
     for (int i = 0; i < n_; ++i) error = std::max(error, std::abs(NV_Ith_S(x_, i) - exact(i)));
     return error / exact.cwiseAbs().maxCoeff();
+  }
+  /// Solves (I - gamma*J) x = b with the solver given J and gamma (ReducedKluSetGamma, as CVODE's
+  /// linear-system function in the simulator does) or, when `given_jacobian` is false, given
+  /// I - gamma*J as SUNDIALS' own SUNMatScaleAddI forms it from J. False when a call fails.
+  bool SolveFrom(const Eigen::MatrixXd& J, double gamma, bool given_jacobian, const Eigen::VectorXd& b,
+                 Eigen::VectorXd& x) {
+    for (int j = 0; j < n_; ++j)
+      for (int k = colptr_[j]; k < colptr_[j + 1]; ++k) SUNSparseMatrix_Data(A_)[k] = J(rows_[k], j);
+    if (given_jacobian) ReducedKluSetGamma(ls_, gamma);
+    else if (SUNMatScaleAddI_Sparse(-gamma, A_) != SUNMAT_SUCCESS) return false;
+    if (SUNLinSolSetup(ls_, A_) != SUNLS_SUCCESS) return false;
+    for (int i = 0; i < n_; ++i) NV_Ith_S(b_, i) = b(i);
+    if (SUNLinSolSolve(ls_, A_, x_, b_, 0.0) != SUNLS_SUCCESS) return false;
+    x.resize(n_);
+    for (int i = 0; i < n_; ++i) x(i) = NV_Ith_S(x_, i);
+    return true;
   }
 
  private:
@@ -180,6 +200,30 @@ TEST(ReducedKlu, SolutionsAreThoseOfTheWholeSystem) {
     EXPECT_LT(fixture.SolveError(M, b), 1e-12) << "gamma " << gamma;
   }
   EXPECT_EQ(ReducedKluFullSetups(fixture.solver()), 0);
+}
+
+// Given J and gamma, the solver forms I - gamma*J itself as it reads J (the simulator keeps the
+// Jacobian in CVODE's matrix between its evaluations): the same solutions to the last bit as
+// when it is given the matrix that SUNDIALS' SUNMatScaleAddI forms, over a sequence of setups
+// with new Jacobians and new gammas on one solver each. A setup without ReducedKluSetGamma reads
+// its matrix as I - gamma*J again.
+TEST(ReducedKlu, GivenTheJacobianAndGammaItSolvesAsGivenIMinusGammaJ) {
+  ChainSolver from_jacobian(12), from_matrix(12);
+  const Chain& chain = from_jacobian.chain;
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  Eigen::MatrixXd J = chain.Jacobian(rng);
+  for (double gamma : {1e-5, 1e-3, 2e-3, 3e-2}) {
+    if (gamma > 1e-3) J = chain.Jacobian(rng);  // a new Jacobian, or the same with a new gamma
+    Eigen::VectorXd b(chain.n), x_jacobian, x_matrix;
+    for (int i = 0; i < chain.n; ++i) b(i) = u(rng);
+    ASSERT_TRUE(from_jacobian.fixture->SolveFrom(J, gamma, true, b, x_jacobian));
+    ASSERT_TRUE(from_matrix.fixture->SolveFrom(J, gamma, false, b, x_matrix));
+    for (int i = 0; i < chain.n; ++i) EXPECT_EQ(x_jacobian(i), x_matrix(i)) << "gamma " << gamma << ", state " << i;
+  }
+  const Eigen::MatrixXd M = chain.Matrix(rng, 1e-3);
+  EXPECT_LT(from_jacobian.fixture->SolveError(M, Eigen::VectorXd::Ones(chain.n)), 1e-12);
+  EXPECT_EQ(ReducedKluFullSetups(from_jacobian.fixture->solver()), 0);
 }
 
 /// Four inertias on three springs, with a solver.
