@@ -205,8 +205,8 @@ TEST(ReducedKlu, SolutionsAreThoseOfTheWholeSystem) {
 // Given J and gamma, the solver forms I - gamma*J itself as it reads J (the simulator keeps the
 // Jacobian in CVODE's matrix between its evaluations): the same solutions to the last bit as
 // when it is given the matrix that SUNDIALS' SUNMatScaleAddI forms, over a sequence of setups
-// with new Jacobians and new gammas on one solver each. A setup without ReducedKluSetGamma reads
-// its matrix as I - gamma*J again.
+// with new Jacobians and new gammas on one solver each, also where the matrix is factored whole.
+// A setup without ReducedKluSetGamma reads its matrix as I - gamma*J again.
 TEST(ReducedKlu, GivenTheJacobianAndGammaItSolvesAsGivenIMinusGammaJ) {
   ChainSolver from_jacobian(12), from_matrix(12);
   const Chain& chain = from_jacobian.chain;
@@ -221,9 +221,19 @@ TEST(ReducedKlu, GivenTheJacobianAndGammaItSolvesAsGivenIMinusGammaJ) {
     ASSERT_TRUE(from_matrix.fixture->SolveFrom(J, gamma, false, b, x_matrix));
     for (int i = 0; i < chain.n; ++i) EXPECT_EQ(x_jacobian(i), x_matrix(i)) << "gamma " << gamma << ", state " << i;
   }
+  // A Jacobian outside the assumption (an angle's row reads another speed): both factor the
+  // whole matrix, with the same solutions.
+  J(0, 3) = 0.5;
+  Eigen::VectorXd x_jacobian, x_matrix;
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(chain.n, -1.0, 1.0);
+  ASSERT_TRUE(from_jacobian.fixture->SolveFrom(J, 2e-3, true, b, x_jacobian));
+  ASSERT_TRUE(from_matrix.fixture->SolveFrom(J, 2e-3, false, b, x_matrix));
+  for (int i = 0; i < chain.n; ++i) EXPECT_EQ(x_jacobian(i), x_matrix(i)) << "whole, state " << i;
+  EXPECT_EQ(ReducedKluFullSetups(from_jacobian.fixture->solver()), 1);
+  EXPECT_EQ(ReducedKluFullSetups(from_matrix.fixture->solver()), 1);
   const Eigen::MatrixXd M = chain.Matrix(rng, 1e-3);
   EXPECT_LT(from_jacobian.fixture->SolveError(M, Eigen::VectorXd::Ones(chain.n)), 1e-12);
-  EXPECT_EQ(ReducedKluFullSetups(from_jacobian.fixture->solver()), 0);
+  EXPECT_EQ(ReducedKluFullSetups(from_jacobian.fixture->solver()), 1);
 }
 
 /// Four inertias on three springs, with a solver.
