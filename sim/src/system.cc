@@ -1861,13 +1861,10 @@ double System::LossPowers(std::vector<double>& loss) const {
 }
 
 bool System::ReadingsAsDeclared() const {
-  std::vector<char> reads(elements_.size(), 0);
-  for (int i : reading_elements_) reads[static_cast<std::size_t>(i)] = 1;
-  for (std::size_t i = 0; i < elements_.size(); ++i) {
-    const Element& el = *elements_[i];
-    if (!reads[i] && !(std::isnan(el.PeakTorque(eval_)) && el.LossPower(eval_) == 0.0 && el.SourcePower(eval_) == 0.0))
+  for (const auto& el : elements_)
+    if (!el->HasReadings() &&
+        !(std::isnan(el->PeakTorque(eval_)) && el->LossPower(eval_) == 0.0 && el->SourcePower(eval_) == 0.0))
       return false;
-  }
   return true;
 }
 
