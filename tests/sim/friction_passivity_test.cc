@@ -582,6 +582,15 @@ INSTANTIATE_TEST_SUITE_P(Patterns, FrictionPassivity, ::testing::ValuesIn(AllPar
                            return AllCases()[info.param.index].name + "Rtol1e" + std::to_string(e);
                          });
 
+// A run of `net` from 0 to `stop_time` with the default options.
+SimulationReport RunTo(const Network& net, double stop_time) {
+  Simulator sim(net);
+  SimulationOptions o;
+  o.stop_time = stop_time;
+  MemorySink sink;
+  return sim.Run(o, sink);
+}
+
 // The monitor itself: a BearingFriction whose friction table is negative (-1 N*m at every
 // speed) pushes a unit inertia along its motion from 2 rad/s: w = 2 + t, dissipated power
 // -(2 + t) W from the start to the end. The monitor names it, from t = 0, with the most negative
@@ -599,11 +608,7 @@ TEST(PassivityMonitor, NamesAnElementThatFeedsEnergyWithTimeAndPower) {
   net.Connect("bearing.support", "fixed.flange");
   net.Connect("sound.support", "fixed.flange");
   // The two cancel: w stays 2, the bad one feeds 2 W, the sound one dissipates 2 W.
-  Simulator sim(net);
-  SimulationOptions o;
-  o.stop_time = 0.5;
-  MemorySink sink;
-  const SimulationReport r = sim.Run(o, sink);
+  const SimulationReport r = RunTo(net, 0.5);
   ASSERT_TRUE(r.ok()) << r.FullReport();
   ASSERT_EQ(r.passivity.violations.size(), 1u) << r.FullReport();
   const PassivityViolation& v = r.passivity.violations.front();
@@ -639,11 +644,7 @@ TEST(PassivityMonitor, CountsEpisodesThatOpenAndClose) {
   net.Connect("shaft.flange_b", "bearing.flange_a");
   net.Connect("bearing.support", "fixed.flange");
   net.Connect("profile.y", "drive.w_ref");
-  Simulator sim(net);
-  SimulationOptions o;
-  o.stop_time = 2.5;
-  MemorySink sink;
-  const SimulationReport r = sim.Run(o, sink);
+  const SimulationReport r = RunTo(net, 2.5);
   ASSERT_TRUE(r.ok()) << r.FullReport();
   ASSERT_EQ(r.passivity.violations.size(), 1u) << r.FullReport();
   const PassivityViolation& v = r.passivity.violations.front();
