@@ -188,10 +188,10 @@ class Validator {
   }
 
   void CheckParameters(const Component& c, const ComponentTypeSpec& spec) {
-    std::vector<std::string> names;
-    for (const auto& p : spec.parameters) names.push_back(p.name);
     auto check_name = [&](const std::string& name) {
       if (spec.FindParameter(name) != nullptr) return true;
+      std::vector<std::string> names;
+      for (const auto& p : spec.parameters) names.push_back(p.name);
       Add(Severity::kError, c.id, "",
           Describe(c) + ": unknown parameter '" + name + "'" + SuggestionHint(name, names, "parameters of " + c.type),
           c.where);
@@ -209,9 +209,11 @@ class Validator {
           return FormatNumber(v, 6);
         }
       };
+      // The messages' numbers are formatted only for a message (a conversion to the display
+      // unit per number: most of the validation's time when done for every parameter).
       const std::string unit = (ps.unit.empty() || ps.unit == "1") ? "" : " " + ps.unit;
-      const std::string range = "[" + show(valid.lo) + ", " + show(valid.hi) + "]" + unit;
       if (p.nominal && !valid.contains(*p.nominal)) {
+        const std::string range = "[" + show(valid.lo) + ", " + show(valid.hi) + "]" + unit;
         Add(Severity::kError, c.id, "",
             Describe(c) + ": parameter '" + name + "' = " + show(*p.nominal) + unit + " is outside its valid range " + range,
             p.where.empty() ? c.where : p.where);

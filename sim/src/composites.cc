@@ -17,16 +17,26 @@ std::optional<Composite> Expand(const NetworkElement& e) {
   return std::nullopt;
 }
 
-Network FlattenOnce(const Network& network, bool& expanded,
-                    std::map<std::string, std::vector<std::string>>& alias) {  // "composite.port" -> inner ports
-  Network out;
+// One level of expansion: nullopt when no element of the network is a composite (nothing is
+// copied then).
+std::optional<Network> FlattenOnce(const Network& network,
+                                   std::map<std::string, std::vector<std::string>>& alias) {  // "composite.port" -> inner ports
+  std::vector<std::optional<Composite>> composites;
+  composites.reserve(network.elements().size());
+  bool expanded = false;
   for (const NetworkElement& e : network.elements()) {
-    std::optional<Composite> c = Expand(e);
+    composites.push_back(Expand(e));
+    expanded = expanded || composites.back().has_value();
+  }
+  if (!expanded) return std::nullopt;
+  Network out;
+  for (std::size_t i = 0; i < composites.size(); ++i) {
+    const NetworkElement& e = network.elements()[i];
+    const std::optional<Composite>& c = composites[i];
     if (!c) {
       out.Adopt(e);
       continue;
     }
-    expanded = true;
     for (const NetworkElement& part : c->inner.elements()) {
       if (part.id != e.id && part.id.rfind(e.id + ".", 0) != 0)
         throw InputError("element '" + e.id + "' (" + e.type + "): part '" + part.id +
@@ -36,7 +46,6 @@ Network FlattenOnce(const Network& network, bool& expanded,
     for (const NetworkConnection& k : c->inner.connections()) out.Adopt(k);
     for (const auto& [port, inner] : c->ports) alias[e.id + "." + port] = inner;
   }
-  if (!expanded) return network;
   auto resolve = [&](const PortRef& p) -> std::vector<std::string> {
     const std::string name = p.ToString();
     const NetworkElement* owner = network.Find(p.component);
@@ -59,12 +68,11 @@ Network FlattenOnce(const Network& network, bool& expanded,
 }  // namespace
 
 Network FlattenComposites(const Network& network, std::map<std::string, std::vector<std::string>>* ports) {
-  Network current = network;
+  std::optional<Network> current;  // the last level; none: the network given
   for (int depth = 0; depth < kMaxDepth; ++depth) {
-    bool expanded = false;
     std::map<std::string, std::vector<std::string>> alias;
-    Network next = FlattenOnce(current, expanded, alias);
-    if (!expanded) return current;
+    std::optional<Network> next = FlattenOnce(current ? *current : network, alias);
+    if (!next) return current ? std::move(*current) : network;
     if (ports != nullptr) {
       // The ports of earlier levels that led to a composite of this level go on to its parts.
       for (auto& [outer, inner] : *ports) {

@@ -25,14 +25,24 @@ inline sunindextype L(N_Vector v) { return NV_LENGTH_S(v); }
 
 // z = a*x + b*y, with the rounding of SUNDIALS' special cases a == b (a*(x + y)) and a == -b
 // (a*(x - y)); multiplications by +-1 are exact, so the other special cases of nvector_serial.c
-// give the same values as the general formula.
+// give the same values as the general formula. Those with a coefficient 1 or -1 are written
+// without its multiplication (the same doubles, a third fewer instructions): x + y is CVODE's
+// predictor, q(q + 1)/2 calls per step at order q.
 HIGHLIFT_VECTOR_CLONES void LinearSum(sunrealtype a, N_Vector x, sunrealtype b, N_Vector y, N_Vector z) {
   const sunindextype n = L(x);
   const double *xd = D(x), *yd = D(y);
   double* zd = D(z);
-  if (a == b && a != 1.0 && a != -1.0) {
+  if (a == 1.0 && b == 1.0) {
+    for (sunindextype i = 0; i < n; ++i) zd[i] = xd[i] + yd[i];
+  } else if (a == 1.0 && b == -1.0) {
+    for (sunindextype i = 0; i < n; ++i) zd[i] = xd[i] - yd[i];
+  } else if (b == 1.0) {
+    for (sunindextype i = 0; i < n; ++i) zd[i] = a * xd[i] + yd[i];
+  } else if (a == 1.0) {
+    for (sunindextype i = 0; i < n; ++i) zd[i] = xd[i] + b * yd[i];
+  } else if (a == b && a != -1.0) {
     for (sunindextype i = 0; i < n; ++i) zd[i] = a * (xd[i] + yd[i]);
-  } else if (a == -b && a != 1.0 && a != -1.0) {
+  } else if (a == -b && a != -1.0) {
     for (sunindextype i = 0; i < n; ++i) zd[i] = a * (xd[i] - yd[i]);
   } else {
     for (sunindextype i = 0; i < n; ++i) zd[i] = a * xd[i] + b * yd[i];

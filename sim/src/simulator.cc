@@ -571,9 +571,11 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
   };
   std::vector<Episode> open_episode(elements.size()), worst_episode(elements.size());
   std::vector<int> episode_count(elements.size(), 0);
+  int episodes_open = 0;
   report.passivity.tolerance = options.passivity_tolerance;
   auto close_episode = [&](std::size_t i) {
     Episode& e = open_episode[i];
+    if (e.open) --episodes_open;
     if (e.samples >= 2) {
       ++episode_count[i];
       if (worst_episode[i].samples == 0 || e.min_power < worst_episode[i].min_power) worst_episode[i] = e;
@@ -599,11 +601,22 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
   auto monitor = [&](double t, const std::vector<double>& loss, double loss_scale) {
     report.passivity.power_scale = std::max(report.passivity.power_scale, loss_scale);
     const double threshold = -options.passivity_tolerance * report.passivity.power_scale;
+    // Mostly no episode is open and no power is below the threshold: one pass over the
+    // contiguous powers tells (the elements without readings hold 0, not below a threshold
+    // of -0 or less) and the loop over the elements is left out.
+    if (episodes_open == 0) {
+      bool below = false;
+      for (const double p : loss) below |= p < threshold;
+      if (!below) return;
+    }
     for (const int reading : readings_of) {  // (the others dissipate nothing: System::ReadingElements)
       const auto i = static_cast<std::size_t>(reading);
       Episode& e = open_episode[i];
       if (loss[i] < threshold) {
-        if (!e.open) e = {true, 0, t, t, loss[i], t};
+        if (!e.open) {
+          e = {true, 0, t, t, loss[i], t};
+          ++episodes_open;
+        }
         ++e.samples;
         e.last = t;
         if (loss[i] < e.min_power) e.min_power = loss[i], e.min_time = t;
@@ -655,16 +668,19 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
   auto record = [&](double t, const Readings& r, SampleKind kind) {
     if (kind != SampleKind::kOutputPoint) {
       monitor(t, r.loss, r.loss_scale);
-      const std::vector<double>& tau = r.tau;
-      PeakTorque* peaks = report.peak_torques.data();  // each element named once, at the start
+      // (Raw pointers: the store into has_torque, a char, could otherwise alias every vector's
+      // own pointers, which the loop would then load again for each element.)
+      const double* const tau = r.tau.data();
+      char* const has = has_torque.data();
+      PeakTorque* const peaks = report.peak_torques.data();  // each element named once, at the start
       const bool locate = track.samples >= 2 && track.middle_smooth;
-      const double* before = track.v1.data();
-      const double* middle = track.v2.data();
+      const double* const before = track.v1.data();
+      const double* const middle = track.v2.data();
       for (const int reading : readings_of) {  // (the others carry no torque)
         const auto i = static_cast<std::size_t>(reading);
         const double v = tau[i];
         if (std::isnan(v)) continue;
-        has_torque[i] = 1;
+        has[i] = 1;
         const double a = std::abs(v), a_peak = std::abs(peaks[i].tau);
         if (a > a_peak) {
           peaks[i].tau = v;
@@ -676,7 +692,7 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
         const double a_middle = std::abs(middle[i]);
         if (a_middle >= a && 2.0 * a_middle > a_peak) LocatePeak(track.t1, before[i], track.t2, middle[i], t, v, peaks[i]);
       }
-      track.Push(t, tau, kind == SampleKind::kStepEnd);
+      track.Push(t, r.tau, kind == SampleKind::kStepEnd);
     }
     if (!options.energy) return;
     const System::EnergyState& energy_now = r.energy;

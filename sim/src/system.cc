@@ -1066,9 +1066,10 @@ std::string System::SolveInitialAccelerations(double t, std::vector<double>& y, 
   return account.str();
 }
 
-double System::SolveEquilibrium(double t, double* y, bool& found) {
+double System::SolveEquilibrium(double t, double* y, bool& found, const EquilibriumOptions& options) {
   cache_valid_ = false;  // discrete state or start values change
   found = false;
+  equilibrium_evaluations_ = 0;
   std::vector<int> unknowns;
   for (const auto& el : elements_)
     for (int k : el->TwistStates()) unknowns.push_back(el->state_offset + k);
@@ -1084,6 +1085,7 @@ double System::SolveEquilibrium(double t, double* y, bool& found) {
   // Residual: the torque that accelerates each node (its inertia times its acceleration; a
   // node without inertia of its own counts with a small share).
   auto residual = [&](const double* state, Eigen::VectorXd& r) {
+    ++equilibrium_evaluations_;
     if (!Evaluate(t, state, nullptr)) return false;
     r.resize(m);
     for (int i = 0; i < m; ++i) {
@@ -1103,16 +1105,61 @@ double System::SolveEquilibrium(double t, double* y, bool& found) {
     found = true;
     return start;
   }
+  // The difference quotients of twists that share no row of the Jacobian's pattern are taken
+  // from one evaluation (Curtis, Powell and Reid): a row reads one perturbed twist there, so its
+  // quotient is, to the last bit, that of the twist perturbed alone. Rows a twist cannot reach
+  // stay exact zeros, as their quotients (r - r) / delta are. With massless nodes every column
+  // is perturbed alone: their speeds are solved together over the whole network.
+  const bool group = options.group_twists && massless_.empty();
+  std::vector<std::vector<int>> column_rows(k);
+  std::vector<std::vector<int>> colours;  // the columns perturbed together
+  {
+    std::vector<int> row_of_state(n_states_, -1);
+    for (int i = 0; i < m; ++i) {
+      const Node& node = nodes_[rows[i]];
+      row_of_state[node.s_phi] = i;
+      row_of_state[node.s_w] = i;
+    }
+    std::vector<std::vector<char>> taken;  // per colour: the rows of its columns
+    for (int j = 0; j < k; ++j) {
+      std::vector<int>& reached = column_rows[j];
+      if (group) {
+        for (int p = jacobian_colptr_[unknowns[j]]; p < jacobian_colptr_[unknowns[j] + 1]; ++p)
+          if (const int i = row_of_state[jacobian_rows_[p]]; i >= 0) reached.push_back(i);
+        std::sort(reached.begin(), reached.end());
+        reached.erase(std::unique(reached.begin(), reached.end()), reached.end());
+      } else {
+        for (int i = 0; i < m; ++i) reached.push_back(i);
+      }
+      std::size_t c = 0;
+      for (; c < colours.size(); ++c)
+        if (group && std::none_of(reached.begin(), reached.end(), [&](int i) { return taken[c][i] != 0; }))
+          break;
+      if (c == colours.size()) {
+        colours.emplace_back();
+        taken.emplace_back(m, 0);
+      }
+      colours[c].push_back(j);
+      for (int i : reached) taken[c][i] = 1;
+    }
+  }
   Eigen::MatrixXd jac(m, k);
+  std::vector<double> saved(k), delta(k);
   double best = start;
   for (int iteration = 0; iteration < 8 && best > goal; ++iteration) {
-    for (int j = 0; j < k; ++j) {
-      double& u = x[unknowns[j]];
-      const double saved = u, delta = 1e-7 * (1e-3 + std::abs(u));
-      u = saved + delta;
+    jac.setZero();
+    for (const std::vector<int>& colour : colours) {
+      for (int j : colour) {
+        double& u = x[unknowns[j]];
+        saved[j] = u;
+        delta[j] = 1e-7 * (1e-3 + std::abs(u));
+        u = saved[j] + delta[j];
+      }
       if (!residual(x.data(), r_probe)) return NAN;
-      jac.col(j) = (r_probe - r) / delta;
-      u = saved;
+      for (int j : colour) {
+        x[unknowns[j]] = saved[j];
+        for (int i : column_rows[j]) jac(i, j) = (r_probe[i] - r[i]) / delta[j];
+      }
     }
     const Eigen::VectorXd step = jac.colPivHouseholderQr().solve(-r);
     if (!step.allFinite()) break;

@@ -14,6 +14,15 @@
 
 namespace highlift::sim::detail {
 
+/// How System::SolveEquilibrium forms its Jacobian.
+struct EquilibriumOptions {
+  /// Twists that share no row of the Jacobian's sparsity pattern (jacobian_rows()) are
+  /// perturbed together and their difference quotients taken from one evaluation: the same
+  /// quotients to the last bit, from a few evaluations instead of one per twist. false: each
+  /// twist alone (always so with massless nodes, whose speeds are solved together).
+  bool group_twists = true;
+};
+
 class System {
  public:
   explicit System(const Network& network);
@@ -66,7 +75,9 @@ class System {
   /// Jacobian), written into y when the equilibrium is found. Returns the largest torque
   /// imbalance left at a node (N*m) and sets `found`; y is unchanged when none is found (for
   /// instance nothing holds the loads).
-  double SolveEquilibrium(double t, double* y, bool& found);
+  double SolveEquilibrium(double t, double* y, bool& found, const EquilibriumOptions& options = {});
+  /// The model evaluations the last SolveEquilibrium made.
+  int equilibrium_evaluations() const { return equilibrium_evaluations_; }
 
   /// The start of one node for a Modelica tool (StartOfFreeNodes).
   struct NodeStart {
@@ -207,6 +218,7 @@ class System {
   bool phases_pruned_ = false;
   void PrunePhases();
   std::vector<Node> nodes_;
+  int equilibrium_evaluations_ = 0;
   // The nodes' state indices in compact arrays, for the loops of every evaluation (a Node holds
   // its name and nominal values too: walking nodes_ there reads four times the memory).
   std::vector<double> node_phi0_;           ///< per node: the angle of a ground node

@@ -582,6 +582,15 @@ INSTANTIATE_TEST_SUITE_P(Patterns, FrictionPassivity, ::testing::ValuesIn(AllPar
                            return AllCases()[info.param.index].name + "Rtol1e" + std::to_string(e);
                          });
 
+// A run of `net` from 0 to `stop_time` with the default options.
+SimulationReport RunTo(const Network& net, double stop_time) {
+  Simulator sim(net);
+  SimulationOptions o;
+  o.stop_time = stop_time;
+  MemorySink sink;
+  return sim.Run(o, sink);
+}
+
 // The monitor itself: a BearingFriction whose friction table is negative (-1 N*m at every
 // speed) pushes a unit inertia along its motion from 2 rad/s: w = 2 + t, dissipated power
 // -(2 + t) W from the start to the end. The monitor names it, from t = 0, with the most negative
@@ -599,11 +608,7 @@ TEST(PassivityMonitor, NamesAnElementThatFeedsEnergyWithTimeAndPower) {
   net.Connect("bearing.support", "fixed.flange");
   net.Connect("sound.support", "fixed.flange");
   // The two cancel: w stays 2, the bad one feeds 2 W, the sound one dissipates 2 W.
-  Simulator sim(net);
-  SimulationOptions o;
-  o.stop_time = 0.5;
-  MemorySink sink;
-  const SimulationReport r = sim.Run(o, sink);
+  const SimulationReport r = RunTo(net, 0.5);
   ASSERT_TRUE(r.ok()) << r.FullReport();
   ASSERT_EQ(r.passivity.violations.size(), 1u) << r.FullReport();
   const PassivityViolation& v = r.passivity.violations.front();
@@ -618,6 +623,37 @@ TEST(PassivityMonitor, NamesAnElementThatFeedsEnergyWithTimeAndPower) {
             std::string::npos)
       << r.passivity.BriefReport();
   EXPECT_NE(r.FullReport().find("passivity (tolerance 1e-06 of 4 W): 1 element"), std::string::npos) << r.FullReport();
+}
+
+// Episodes that open and close: a speed source drives a shaft at w = 1 + 0.8 sin(2 pi t) through
+// a BearingFriction whose table is negative below 0.6 rad/s (-1 N*m up to 0.5 rad/s, +1 N*m from
+// 0.7). It feeds energy while w < 0.6, for t in (7/12, 11/12) of every second: two episodes in
+// 2.5 s, each about 1/3 s long (from the first to the last step end inside: a step or two
+// less), at least -0.5 W (w = 0.5). Between them no power is below the threshold, where the
+// monitor looks at the elements only when one is.
+TEST(PassivityMonitor, CountsEpisodesThatOpenAndClose) {
+  Network net;
+  net.AddElement("Fixed", "fixed");
+  net.AddElement("Inertia", "shaft", P({{"J", 1}}));
+  net.AddElement("Speed", "drive", P({{"f_crit", 200}}));
+  net.AddElement("Sine", "profile", P({{"amplitude", 0.8}, {"f", 1}, {"offset", 1}}));
+  ElementParameters bearing = P({});
+  bearing.tables["tau_pos"] = {{0.0, -1.0}, {0.5, -1.0}, {0.7, 1.0}, {2.0, 1.0}};
+  net.AddElement("BearingFriction", "bearing", bearing);
+  net.Connect("drive.flange", "shaft.flange_a");
+  net.Connect("shaft.flange_b", "bearing.flange_a");
+  net.Connect("bearing.support", "fixed.flange");
+  net.Connect("profile.y", "drive.w_ref");
+  const SimulationReport r = RunTo(net, 2.5);
+  ASSERT_TRUE(r.ok()) << r.FullReport();
+  ASSERT_EQ(r.passivity.violations.size(), 1u) << r.FullReport();
+  const PassivityViolation& v = r.passivity.violations.front();
+  EXPECT_EQ(v.element, "bearing");
+  EXPECT_EQ(v.episodes, 2) << r.FullReport();
+  EXPECT_NEAR(v.duration, 1.0 / 3.0, 0.05) << r.FullReport();
+  const double start = v.time < 1.0 ? 7.0 / 12.0 : 19.0 / 12.0;
+  EXPECT_NEAR(v.time, start, 0.03) << r.FullReport();
+  EXPECT_NEAR(v.power, -0.5, 0.02) << r.FullReport();
 }
 
 TEST(PassivityMonitor, ToleranceMustBePositive) {
