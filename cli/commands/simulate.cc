@@ -109,7 +109,9 @@ class SimulateCommand : public Command {
                    "(default: given)");
     app.add_option("--atol", atol_,
                    "Absolute tolerance per unit nominal value: a state's absolute tolerance is atol times its "
-                   "nominal value (default: settings.absolute_tolerance, else 1e-8)");
+                   "nominal value (default: settings.absolute_tolerance, else 1e-8); drive-system projects resolve "
+                   "a spring's twist to 1e-3 N*m and a speed to at least rtol times the friction speed "
+                   "(docs/simulation.md)");
   }
 
   int Run() override {

@@ -534,6 +534,7 @@ DriveModel Builder::Run() {
                               ? options_.shaft_elements
                               : std::max(DriveNetworkOptions::kMinShaftElements, project_.settings.shaft_elements);
   model_.relative_tolerance = project_.settings.relative_tolerance;
+  model_.friction_speed = options_.friction_speed;
   model_.output_interval = project_.settings.output_interval;
   if (scenario_) {
     model_.scenario = *scenario_;

@@ -15,6 +15,11 @@ SimulationOptions DriveModel::Options(const Project& /*project*/) const {
   o.output_interval = output_interval;
   o.initial_equilibrium = true;  // the drive starts held, the loads acting (airloads on a brake)
   o.torque_tolerance = 1e-3;     // N*m: twists of stiff jams and end stops resolved in torque
+  // Speeds resolved relative to the friction speed: below it the regularised friction laws
+  // change sign, and a speed error of rtol * w_small moves them by rtol of their amplitude. A
+  // stopped shaft is otherwise resolved to 1e-8 rad/s (the absolute tolerance), and its
+  // ringing sets the step size of a jam or rupture long after the loads have peaked.
+  o.speed_resolution = friction_speed;
   return o;
 }
 

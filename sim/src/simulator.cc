@@ -32,6 +32,8 @@ void SimulationOptions::Validate() const {
     fail("relative_tolerance = " + FormatMessageNumber(relative_tolerance) + " must lie in (0, 1)");
   if (!(absolute_tolerance > 0)) fail("absolute_tolerance must be > 0");
   if (!(torque_tolerance >= 0)) fail("torque_tolerance must be >= 0 N*m (0: off)");
+  if (!(speed_resolution >= 0 && std::isfinite(speed_resolution)))
+    fail("speed_resolution must be >= 0 rad/s and finite (0: off)");
   if (max_step < 0) fail("max_step must be >= 0 (0: no limit)");
   if (!(passivity_tolerance > 0)) fail("passivity_tolerance must be > 0 (relative to the run's power scale)");
   if (linear_solver != "auto" && linear_solver != "dense" && linear_solver != "band" && linear_solver != "sparse" &&
@@ -799,7 +801,9 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
   if (!check(CVodeSetErrHandlerFn(cv.mem, ErrorHandler, &data), "CVodeSetErrHandlerFn", t))
     return finish();
   {
-    const std::vector<double> atol = sys.AbsoluteTolerances(options.absolute_tolerance, options.torque_tolerance);
+    const std::vector<double> atol =
+        sys.AbsoluteTolerances(options.absolute_tolerance, options.torque_tolerance,
+                               options.relative_tolerance * options.speed_resolution);
     N_Vector tolerances = N_VClone(cv.y);
     if (!check_ptr(tolerances, "N_VClone")) return finish();
     std::copy(atol.begin(), atol.end(), N_VGetArrayPointer(tolerances));

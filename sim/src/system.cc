@@ -1324,13 +1324,13 @@ std::vector<std::optional<std::vector<int>>> System::SpeedRows() const {
   return rows;
 }
 
-std::vector<double> System::AbsoluteTolerances(double absolute, double torque_tolerance) const {
+std::vector<double> System::AbsoluteTolerances(double absolute, double torque_tolerance, double speed_floor) const {
   std::vector<double> tolerance(n_states_, absolute);
   auto scaled = [&](double nominal) { return std::isnan(nominal) ? absolute : absolute * std::abs(nominal); };
   for (const Node& node : nodes_) {
     if (node.ground) continue;
     tolerance[node.s_phi] = scaled(node.phi_nominal);
-    tolerance[node.s_w] = scaled(node.w_nominal);
+    tolerance[node.s_w] = std::max(scaled(node.w_nominal), speed_floor);
   }
   std::vector<double> stiffness, nominal;
   for (const auto& el : elements_) {

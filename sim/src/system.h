@@ -34,8 +34,9 @@ class System {
   const std::vector<std::unique_ptr<Element>>& elements() const { return elements_; }
   /// Absolute tolerances per state: `absolute` times the state's nominal value (Node and
   /// Element::StateNominals; 1 when none is declared); for a spring twist
-  /// torque_tolerance / stiffness when torque_tolerance > 0.
-  std::vector<double> AbsoluteTolerances(double absolute, double torque_tolerance) const;
+  /// torque_tolerance / stiffness when torque_tolerance > 0; for a node's speed at least
+  /// `speed_floor` (rad/s; SimulationOptions::speed_resolution times the relative tolerance).
+  std::vector<double> AbsoluteTolerances(double absolute, double torque_tolerance, double speed_floor = 0.0) const;
   /// Upper and lower half-bandwidth of the Jacobian (from the element footprints).
   int upper_bandwidth() const { return bandwidth_; }
   int lower_bandwidth() const { return bandwidth_; }

@@ -98,6 +98,9 @@ struct DriveModel {
   /// elements are scenario parts, not the actuator's torque).
   std::set<std::string> own_element_torque;
   double relative_tolerance = 1e-6;  ///< the project's setting
+  /// rad/s, the regularised friction speed the model was built with
+  /// (DriveNetworkOptions::friction_speed; 0: the exact stick/slip law).
+  double friction_speed = 0.0;
   double output_interval = 1e-3;     ///< s, the scenario's, else the project's
 };
 

@@ -47,6 +47,11 @@ struct SimulationOptions {
   /// (a stiff jam or end stop is resolved in torque, not to a fixed angle); 0: every state
   /// uses absolute_tolerance.
   double torque_tolerance = 0.0;
+  /// rad/s; > 0: the absolute tolerance of a node's speed is at least relative_tolerance *
+  /// speed_resolution, so a speed below it is resolved relative to this speed (drive models:
+  /// the regularised friction speed w_small, below which the friction laws change sign, to the
+  /// relative tolerance of the laws) rather than to absolute_tolerance rad/s. 0: off.
+  double speed_resolution = 0.0;
   double max_step = 0.0;             // s, 0: no limit
   /// CVODE's BDF stability limit detection: lowers the order when lightly damped oscillatory
   /// modes make the order-3 to order-5 formulas unstable (a transmission's torsional modes);
