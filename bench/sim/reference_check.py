@@ -211,8 +211,10 @@ def main():
                          "1 +- 0.1 %%, 0.3 %%, 1 %%, 3 %%; NEW is judged against the largest errors of BASE and of these")
     args = ap.parse_args()
     args.reference_rtol = args.reference_rtol or args.rtol
-    if args.chance and not args.steps_may_change:
-        ap.error("--chance needs --steps-may-change (and --reference-interval)")
+    if args.chance and not (args.steps_may_change and args.reference_interval):
+        ap.error("--chance needs --steps-may-change and --reference-interval")
+    if args.chance > 8:
+        ap.error("--chance takes at most 8 runs per case (rtol x 1 +- 0.1 %, 0.3 %, 1 %, 3 %)")
     args.chance_rtols = []
     if args.chance:
         with open(args.project) as f:
