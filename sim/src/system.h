@@ -216,6 +216,17 @@ class System {
   std::vector<int> reading_elements_;  ///< indices of the elements with HasReadings()
   /// The elements each phase of Evaluate calls (all until PrunePhases has run).
   std::vector<Element*> forces_, constraints_, after_solve_, derivatives_;
+  /// Per entry of forces_, derivatives_ and reading_elements_: how the loops call it. The
+  /// spring-dampers and drags of the torque shafts are the most numerous elements of a drive
+  /// model, and their laws are called directly (inlined) rather than through the virtual
+  /// functions; the calls and their order are the same either way.
+  enum DirectCall : char {
+    kVirtual = 0,
+    kSpringDamper = 1,  ///< exactly a msl::SpringDamper
+    kSmoothFriction = 2,  ///< a StribeckFriction regularised on one node (SmoothOneNodeForces)
+  };
+  std::vector<DirectCall> forces_direct_, derivatives_direct_, reading_direct_;
+  void MarkDirectCalls();
   bool phases_pruned_ = false;
   void PrunePhases();
   std::vector<Node> nodes_;
