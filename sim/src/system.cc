@@ -322,6 +322,9 @@ System::System(const Network& original) {
   // Workspace.
   eval_.phi.assign(nodes_.size(), 0.0);
   eval_.w.assign(nodes_.size(), 0.0);
+  // A ground node's angle and speed never change (nothing writes them but with these values):
+  // set here once, not at every evaluation (SetKinematics).
+  for (int n : ground_nodes_) eval_.phi[static_cast<std::size_t>(n)] = node_phi0_[static_cast<std::size_t>(n)];
   eval_.acc.assign(nodes_.size(), 0.0);
   eval_.force.assign(nodes_.size(), 0.0);
   eval_.signal.assign(n_signal_slots_, 0.0);
@@ -1431,9 +1434,7 @@ void System::SetKinematics(double t, const double* y) {
     force[n] = 0.0;
     acc[n] = 0.0;
   }
-  for (int n : ground_nodes_) {
-    phi[n] = node_phi0_[n];
-    w[n] = 0.0;
+  for (int n : ground_nodes_) {  // (their angles and speeds are set for good: the constructor)
     force[n] = 0.0;
     acc[n] = 0.0;
   }
@@ -1969,8 +1970,9 @@ System::EnergyState System::Energy() const {
   return s;
 }
 
-double System::LossPowers(std::vector<double>& loss) const {
+double System::StepEndReadings(std::vector<double>& loss, std::vector<double>& tau) const {
   if (loss.size() != elements_.size()) loss.assign(elements_.size(), 0.0);
+  if (tau.size() != elements_.size()) tau.assign(elements_.size(), NAN);
   double scale = 0.0;
   for (std::size_t k = 0; k < reading_elements_.size(); ++k) {
     const auto i = static_cast<std::size_t>(reading_elements_[k]);
@@ -1979,9 +1981,11 @@ double System::LossPowers(std::vector<double>& loss) const {
       const msl::SpringDamper& sd = AsSpringDamper(el);
       loss[i] = sd.msl::SpringDamper::LossPower(eval_);
       scale += std::abs(loss[i]) + std::abs(sd.msl::SpringDamper::SourcePower(eval_));
+      tau[i] = sd.msl::SpringDamper::PeakTorque(eval_);
     } else {
       loss[i] = el.LossPower(eval_);
       scale += std::abs(loss[i]) + std::abs(el.SourcePower(eval_));
+      tau[i] = el.PeakTorque(eval_);
     }
   }
   return scale;
@@ -2182,15 +2186,6 @@ bool System::HydraulicDerivatives(double* ydot) {
     ydot[h.s_p] = eval_.q[n] / eval_.cap[n];
   }
   return true;
-}
-
-void System::PeakTorques(std::vector<double>& tau) const {
-  if (tau.size() != elements_.size()) tau.assign(elements_.size(), NAN);
-  for (std::size_t k = 0; k < reading_elements_.size(); ++k) {
-    const auto i = static_cast<std::size_t>(reading_elements_[k]);
-    tau[i] = reading_direct_[k] == kSpringDamper ? AsSpringDamper(*elements_[i]).msl::SpringDamper::PeakTorque(eval_)
-                                : elements_[i]->PeakTorque(eval_);
-  }
 }
 
 }  // namespace highlift::sim::detail
