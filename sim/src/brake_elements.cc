@@ -178,18 +178,8 @@ double StribeckFriction::Tau0Max(const Eval& e) const {
 }
 
 void StribeckFriction::Forces(Eval& e) {
-  // Regularised with one node (the common case): the law of the general path below with the
-  // same operations (the mode, constant, left out of the memo's key; tanh(w/w_small) computed
-  // where the general path's Smooth memo would miss too, as both are keyed on the last w).
-  // tau takes the + 0.0 of AfterSolve here, which then has nothing left to do.
   if (smooth_one_node_) {
-    const double w = e.w[a] - e.w[m];
-    if (!smooth_law_memo_.Same({w}))
-      law_ = SmoothSign(w / w_small) * (tau_C + tau_S * Decay(f_exp * std::abs(w))) + d_vis * w;
-    tau_stribeck = law_;
-    e.AddForce(a, -law_);
-    e.AddForce(m, law_);
-    tau = law_ + 0.0;
+    SmoothOneNodeForces(e);
     return;
   }
   tau_stribeck = 0.0;
@@ -218,7 +208,7 @@ void StribeckFriction::Forces(Eval& e) {
   const double w = WF(e);
   if (!law_memo_.Same({w, static_cast<double>(mode)})) {
     if (regularized)  // tanh(w/w_small) * (tau_C + tau_S*exp(-f_exp*|w|)) + d_vis*w: continuous and odd in w
-      law_ = Smooth(e) * (tau_C + tau_S * Decay(f_exp * std::abs(w))) + d_vis * w;
+      law_ = Smooth(e) * (tau_C + StribeckPeak(tau_S, f_exp * std::abs(w))) + d_vis * w;
     else
       law_ = mode == msl::kForward ? Stribeck(w) : -Stribeck(-w);
   }

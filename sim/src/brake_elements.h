@@ -79,12 +79,27 @@ class StribeckFriction final : public msl::Friction {
   double Eta(const Eval& e) const;
   /// The Stribeck law (3) for forward sliding at speed w (signed), without the load loss.
   double Stribeck(double w) const {
-    return tau_C + d_vis * w + tau_S * Decay(f_exp * std::abs(w));
+    return tau_C + d_vis * w + StribeckPeak(tau_S, f_exp * std::abs(w));
   }
   double TauSlide(const Eval& e, double w) const override;
   double Tau0Max(const Eval& e) const override;
 
   void Forces(Eval& e) override;
+  /// Forces when regularised with one node (smooth_one_node_, the common case: the drags and
+  /// bearings of a drive model): the law of the general path with the same operations (the
+  /// mode, constant, left out of the memo's key; tanh(w/w_small) computed where the general
+  /// path's Smooth memo would miss too, as both are keyed on the last w). tau takes the + 0.0
+  /// of AfterSolve here, which then has nothing left to do. Inline: System::Evaluate calls it
+  /// directly for these elements.
+  void SmoothOneNodeForces(Eval& e) {
+    const double w = e.w[a] - e.w[m];
+    if (!smooth_law_memo_.Same({w}))
+      law_ = SmoothSign(w / w_small) * (tau_C + StribeckPeak(tau_S, f_exp * std::abs(w))) + d_vis * w;
+    tau_stribeck = law_;
+    e.AddForce(a, -law_);
+    e.AddForce(m, law_);
+    tau = law_ + 0.0;
+  }
   void Constraints(Eval& e) override;
   void AfterSolve(Eval& e) override;
 

@@ -91,7 +91,7 @@ class GearedRotaryActuator : public LossyGear {
   /// Stribeck law, equation (3), at the input speed w.
   double Stribeck(double w) const {
     const double w_abs = std::abs(w);
-    return tau_C + d_vis * w_abs + tau_S * Decay(f_exp * w_abs);
+    return tau_C + d_vis * w_abs + StribeckPeak(tau_S, f_exp * w_abs);
   }
   /// Mesh engagement min(e_angle, e_speed) of figure 7: 0 at standstill and right after a
   /// start, 1 once the input has turned phi_eta and runs faster than w_eta.

@@ -22,11 +22,34 @@ namespace highlift::sim::detail {
 
 using Table = std::vector<std::vector<double>>;
 
-/// tanh(x), the smooth sign of the regularised friction laws; beyond |x| = 20 it is +-1 in double
-/// precision anyway, so the library call is skipped there (every element, every evaluation).
-inline double SmoothSign(double x) { return x > 20.0 ? 1.0 : (x < -20.0 ? -1.0 : std::tanh(x)); }
+/// tanh(x), the smooth sign of the regularised friction laws (every element, every evaluation).
+/// Beyond |x| = 20 it is +-1 in double precision. Below, it is the classic formula through
+/// expm1 (fdlibm's, which glibc's tanh evaluates too): 1 - 2/(expm1(2|x|) + 2) from |x| = 1,
+/// -t/(t + 2) with t = expm1(-2|x|) below, x*(1 + x) below 2^-55, the sign of x restored;
+/// inline, without the library call's own checks. Within an ulp of std::tanh (equal to
+/// glibc's, tests/sim/evaluation_caches_test.cc).
+inline double SmoothSign(double x) {
+  if (x > 20.0) return 1.0;
+  if (x < -20.0) return -1.0;
+  const double ax = std::abs(x);
+  double z;
+  if (ax >= 1.0) {
+    z = 1.0 - 2.0 / (std::expm1(2.0 * ax) + 2.0);
+  } else if (ax >= 0x1p-55) {
+    const double t = std::expm1(-2.0 * ax);
+    z = -t / (t + 2.0);
+  } else {
+    return x * (1.0 + x);  // also +-0 and NaN
+  }
+  return std::signbit(x) ? -z : z;
+}
 /// exp(-x) for x >= 0 (the Stribeck decay), 0 beyond x = 40 where it is below 5e-18.
 inline double Decay(double x) { return x > 40.0 ? 0.0 : std::exp(-x); }
+/// tau_S * Decay(x), the Stribeck peak's share of a friction law. Without the library call for a
+/// law with no peak (tau_S = 0: the drags of the shaft elements, most bearings), where the
+/// product is tau_S itself, its sign of zero included, for every x but NaN (a law at a NaN
+/// speed is NaN through its other terms).
+inline double StribeckPeak(double tau_S, double x) { return tau_S == 0.0 ? tau_S : tau_S * Decay(x); }
 
 /// The value a root function reports in place of an exact 0 (so that CVODE never sees one that
 /// is identically zero), signed by the side the element is on. Not DBL_MIN: CVODE flags a root

@@ -241,14 +241,24 @@ class SpringDamper : public Compliant {
  public:
   explicit SpringDamper(const NetworkElement& e)
       : Compliant(e), c(Param(e, "c")), d(Param(e, "d")), phi_rel0(Param(e, "phi_rel0")) {}
-  double Tau(double phi_rel, double w_rel) const override {
+  double Tau(double phi_rel, double w_rel) const final {
     return c * (phi_rel - phi_rel0) + d * w_rel;
+  }
+  // Compliant's Forces and LossPower with this law called directly, not through the virtual Tau
+  // and SpringTorque: the elements of the torque shafts are the most numerous of a drive model.
+  // (Tau and SpringTorque are final: a class derived from this one keeps the law.)
+  void Forces(Eval& e) override {
+    tau = SpringDamper::Tau(PhiRel(e), WRel(e));
+    ApplyTorque(e, tau);
+  }
+  double LossPower(const Eval& e) const override {
+    return (tau - SpringDamper::SpringTorque(PhiRel(e))) * WRel(e);
   }
   double TwistStiffness() const override { return c; }
   double Potential(double phi_rel) const override {
     return 0.5 * c * (phi_rel - phi_rel0) * (phi_rel - phi_rel0);
   }
-  double SpringTorque(double phi_rel) const override { return c * (phi_rel - phi_rel0); }
+  double SpringTorque(double phi_rel) const final { return c * (phi_rel - phi_rel0); }
   double c, d, phi_rel0;
 };
 

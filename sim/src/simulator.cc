@@ -594,8 +594,7 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
   };
   auto read = [&](Readings& r, SampleKind kind) {
     if (kind != SampleKind::kOutputPoint) {
-      r.loss_scale = sys.LossPowers(r.loss);
-      sys.PeakTorques(r.tau);
+      r.loss_scale = sys.StepEndReadings(r.loss, r.tau);
     }
     if (options.energy) r.energy = sys.Energy();
   };

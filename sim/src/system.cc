@@ -9,10 +9,13 @@
 #include <numeric>
 #include <set>
 #include <sstream>
+#include <typeinfo>
 
 #include <Eigen/Sparse>
 
 #include "composites.h"
+#include "brake_elements.h"
+#include "msl_elements.h"
 #include "highlift/core/error.h"
 #include "highlift/core/message_number.h"
 
@@ -315,9 +318,13 @@ System::System(const Network& original) {
     after_solve_.push_back(el.get());
     derivatives_.push_back(el.get());
   }
+  MarkDirectCalls();
   // Workspace.
   eval_.phi.assign(nodes_.size(), 0.0);
   eval_.w.assign(nodes_.size(), 0.0);
+  // A ground node's angle and speed never change (nothing writes them but with these values):
+  // set here once, not at every evaluation (SetKinematics).
+  for (int n : ground_nodes_) eval_.phi[static_cast<std::size_t>(n)] = node_phi0_[static_cast<std::size_t>(n)];
   eval_.acc.assign(nodes_.size(), 0.0);
   eval_.force.assign(nodes_.size(), 0.0);
   eval_.signal.assign(n_signal_slots_, 0.0);
@@ -1360,7 +1367,35 @@ void System::PrunePhases() {
   keep(constraints_, Element::kConstraintsPhase);
   keep(after_solve_, Element::kAfterSolvePhase);
   keep(derivatives_, Element::kDerivativesPhase);
+  MarkDirectCalls();
   phases_pruned_ = true;
+}
+
+namespace {
+
+/// Exactly a msl::SpringDamper (a class derived from it, such as the translational spring-damper,
+/// takes the virtual calls).
+bool IsSpringDamper(const Element& el) { return typeid(el) == typeid(msl::SpringDamper); }
+/// A StribeckFriction (final) whose Forces is SmoothOneNodeForces.
+bool IsSmoothFriction(const Element& el) {
+  return typeid(el) == typeid(StribeckFriction) && static_cast<const StribeckFriction&>(el).smooth_one_node_;
+}
+
+/// The virtual calls of Evaluate and the step-end readings, made directly for a SpringDamper.
+msl::SpringDamper& AsSpringDamper(Element& el) { return static_cast<msl::SpringDamper&>(el); }
+const msl::SpringDamper& AsSpringDamper(const Element& el) { return static_cast<const msl::SpringDamper&>(el); }
+
+}  // namespace
+
+void System::MarkDirectCalls() {
+  auto spring_damper = [](const Element& el) { return IsSpringDamper(el) ? kSpringDamper : kVirtual; };
+  forces_direct_.clear();
+  for (const Element* el : forces_)
+    forces_direct_.push_back(IsSmoothFriction(*el) ? kSmoothFriction : spring_damper(*el));
+  derivatives_direct_.clear();
+  for (const Element* el : derivatives_) derivatives_direct_.push_back(spring_damper(*el));
+  reading_direct_.clear();
+  for (int i : reading_elements_) reading_direct_.push_back(spring_damper(*elements_[static_cast<std::size_t>(i)]));
 }
 
 void System::EvaluateSignals(const std::vector<int>& order) {
@@ -1399,9 +1434,7 @@ void System::SetKinematics(double t, const double* y) {
     force[n] = 0.0;
     acc[n] = 0.0;
   }
-  for (int n : ground_nodes_) {
-    phi[n] = node_phi0_[n];
-    w[n] = 0.0;
+  for (int n : ground_nodes_) {  // (their angles and speeds are set for good: the constructor)
     force[n] = 0.0;
     acc[n] = 0.0;
   }
@@ -1449,7 +1482,19 @@ bool System::Evaluate(double t, const double* y, double* ydot) {
         e.acc[n] = 0.0;
       }
     e.n_constraints = 0;
-    for (Element* el : forces_) el->Forces(e);
+    for (std::size_t k = 0; k < forces_.size(); ++k) {
+      switch (forces_direct_[k]) {
+        case kSpringDamper:
+          AsSpringDamper(*forces_[k]).msl::SpringDamper::Forces(e);
+          break;
+        case kSmoothFriction:
+          static_cast<StribeckFriction*>(forces_[k])->SmoothOneNodeForces(e);
+          break;
+        case kVirtual:
+          forces_[k]->Forces(e);
+          break;
+      }
+    }
     for (Element* el : constraints_) el->Constraints(e);
     if (!Solve()) return false;
     for (Element* el : after_solve_) el->AfterSolve(e);
@@ -1465,7 +1510,12 @@ bool System::Evaluate(double t, const double* y, double* ydot) {
       ydot[node.s_phi] = node.massless ? e.w[node.node] : y[node.s_w];
       ydot[node.s_w] = node.massless ? 0.0 : e.acc[node.node];
     }
-    for (Element* el : derivatives_) el->Derivatives(e);
+    for (std::size_t k = 0; k < derivatives_.size(); ++k) {
+      if (derivatives_direct_[k] == kSpringDamper)
+        AsSpringDamper(*derivatives_[k]).msl::SpringDamper::Derivatives(e);
+      else
+        derivatives_[k]->Derivatives(e);
+    }
     if (!hnodes_.empty() && !HydraulicDerivatives(ydot)) return false;
     if (!phases_pruned_) PrunePhases();
   }
@@ -1719,6 +1769,30 @@ bool System::SolveSchurOne(Group& g) {
   const int *const column_entry = g.column_entry.data(), *const column_local = g.column_local.data();
   const int *const row_entry = g.row_entry.data(), *const row_local = g.row_local.data();
   const int column_end = g.column_begin[1], row_end = g.row_begin[1];
+  if (nn == 2 && column_end == 2 && row_end == 2) {
+    // Nearly every group: a gear or a rigid coupling between two nodes (594 000 of the 645 000
+    // groups solved in rupture_wtb). The loops of the general case below, unrolled: the same
+    // operations in the same order.
+    const double c0 = ck[column_entry[0]].second, c1 = ck[column_entry[1]].second;
+    const double r0 = rk[row_entry[0]].second, r1 = rk[row_entry[1]].second;
+    column[column_local[0]] += c0 * inverse_J[column_local[0]];
+    column[column_local[1]] += c1 * inverse_J[column_local[1]];
+    double s = 0.0;
+    s += r0 * column[row_local[0]];
+    s += r1 * column[row_local[1]];
+    double v = c.rhs;
+    v -= r0 * acc0[row_local[0]];
+    v -= r1 * acc0[row_local[1]];
+    if (!(std::abs(s) > 1e-12 * std::max(0.0, std::abs(s)))) return false;
+    const double lambda = v / s;
+    c.lambda = lambda;
+    acc0[column_local[0]] += c0 * lambda * inverse_J[column_local[0]];
+    acc0[column_local[1]] += c1 * lambda * inverse_J[column_local[1]];
+    double* const acc = e.acc.data();
+    acc[nodes[0]] = acc0[0];
+    acc[nodes[1]] = acc0[1];
+    return true;
+  }
   for (int p = 0; p < column_end; ++p) {
     const int i = column_local[p];
     column[i] += ck[column_entry[p]].second * inverse_J[i];
@@ -1755,7 +1829,7 @@ bool System::Solve() {
   for (int k : grounded_rows_) e.constraints[k].lambda = 0.0;
   for (Group& g : groups_) {
     const int nn = static_cast<int>(g.nodes.size()), m = static_cast<int>(g.rows.size());
-    if (g.schur && SolveSchur(g)) continue;
+    if (g.schur && (g.rows.size() == 1 ? SolveSchurOne(g) : SolveSchur(g))) continue;
     for (int i = 0; i < nn; ++i) local_[g.nodes[i]] = i;
     g.A.setZero();
     for (int i = 0; i < nn; ++i) {
@@ -1896,13 +1970,23 @@ System::EnergyState System::Energy() const {
   return s;
 }
 
-double System::LossPowers(std::vector<double>& loss) const {
+double System::StepEndReadings(std::vector<double>& loss, std::vector<double>& tau) const {
   if (loss.size() != elements_.size()) loss.assign(elements_.size(), 0.0);
+  if (tau.size() != elements_.size()) tau.assign(elements_.size(), NAN);
   double scale = 0.0;
-  for (int i : reading_elements_) {
-    const Element& el = *elements_[static_cast<std::size_t>(i)];
-    loss[static_cast<std::size_t>(i)] = el.LossPower(eval_);
-    scale += std::abs(loss[static_cast<std::size_t>(i)]) + std::abs(el.SourcePower(eval_));
+  for (std::size_t k = 0; k < reading_elements_.size(); ++k) {
+    const auto i = static_cast<std::size_t>(reading_elements_[k]);
+    const Element& el = *elements_[i];
+    if (reading_direct_[k] == kSpringDamper) {
+      const msl::SpringDamper& sd = AsSpringDamper(el);
+      loss[i] = sd.msl::SpringDamper::LossPower(eval_);
+      scale += std::abs(loss[i]) + std::abs(sd.msl::SpringDamper::SourcePower(eval_));
+      tau[i] = sd.msl::SpringDamper::PeakTorque(eval_);
+    } else {
+      loss[i] = el.LossPower(eval_);
+      scale += std::abs(loss[i]) + std::abs(el.SourcePower(eval_));
+      tau[i] = el.PeakTorque(eval_);
+    }
   }
   return scale;
 }
@@ -2102,11 +2186,6 @@ bool System::HydraulicDerivatives(double* ydot) {
     ydot[h.s_p] = eval_.q[n] / eval_.cap[n];
   }
   return true;
-}
-
-void System::PeakTorques(std::vector<double>& tau) const {
-  if (tau.size() != elements_.size()) tau.assign(elements_.size(), NAN);
-  for (int i : reading_elements_) tau[static_cast<std::size_t>(i)] = elements_[static_cast<std::size_t>(i)]->PeakTorque(eval_);
 }
 
 }  // namespace highlift::sim::detail

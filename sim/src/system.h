@@ -135,9 +135,6 @@ class System {
 
   /// Outputs of the last Evaluate.
   void Outputs(double* out) const;
-  /// Element torques of the last Evaluate (NaN for elements without one). Only the entries of
-  /// ReadingElements() are written: the others are NaN from when `tau` was sized.
-  void PeakTorques(std::vector<double>& tau) const;
   /// The elements whose readings may say something (Element::HasReadings), in order: the run
   /// reads and monitors only these at each step end.
   const std::vector<int>& ReadingElements() const { return reading_elements_; }
@@ -152,11 +149,13 @@ class System {
     double source_power = 0.0;  ///< sum of Element::SourcePower, W
   };
   EnergyState Energy() const;
-  /// The passivity monitor's reading of the last Evaluate: each element's dissipated power
-  /// (Element::LossPower, W) into `loss` (one per element), and the power scale
-  /// sum(|loss| + |source power|) over the elements as the result. Only the entries of
-  /// ReadingElements() are written: the others are 0 from when `loss` was sized.
-  double LossPowers(std::vector<double>& loss) const;
+  /// The readings of the last Evaluate at a step end, in one pass over ReadingElements():
+  /// for the passivity monitor each element's dissipated power (Element::LossPower, W) into
+  /// `loss`, and the power scale sum(|loss| + |source power|) over the elements as the result;
+  /// for the peaks each element's torque (Element::PeakTorque, NaN for elements without one)
+  /// into `tau`. One entry per element; only those of ReadingElements() are written, the
+  /// others are 0 (loss) and NaN (tau) from when the vectors were sized.
+  double StepEndReadings(std::vector<double>& loss, std::vector<double>& tau) const;
   /// Kinetic energy removed by the speed projections of all events so far (J, >= 0).
   double impulsive_loss() const { return impulsive_loss_; }
 
@@ -216,6 +215,17 @@ class System {
   std::vector<int> reading_elements_;  ///< indices of the elements with HasReadings()
   /// The elements each phase of Evaluate calls (all until PrunePhases has run).
   std::vector<Element*> forces_, constraints_, after_solve_, derivatives_;
+  /// Per entry of forces_, derivatives_ and reading_elements_: how the loops call it. The
+  /// spring-dampers and drags of the torque shafts are the most numerous elements of a drive
+  /// model, and their laws are called directly (inlined) rather than through the virtual
+  /// functions; the calls and their order are the same either way.
+  enum DirectCall : char {
+    kVirtual = 0,
+    kSpringDamper = 1,  ///< exactly a msl::SpringDamper
+    kSmoothFriction = 2,  ///< a StribeckFriction regularised on one node (SmoothOneNodeForces)
+  };
+  std::vector<DirectCall> forces_direct_, derivatives_direct_, reading_direct_;
+  void MarkDirectCalls();
   bool phases_pruned_ = false;
   void PrunePhases();
   std::vector<Node> nodes_;

@@ -1,14 +1,19 @@
-// The evaluation caches of the simulator's internals (sim/src/model.h): Memo recognises the
-// arguments of the last call bit for bit; ConstraintEntries keeps up to four entries inside the
-// constraint and spills more, in order; LossyGear's law is reused only within one evaluation
-// point (Eval::point), mode and quadrant. The simulator's results do not depend on either (the
-// campaign and peak tests compare them); these pin down the cases the models rarely reach.
+// The evaluation caches and shortcuts of the simulator's internals (sim/src/model.h): Memo
+// recognises the arguments of the last call bit for bit; ConstraintEntries keeps up to four
+// entries inside the constraint and spills more, in order; LossyGear's law is reused only within
+// one evaluation point (Eval::point), mode and quadrant; SmoothSign is tanh; the Stribeck peak
+// and SpringDamper's direct law are the products they replace. The simulator's results do not
+// depend on either (the campaign and peak tests compare them); these pin down the cases the
+// models rarely reach.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
+#include <tuple>
 #include <utility>
+#include <vector>
 
 #include "brake_elements.h"
 #include "highlift/sim/network.h"
@@ -29,6 +34,32 @@ TEST(Memo, SameOnlyForBitIdenticalArguments) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   EXPECT_FALSE(memo.Same({nan, 2.0}));
   EXPECT_TRUE(memo.Same({nan, 2.0}));  // the same bits give the same value of a pure function
+}
+
+// SmoothSign is tanh by the expm1 formulas, inline: within an ulp of std::tanh everywhere it
+// computes (odd, the sign of a zero kept, NaN for NaN), +-1 beyond |x| = 20.
+TEST(SmoothSign, IsTanhWithinAnUlp) {
+  auto ulps = [](double a, double b) {
+    if (a == b) return 0.0;
+    return std::abs(a - b) / std::abs(std::nextafter(b, 2.0 * b) - b);
+  };
+  std::vector<double> xs = {0x1p-60, 0x1p-55, std::nextafter(0x1p-55, 0.0), 1e-9, 0.3, std::nextafter(1.0, 0.0),
+                            1.0, 1.5, 7.0, 19.99, 20.0, std::numeric_limits<double>::denorm_min()};
+  for (double x = 1e-6; x < 20.0; x *= 1.01) xs.push_back(x);
+  double worst = 0.0;
+  for (double x : xs)
+    for (double v : {x, -x}) {
+      worst = std::max(worst, ulps(SmoothSign(v), std::tanh(v)));
+      EXPECT_EQ(SmoothSign(-v), -SmoothSign(v)) << v;
+    }
+  EXPECT_LE(worst, 1.0);
+  EXPECT_EQ(SmoothSign(25.0), 1.0);
+  EXPECT_EQ(SmoothSign(-25.0), -1.0);
+  EXPECT_FALSE(std::signbit(SmoothSign(0.0)));
+  EXPECT_TRUE(std::signbit(SmoothSign(-0.0)));
+  EXPECT_TRUE(std::isnan(SmoothSign(std::numeric_limits<double>::quiet_NaN())));
+  EXPECT_GT(SmoothSign(0.5), 0.0);
+  EXPECT_LT(SmoothSign(-0.5), 0.0);
 }
 
 TEST(ConstraintEntries, InlineAndSpilledEntriesKeepTheirOrder) {
@@ -157,6 +188,65 @@ TEST(StribeckFrictionLaw, OneNodeRegularisedTakesTauInForces) {
   lossy.Forces(e);
   lossy.AfterSolve(e);
   EXPECT_FALSE(lossy.unused_phases & Element::kAfterSolvePhase);
+}
+
+// The Stribeck peak's share tau_S*exp(-x) leaves the library call out for a law without a peak
+// (tau_S = 0: the drags of a drive model's shaft elements) and is the product bit for bit,
+// including the sign of a zero; a regularised drag with tau_S = 0 is the law with that product.
+TEST(StribeckFrictionLaw, NoPeakIsTheProductWithoutTheExponential) {
+  for (double tau_S : {0.0, -0.0, 1.5, -2.0})
+    for (double x : {0.0, 0.3, 12.0, 39.9, 40.5, std::numeric_limits<double>::infinity()}) {
+      const double product = tau_S * Decay(x);
+      EXPECT_EQ(StribeckPeak(tau_S, x), product) << "tau_S = " << tau_S << ", x = " << x;
+      EXPECT_EQ(std::signbit(StribeckPeak(tau_S, x)), std::signbit(product)) << tau_S << ", " << x;
+    }
+  Network scratch;
+  scratch.AddElement("LossyInertia", "drag",
+                     ElementParameters{{{"J", 0.01}, {"tau_C", 0.8}, {"tau_S", 0.0}, {"f_exp", 3.0},
+                                        {"d_vis", 0.0}, {"w_small", 0.1}},
+                                       {}});
+  StribeckFriction drag(scratch.elements().front(), true);
+  ASSERT_TRUE(drag.regularized);
+  drag.Bind([](const std::string& port) { return port == "support" ? 1 : 0; },
+            [](const std::string&) { return -1; });
+  Eval e;
+  e.phi = {0.0, 0.0};
+  for (double w : {0.03, -0.4, 25.0, -0.0}) {
+    e.w = {w, 0.0};
+    e.force = {0.0, 0.0};
+    drag.Forces(e);
+    const double expected = std::tanh(w / 0.1) * (0.8 + 0.0 * std::exp(-(3.0 * std::abs(w)))) + 0.0 * w;
+    EXPECT_EQ(drag.tau_stribeck, expected) << "w = " << w;
+    EXPECT_EQ(e.force[0], -expected) << "w = " << w;
+  }
+}
+
+// SpringDamper applies its law directly (not through Compliant's virtual Tau): the torque
+// c*(phi_rel - phi_rel0) + d*w_rel on both flanges and the loss power d*w_rel^2 of the general
+// Compliant formula (tau - spring torque)*w_rel, bit for bit.
+TEST(SpringDamperLaw, DirectLawIsCompliantsLaw) {
+  Network scratch;
+  scratch.AddElement("SpringDamper", "k", ElementParameters{{{"c", 2.0e4}, {"d", 3.5}, {"phi_rel0", 0.01}}, {}});
+  msl::SpringDamper spring(scratch.elements().front());
+  spring.Bind([](const std::string& port) { return port == "flange_a" ? 0 : 1; },
+              [](const std::string&) { return -1; });
+  spring.state_offset = 0;
+  for (auto [phi, wa, wb] : {std::tuple{0.02, 1.0, 1.5}, std::tuple{-0.3, 12.0, -4.0}, std::tuple{0.01, 0.0, 0.0}}) {
+    const double y[] = {phi};
+    Eval e;
+    e.y = y;
+    e.phi = {0.0, 0.0};
+    e.w = {wa, wb};
+    e.force = {0.25, -0.5};
+    spring.Forces(e);
+    const double tau = 2.0e4 * (phi - 0.01) + 3.5 * (wb - wa);
+    EXPECT_EQ(spring.tau, tau);
+    EXPECT_EQ(spring.tau, spring.Tau(phi, wb - wa));
+    EXPECT_EQ(e.force[0], 0.25 + tau);
+    EXPECT_EQ(e.force[1], -0.5 - tau);
+    EXPECT_EQ(spring.LossPower(e), (tau - spring.SpringTorque(phi)) * (wb - wa));
+    EXPECT_EQ(spring.PeakTorque(e), tau);
+  }
 }
 
 }  // namespace
