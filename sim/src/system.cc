@@ -1702,7 +1702,6 @@ bool System::SolveSchur(Group& g) {
   double* S = g.lu_work.data();     // m x m, column-major
   double* r = g.x.data() + nn;      // right-hand side, then lambda
   const double* inverse_J = g.inverse_J.data();
-  if (m == 1) return SolveSchurOne(g);
   for (int i = 0; i < nn; ++i) acc0[i] = e.force[g.nodes[i]] * inverse_J[i];
   for (int k = 0; k < m; ++k) {
     const auto* ck = e.constraints[g.rows[k]].column.begin();
@@ -1725,13 +1724,7 @@ bool System::SolveSchur(Group& g) {
     for (int p = g.row_begin[j]; p < g.row_begin[j + 1]; ++p) v -= rj[g.row_entry[p]].second * acc0[g.row_local[p]];
     r[j] = v;
   }
-  if (m == 1) {
-    // SmallLuSolve of the 1 x 1 system, the same operations.
-    if (!(std::abs(S[0]) > 1e-12 * std::max(0.0, std::abs(S[0])))) return false;
-    r[0] = r[0] / S[0];
-  } else if (!SmallLuSolve(S, r, m)) {
-    return false;
-  }
+  if (!SmallLuSolve(S, r, m)) return false;
   for (int k = 0; k < m; ++k) {
     const double lambda = r[k];
     Constraint& ck = e.constraints[g.rows[k]];

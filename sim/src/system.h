@@ -285,7 +285,7 @@ class System {
     std::vector<int> column_begin, column_entry, column_local;
     std::vector<int> row_begin, row_entry, row_local;
   };
-  bool SolveSchur(Group& g);
+  bool SolveSchur(Group& g);     ///< a group with two or more constraints (Solve picks)
   bool SolveSchurOne(Group& g);  ///< SolveSchur of a group with one constraint
   /// The first part of every evaluation: node angles and speeds from y (the massless nodes'
   /// speeds solved), hydraulic pressures, forces and accelerations cleared.
