@@ -106,6 +106,8 @@ class StribeckFriction final : public msl::Friction {
   int NumRoots() const override { return frictionless || regularized ? 0 : 4; }
   void Roots(const Eval& e, double* g) const override;
   void RootDirections(int* d) const override;
+  /// Root 3 reads tau_load, the multiplier of the solve, while the split law slides.
+  bool RootsNeedSolve() const override { return Friction::RootsNeedSolve() || (split && Sliding()); }
   bool IsSwitching() const override { return !frictionless && !regularized; }
   /// Regularised (w_small > 0): the sign of tau_load is assumed, checked after the solve.
   bool HasAssumptions() const override { return regularized && split; }
@@ -166,6 +168,7 @@ class BrakeActuation : public Element {
   double NextTimeEvent(double t) const override;
   int NumRoots() const override { return 1; }
   void Roots(const Eval& e, double* g) const override;
+  bool RootsNeedSolve() const override { return false; }  // the trigger input
   bool IsSwitching() const override { return true; }
   void PrepareEvent(const Eval& e) override { Update(e); }
   double Violation(const Eval& e) const override;
@@ -200,6 +203,7 @@ class NonlinearSpring : public msl::Compliant {
   void Signals(const Eval& e, double* out) const override;
   int NumRoots() const override { return 4; }
   void Roots(const Eval& e, double* g) const override;
+  bool RootsNeedSolve() const override { return false; }  // the twist
   std::vector<std::string> OutputNames() const override { return {"phi_rel", "w_rel", "tau", "y"}; }
   void Outputs(const Eval& e, double* out) const override;
 

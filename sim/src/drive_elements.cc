@@ -344,6 +344,7 @@ class Monitoring : public Element {
   void Roots(const Eval& e, double* g) const override {
     for (int k = 0; k < kRelations; ++k) g[k] = Enabled(k) ? G(e, k) : 1.0;
   }
+  bool RootsNeedSolve() const override { return false; }  // the sensor inputs
   bool IsSwitching() const override { return true; }
   void PrepareEvent(const Eval& e) override {
     for (int k = 0; k < kRelations; ++k)
@@ -559,6 +560,10 @@ class CombiTable1Ds : public SignalBlock {
       if (!(table[r][0] > table[r - 1][0]))
         throw InputError(Where(e) + ": table 'table' first column must be strictly increasing "
                          "(row " + std::to_string(r + 1) + "); remove the repeated abscissa");
+    for (const auto& row : table) {
+      xs.push_back(row[0]);
+      ys.push_back(row[1]);
+    }
   }
   std::vector<std::string> SignalInputs() const override { return {"u"}; }
   void Bind(const std::function<int(const std::string&)>&,
@@ -576,10 +581,17 @@ class CombiTable1Ds : public SignalBlock {
       if (x <= x0) return table.front()[1];
       if (x >= x1) return table.back()[1];
     }
-    return Interpolate(table, 1, x);  // linear, extrapolated through the outer two points
+    // Linear, extrapolated through the outer two points: Interpolate(table, 1, x) on the
+    // columns held contiguously (a table is read at every evaluation, one per actuator).
+    std::size_t i = 0;
+    while (i + 2 < n && x > xs[i + 1]) ++i;
+    const double xa = xs[i], xb = xs[i + 1], ya = ys[i], yb = ys[i + 1];
+    if (xb == xa) return yb;
+    return ya + (yb - ya) * (x - xa) / (xb - xa);
   }
   double Signal(const Eval& e) const override { return Value(e.signal[u]); }
   Table table;
+  std::vector<double> xs, ys;  ///< the table's two columns
   int extrapolation;
   int u = -1;
 };

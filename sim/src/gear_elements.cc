@@ -137,6 +137,7 @@ class GearedRotaryActuator : public LossyGear {
   bool IsSwitching() const override { return !RegularizedLaw() && LossyGear::IsSwitching(); }
   bool RootRestarts(int k) const override { return !RegularizedLaw() && LossyGear::RootRestarts(k); }
   bool RootFromStates(int k) const override { return RegularizedLaw() && k == 0; }  // WA: node speeds
+  bool RootsNeedSolve() const override { return !RegularizedLaw() && LossyGear::RootsNeedSolve(); }
   void ContinuousRoot(int k, const Eval& e) override {
     if (RegularizedLaw() && k == 0) phi_start = Phi(e);
   }
@@ -236,6 +237,7 @@ class Disconnector : public Compliant {
   void Roots(const Eval& e, double* g) const override {
     g[0] = broken ? 1.0 : e.signal[u] - 0.5;
   }
+  bool RootsNeedSolve() const override { return false; }  // the trigger input
   void RootDirections(int* direction) const override { direction[0] = 1; }
   double NextTimeEvent(double t) const override {
     return !broken && t < t_disconnect ? t_disconnect : INFINITY;
@@ -322,6 +324,7 @@ class Jam : public Element {
   void Roots(const Eval& e, double* g) const override {
     g[0] = jammed ? 1.0 : e.signal[u] - 0.5;
   }
+  bool RootsNeedSolve() const override { return false; }  // the trigger input
   void RootDirections(int* direction) const override { direction[0] = 1; }
   double NextTimeEvent(double t) const override {
     return !jammed && t < t_jam ? t_jam : INFINITY;

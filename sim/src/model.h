@@ -443,6 +443,13 @@ class Element {
     (void)k;
     return false;
   }
+  /// Whether Roots() in the element's present mode reads a result of the solve: a constraint
+  /// torque, an acceleration, or a torque or other member its laws set in Forces or AfterSolve.
+  /// True, the safe default. An element returns false only while its roots read nothing but
+  /// time, its states and discrete variables, the node angles and speeds, and its signal inputs
+  /// (those a law may read are computed before the solve): the simulator then checks its roots
+  /// at the output points inside a long step without the solve (System::RootsWithoutSolve).
+  virtual bool RootsNeedSolve() const { return true; }
   /// Root k (one for which RootRestarts() is false) was crossed at the state of `e`; the
   /// element may update discrete variables that leave the right-hand side continuous there.
   virtual void ContinuousRoot(int k, const Eval& e) {

@@ -304,6 +304,7 @@ class ElastoBacklash : public Compliant {
     g[0] = delta - b_total / 2;
     g[1] = delta + b_total / 2;
   }
+  bool RootsNeedSolve() const override { return false; }  // the twist (ElastoBacklash2: and its rate)
   double c, d, b_total, phi_rel0;
 };
 
@@ -513,6 +514,10 @@ class Friction : public Element {
     const bool free = mode == kFree || mode == kUnknown;
     g[2] = fn == 0.0 ? (free ? -1.0 : 1.0) * kRootSentinel : fn;
   }
+  /// Stuck, root 1 reads the constraint torque; starting, root 0 the acceleration. Otherwise
+  /// the roots read the slip speed and the normal force (Fn: a signal input or the element's
+  /// own actuation, never a result of the solve).
+  bool RootsNeedSolve() const override { return mode == kStuck || (Sliding() && starting); }
   void RootDirections(int* d) const override {
     d[0] = starting ? 0 : (mode == kForward ? -1 : (mode == kBackward ? 1 : 0));
     d[1] = -1;

@@ -118,6 +118,7 @@ class InverseSpeedDependentTorque : public TorqueSource {
     g[0] = W(e) - w0;
     g[1] = W(e) + w0;
   }
+  bool RootsNeedSolve() const override { return false; }  // the speed
   bool RootRestarts(int) const override { return !same_direction; }
   double tau_nominal, w_nominal, w0;
   bool same_direction;

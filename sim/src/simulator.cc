@@ -1012,13 +1012,15 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
     sys.Roots(g_prev.data());
   }
   // The state at tq on the interpolant of the last step, evaluated.
-  auto interpolate = [&](double tq) {
-    if (!check(CVodeGetDky(cv.mem, tq, 0, interpolated), "CVodeGetDky", tq)) return false;
+  auto evaluate_interpolated = [&](double tq) {
     if (!sys.Evaluate(tq, N_VGetArrayPointer(interpolated), nullptr)) {
       fail(SimulationStatus::kModelError, sys.error(), tq);
       return false;
     }
     return true;
+  };
+  auto interpolate = [&](double tq) {
+    return check(CVodeGetDky(cv.mem, tq, 0, interpolated), "CVodeGetDky", tq) && evaluate_interpolated(tq);
   };
   // The earliest crossing in (ta, tb] of the roots flagged in root_info, on the interpolant, by
   // bisection to CVODE's root tolerance; leaves `interpolated` and root_info at the root.
@@ -1188,12 +1190,23 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
       const double t_out = next_output();
       HIGHLIFT_CHECK(t_out < t_end + eps_t && (k == 1 || t0 + static_cast<double>(k - 1) * dt < t_end - eps_t),
                      "a CVODE step ended past the stop time");
-      if (evaluate_points && !interpolate(t_out)) {
-        failed = true;
-        break;
+      // Without a reader of the values only the roots are wanted: evaluated without the
+      // solve where the present modes allow it (System::RootsWithoutSolve), the same values.
+      bool roots_done = false;
+      if (evaluate_points) {
+        if (!check(CVodeGetDky(cv.mem, t_out, 0, interpolated), "CVodeGetDky", t_out)) {
+          failed = true;
+          break;
+        }
+        roots_done = !evaluate_outputs && check_roots &&
+                     sys.RootsWithoutSolve(t_out, N_VGetArrayPointer(interpolated), g_out.data());
+        if (!roots_done && !evaluate_interpolated(t_out)) {
+          failed = true;
+          break;
+        }
       }
       if (check_roots) {
-        sys.Roots(g_out.data());
+        if (!roots_done) sys.Roots(g_out.data());
         if (SignChanged(g_prev, g_out, directions, root_info, kinematic, 0)) {
           double t_root = t_out;
           if (!locate_root(g_prev_time, t_out, t_root)) {

@@ -251,6 +251,7 @@ System::System(const Network& original) {
   }
   // Signals computed from the solve (torque, power and acceleration sensors) and the blocks
   // they feed are evaluated after the solve; a law acting in the solve must not read them.
+  std::vector<char> after(elements_.size(), 0);
   {
     std::vector<std::vector<int>> consumers(elements_.size());
     for (const auto& el : elements_)
@@ -258,7 +259,6 @@ System::System(const Network& original) {
         auto it = signal_source.find(el->id + "." + in);
         if (it != signal_source.end()) consumers[slot_owner[it->second]].push_back(el->index);
       }
-    std::vector<char> after(elements_.size(), 0);
     std::function<void(int, int)> mark = [&](int i, int origin) {
       for (int c : consumers[i]) {
         if (after[c]) continue;
@@ -285,7 +285,10 @@ System::System(const Network& original) {
   for (auto& el : elements_) {
     el->root_offset = n_roots_;
     n_roots_ += el->NumRoots();
-    if (el->NumRoots() > 0) root_elements_.push_back(el.get());
+    if (el->NumRoots() > 0) {
+      root_elements_.push_back(el.get());
+      roots_after_solve_.push_back(after[static_cast<std::size_t>(el->index)]);
+    }
     bool kinematic = false;
     for (int k = 0; k < el->NumRoots(); ++k) {
       const bool from_states = el->RootFromStates(k) && !el->RootRestarts(k);
@@ -1994,6 +1997,16 @@ bool System::ReadingsAsDeclared() const {
 
 void System::Roots(double* g) const {
   for (const Element* el : root_elements_) el->Roots(eval_, g + el->root_offset);
+}
+
+bool System::RootsWithoutSolve(double t, const double* y, double* g) {
+  for (std::size_t i = 0; i < root_elements_.size(); ++i)
+    if (roots_after_solve_[i] || root_elements_[i]->RootsNeedSolve()) return false;
+  // What Evaluate computes before the forces, which is all these roots read.
+  SetKinematics(t, y);
+  EvaluateSignals(signal_order_before_);
+  Roots(g);
+  return true;
 }
 
 void System::RootDirections(int* direction) const {

@@ -109,6 +109,12 @@ class System {
   bool IsEvaluatedAt(double t, const double* y) const { return cache_enabled_ && AtLastEvaluation(t, y); }
   /// Root functions (after Evaluate at the same point).
   void Roots(double* g) const;
+  /// The root functions at (t, y) into g, evaluated without the forces and the solve, when no
+  /// element's roots need them in its present mode (Element::RootsNeedSolve; nor reads a signal
+  /// computed after the solve): then true, with the values Evaluate(t, y) and Roots(g) would
+  /// give, and the last full evaluation is no longer current. Otherwise false, with g and the
+  /// evaluation untouched.
+  bool RootsWithoutSolve(double t, const double* y, double* g);
   /// Whether root k is kinematic: a root without restart that is a function of the node angles
   /// and speeds alone (Element::RootFromStates). The simulator locates those itself on the
   /// interpolant with KinematicRoots instead of evaluating the whole model at every trial point.
@@ -212,6 +218,9 @@ class System {
   /// The elements with root functions (NumRoots() > 0, fixed by their parameters), in order:
   /// Roots() runs at every step end and output point and needs no pass over the others.
   std::vector<Element*> root_elements_;
+  /// Per entry of root_elements_: whether its signals are computed after the solve (a signal
+  /// block fed by a torque sensor), so that its roots may read results of the solve.
+  std::vector<char> roots_after_solve_;
   std::vector<int> reading_elements_;  ///< indices of the elements with HasReadings()
   /// The elements each phase of Evaluate calls (all until PrunePhases has run).
   std::vector<Element*> forces_, constraints_, after_solve_, derivatives_;
