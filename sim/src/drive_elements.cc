@@ -551,11 +551,11 @@ class CombiTimeTable : public SignalBlock {
 
 class CombiTable1Ds : public SignalBlock {
  public:
-  explicit CombiTable1Ds(const NetworkElement& e)
-      : table(TableOr(e, "table", {}, 2)), extrapolation(WholeNumber(e, "extrapolation")) {
+  explicit CombiTable1Ds(const NetworkElement& e) : extrapolation(WholeNumber(e, "extrapolation")) {
     if (WholeNumber(e, "smoothness") != 1)
       throw InputError(Where(e) + ": parameter 'smoothness' must be 1 (LinearSegments), the "
                        "only interpolation supported");
+    const Table table = TableOr(e, "table", {}, 2);
     for (std::size_t r = 1; r < table.size(); ++r)
       if (!(table[r][0] > table[r - 1][0]))
         throw InputError(Where(e) + ": table 'table' first column must be strictly increasing "
@@ -571,27 +571,23 @@ class CombiTable1Ds : public SignalBlock {
     u = signal_of("u");
   }
   double Value(double x) const {
-    const std::size_t n = table.size();
-    if (n == 1) return table[0][1];
-    const double x0 = table.front()[0], x1 = table.back()[0];
+    const std::size_t n = xs.size();  // >= 1 (TableOr)
+    if (n == 1) return ys[0];
+    const double x0 = xs.front(), x1 = xs.back();
     if (extrapolation == kPeriodic) {
       const double span = x1 - x0;
       x -= std::floor((x - x0) / span) * span;
     } else if (extrapolation == kHoldLastPoint) {
-      if (x <= x0) return table.front()[1];
-      if (x >= x1) return table.back()[1];
+      if (x <= x0) return ys.front();
+      if (x >= x1) return ys.back();
     }
-    // Linear, extrapolated through the outer two points: Interpolate(table, 1, x) on the
-    // columns held contiguously (a table is read at every evaluation, one per actuator).
-    std::size_t i = 0;
-    while (i + 2 < n && x > xs[i + 1]) ++i;
-    const double xa = xs[i], xb = xs[i + 1], ya = ys[i], yb = ys[i + 1];
-    if (xb == xa) return yb;
-    return ya + (yb - ya) * (x - xa) / (xb - xa);
+    // Linear, extrapolated through the outer two points.
+    return InterpolatePoints(
+        n, [this](std::size_t i) { return xs[i]; }, [this](std::size_t i) { return ys[i]; }, x);
   }
   double Signal(const Eval& e) const override { return Value(e.signal[u]); }
-  Table table;
-  std::vector<double> xs, ys;  ///< the table's two columns
+  /// The table's two columns, contiguous: a table is read at every evaluation, one per actuator.
+  std::vector<double> xs, ys;
   int extrapolation;
   int u = -1;
 };

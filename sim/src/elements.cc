@@ -13,15 +13,8 @@
 namespace highlift::sim::detail {
 
 double Interpolate(const Table& table, int column, double x) {
-  const std::size_t n = table.size();
-  if (n == 0) return 0.0;
-  if (n == 1) return table[0][column];
-  std::size_t i = 0;
-  while (i + 2 < n && x > table[i + 1][0]) ++i;
-  const double x0 = table[i][0], x1 = table[i + 1][0];
-  const double y0 = table[i][column], y1 = table[i + 1][column];
-  if (x1 == x0) return y1;
-  return y0 + (y1 - y0) * (x - x0) / (x1 - x0);
+  return InterpolatePoints(
+      table.size(), [&](std::size_t i) { return table[i][0]; }, [&](std::size_t i) { return table[i][column]; }, x);
 }
 
 

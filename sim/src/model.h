@@ -82,8 +82,22 @@ class Memo {
   bool valid_ = false;
 };
 
-/// Modelica.Math.Vectors.interpolate on column `column` of `table` against column 0:
-/// piecewise linear with linear extrapolation; a one-row table is constant.
+/// Modelica.Math.Vectors.interpolate over n points (x_at(i), y_at(i)), the abscissas
+/// nondecreasing: piecewise linear with linear extrapolation through the outer two points; one
+/// point is constant, none 0. The accessors let a table in rows and one in columns share it.
+template <class XAt, class YAt>
+double InterpolatePoints(std::size_t n, XAt x_at, YAt y_at, double x) {
+  if (n == 0) return 0.0;
+  if (n == 1) return y_at(0);
+  std::size_t i = 0;
+  while (i + 2 < n && x > x_at(i + 1)) ++i;
+  const double x0 = x_at(i), x1 = x_at(i + 1);
+  const double y0 = y_at(i), y1 = y_at(i + 1);
+  if (x1 == x0) return y1;
+  return y0 + (y1 - y0) * (x - x0) / (x1 - x0);
+}
+
+/// InterpolatePoints on column `column` of `table` against column 0.
 double Interpolate(const Table& table, int column, double x);
 
 /// A node: flanges connected to each other (and flanges tied rigidly inside an element).

@@ -1825,7 +1825,7 @@ bool System::Solve() {
   for (int k : grounded_rows_) e.constraints[k].lambda = 0.0;
   for (Group& g : groups_) {
     const int nn = static_cast<int>(g.nodes.size()), m = static_cast<int>(g.rows.size());
-    if (g.schur && (g.rows.size() == 1 ? SolveSchurOne(g) : SolveSchur(g))) continue;
+    if (g.schur && (m == 1 ? SolveSchurOne(g) : SolveSchur(g))) continue;
     for (int i = 0; i < nn; ++i) local_[g.nodes[i]] = i;
     g.A.setZero();
     for (int i = 0; i < nn; ++i) {
