@@ -590,26 +590,23 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
   struct Readings {
     std::vector<double> tau, loss;
     double loss_scale = 0.0;
+    double loss_min = INFINITY;  ///< the smallest of `loss` (System::StepEndReadings)
     System::EnergyState energy;
   };
   auto read = [&](Readings& r, SampleKind kind) {
     if (kind != SampleKind::kOutputPoint) {
-      r.loss_scale = sys.StepEndReadings(r.loss, r.tau);
+      r.loss_scale = sys.StepEndReadings(r.loss, r.tau, r.loss_min);
     }
     if (options.energy) r.energy = sys.Energy();
   };
   const std::vector<int>& readings_of = sys.ReadingElements();
-  auto monitor = [&](double t, const std::vector<double>& loss, double loss_scale) {
+  auto monitor = [&](double t, const std::vector<double>& loss, double loss_scale, double loss_min) {
     report.passivity.power_scale = std::max(report.passivity.power_scale, loss_scale);
     const double threshold = -options.passivity_tolerance * report.passivity.power_scale;
-    // Mostly no episode is open and no power is below the threshold: one pass over the
-    // contiguous powers tells (the elements without readings hold 0, not below a threshold
-    // of -0 or less) and the loop over the elements is left out.
-    if (episodes_open == 0) {
-      bool below = false;
-      for (const double p : loss) below |= p < threshold;
-      if (!below) return;
-    }
+    // Mostly no episode is open and no power is below the threshold: the smallest power tells
+    // (the elements without readings hold 0, not below a threshold of -0 or less), and the loop
+    // over the elements is left out.
+    if (episodes_open == 0 && !(loss_min < threshold)) return;
     for (const int reading : readings_of) {  // (the others dissipate nothing: System::ReadingElements)
       const auto i = static_cast<std::size_t>(reading);
       Episode& e = open_episode[i];
@@ -668,7 +665,7 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
   PeakTrack track;
   auto record = [&](double t, const Readings& r, SampleKind kind) {
     if (kind != SampleKind::kOutputPoint) {
-      monitor(t, r.loss, r.loss_scale);
+      monitor(t, r.loss, r.loss_scale, r.loss_min);
       // (Raw pointers: the store into has_torque, a char, could otherwise alias every vector's
       // own pointers, which the loop would then load again for each element.)
       const double* const tau = r.tau.data();

@@ -1,6 +1,7 @@
 #include "system.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <cstring>
 #include <functional>
@@ -751,7 +752,7 @@ void System::BalanceMasslessTwists(double* y) {
 }
 
 std::vector<double> System::InitialState(double t0) {
-  cache_valid_ = false;  // discrete state or start values change
+  DiscreteStateChanged();  // discrete state or start values change
   t_segment_ = t0;
   eval_.t = t0;
   eval_.t_segment = t0;
@@ -965,7 +966,7 @@ std::string System::SolveInitialAccelerations(double t, std::vector<double>& y, 
   std::vector<double> ydot(n_states_, 0.0), state = y;
   auto residual = [&](const Eigen::VectorXd& z, Eigen::VectorXd& r) {
     StartState(phi0 + Np * z.head(kp), w0 + Nw * z.tail(k - kp), state.data(), false);
-    cache_valid_ = false;
+    DiscreteStateChanged();
     if (!Evaluate(t, state.data(), ydot.data()))
       throw InputError("the initial equations on accelerations cannot be evaluated: " + error_);
     r.resize(m);
@@ -1066,7 +1067,7 @@ std::string System::SolveInitialAccelerations(double t, std::vector<double>& y, 
   }
   residual(z, r);
   std::copy(state.begin(), state.end(), y.begin());
-  cache_valid_ = false;
+  DiscreteStateChanged();
   std::ostringstream account;
   account << (steady_state ? "steady-state start" : "initial accelerations") << ": " << m << " equation"
           << (m == 1 ? "" : "s") << " on " << involved.size() << " free start value" << (involved.size() == 1 ? "" : "s");
@@ -1077,7 +1078,7 @@ std::string System::SolveInitialAccelerations(double t, std::vector<double>& y, 
 }
 
 double System::SolveEquilibrium(double t, double* y, bool& found, const EquilibriumOptions& options) {
-  cache_valid_ = false;  // discrete state or start values change
+  DiscreteStateChanged();  // discrete state or start values change
   found = false;
   equilibrium_evaluations_ = 0;
   std::vector<int> unknowns;
@@ -1505,6 +1506,7 @@ bool System::Evaluate(double t, const double* y, double* ydot) {
     if (pass + 1 >= kMaxPasses) break;
     bool again = false;
     for (Element* el : assuming_) again = el->Reassume(e) || again;
+    if (again) pattern_current_ = false;  // a branch changed: the next solve checks the pattern
     if (!again) break;
   }
   if (ydot != nullptr) {
@@ -1817,10 +1819,16 @@ bool System::Solve() {
       if (!nodes_[n].ground && !nodes_[n].massless) e.acc[n] = e.force[n] / nodes_[n].J;
     return true;
   }
-  if (!SignatureMatches()) {
-    ConstraintSignature(signature_);
-    BuildGroups();
+  // The groups follow the pattern of the active constraints, which changes only with the
+  // discrete state (pattern_current_): between events it is not compared again.
+  if (!pattern_current_) {
+    if (!SignatureMatches()) {
+      ConstraintSignature(signature_);
+      BuildGroups();
+    }
+    pattern_current_ = cache_enabled_;
   }
+  assert(SignatureMatches());
   for (const auto& [n, J] : unconstrained_) e.acc[n] = e.force[n] / J;
   for (int k : grounded_rows_) e.constraints[k].lambda = 0.0;
   for (Group& g : groups_) {
@@ -1913,41 +1921,109 @@ bool System::ProjectSpeeds(double* y) {
   const int nn = static_cast<int>(node_list.size()), m = static_cast<int>(rows.size());
   double j_max = 0.0;
   for (int n : node_list) j_max = std::max(j_max, nodes_[n].J);
-  Eigen::MatrixXd K = Eigen::MatrixXd::Zero(nn + m, nn + m);
-  Eigen::VectorXd b = Eigen::VectorXd::Zero(nn + m);
-  for (int i = 0; i < nn; ++i) {
-    const double weight = nodes_[node_list[i]].J + 1e-9 * (j_max + 1e-12);
-    K(i, i) = weight;
-    b[i] = weight * y[nodes_[node_list[i]].s_w];
-  }
-  for (int j = 0; j < m; ++j) {
-    b[nn + j] = e.constraints[rows[j]].velocity_rhs;
-    for (auto [n, coef] : e.constraints[rows[j]].row)
-      if (!nodes_[n].ground) {
-        K(nn + j, local_[n]) += coef;
-        K(local_[n], nn + j) += coef;
-      }
-  }
-  // The active constraints are mostly those of a recent projection (the passes of the event
-  // iteration, the next event): the decomposition of the same matrix (bit for bit) is reused.
-  auto same = [&](const Projection& p) {
-    return p.matrix.rows() == K.rows() && p.matrix.cols() == K.cols() &&
-           std::memcmp(p.matrix.data(), K.data(), sizeof(double) * static_cast<std::size_t>(K.size())) == 0;
+  // W: each node's inertia with 1e-9 of the largest added (a node without inertia stays determined).
+  auto weight = [&](int n) { return nodes_[n].J + 1e-9 * (j_max + 1e-12); };
+  // The groups of nodes coupled by the rows (union-find on the local indices): the problem
+  // separates into one small KKT system per group. A row on ground nodes alone constrains no
+  // speed and belongs to no group.
+  std::vector<int> parent(static_cast<std::size_t>(nn));
+  std::iota(parent.begin(), parent.end(), 0);
+  auto find = [&](int i) {
+    while (parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
   };
-  auto hit = std::find_if(projections_.begin(), projections_.end(), same);
-  if (hit == projections_.end()) {
-    if (projections_.size() < kProjections) projections_.emplace_back();
-    hit = projections_.end() - 1;  // the least recent one is replaced
-    hit->matrix = K;
-    hit->decomposition.compute(K);
+  std::vector<int> row_root(static_cast<std::size_t>(m), -1);
+  for (int j = 0; j < m; ++j)
+    for (auto [n, c] : e.constraints[rows[j]].row) {
+      if (nodes_[n].ground) continue;
+      const int r = find(local_[n]);
+      if (row_root[j] < 0) row_root[j] = r;
+      else parent[r] = find(row_root[j]);
+    }
+  std::vector<int> group_of(static_cast<std::size_t>(nn), -1), group_nodes, group_rows;
+  std::vector<int> node_begin, row_begin;
+  {
+    std::vector<int> root_group(static_cast<std::size_t>(nn), -1), node_count, row_count;
+    for (int i = 0; i < nn; ++i) {
+      const int r = find(i);
+      if (root_group[r] < 0) {
+        root_group[r] = static_cast<int>(node_count.size());
+        node_count.push_back(0);
+        row_count.push_back(0);
+      }
+      group_of[i] = root_group[r];
+      ++node_count[group_of[i]];
+    }
+    for (int j = 0; j < m; ++j)
+      if (row_root[j] >= 0) ++row_count[root_group[find(row_root[j])]];
+    const std::size_t groups = node_count.size();
+    node_begin.assign(groups + 1, 0);
+    row_begin.assign(groups + 1, 0);
+    for (std::size_t g = 0; g < groups; ++g) {
+      node_begin[g + 1] = node_begin[g] + node_count[g];
+      row_begin[g + 1] = row_begin[g] + row_count[g];
+    }
+    group_nodes.resize(static_cast<std::size_t>(nn));
+    group_rows.resize(static_cast<std::size_t>(row_begin[groups]));
+    std::vector<int> next_node(node_begin.begin(), node_begin.end() - 1);
+    std::vector<int> next_row(row_begin.begin(), row_begin.end() - 1);
+    for (int i = 0; i < nn; ++i) group_nodes[next_node[group_of[i]]++] = i;
+    for (int j = 0; j < m; ++j)
+      if (row_root[j] >= 0) group_rows[next_row[root_group[find(row_root[j])]]++] = j;
   }
-  std::rotate(projections_.begin(), hit, hit + 1);
-  Eigen::VectorXd x = projections_.front().decomposition.solve(b);
+  std::vector<double> w_new(static_cast<std::size_t>(nn));
+  std::vector<int> in_group(static_cast<std::size_t>(nn), -1);  // local index -> index in its group
+  std::vector<double> coefficient;
+  for (std::size_t g = 0; g + 1 < node_begin.size(); ++g) {
+    const int gn = node_begin[g + 1] - node_begin[g], gm = row_begin[g + 1] - row_begin[g];
+    for (int a = 0; a < gn; ++a) in_group[group_nodes[node_begin[g] + a]] = a;
+    if (gm == 1) {
+      // One row g.w' = v (nearly every group: a gear or a stuck element between two nodes):
+      // w' = w + W^-1 g lambda with lambda = (v - g.w) / (g^T W^-1 g).
+      const Constraint& c = e.constraints[rows[group_rows[row_begin[g]]]];
+      coefficient.assign(static_cast<std::size_t>(gn), 0.0);
+      for (auto [n, coef] : c.row)
+        if (!nodes_[n].ground) coefficient[in_group[local_[n]]] += coef;  // (a node twice: one entry)
+      double gw = 0.0, gwg = 0.0;
+      for (int a = 0; a < gn; ++a) {
+        const int n = node_list[group_nodes[node_begin[g] + a]];
+        gw += coefficient[a] * y[nodes_[n].s_w];
+        gwg += coefficient[a] * coefficient[a] / weight(n);
+      }
+      const double lambda = gwg > 0.0 ? (c.velocity_rhs - gw) / gwg : 0.0;  // (no row left: no change)
+      for (int a = 0; a < gn; ++a) {
+        const int i = group_nodes[node_begin[g] + a], n = node_list[i];
+        w_new[i] = y[nodes_[n].s_w] + coefficient[a] * lambda / weight(n);
+      }
+      continue;
+    }
+    Eigen::MatrixXd K = Eigen::MatrixXd::Zero(gn + gm, gn + gm);
+    Eigen::VectorXd b = Eigen::VectorXd::Zero(gn + gm);
+    for (int a = 0; a < gn; ++a) {
+      const int n = node_list[group_nodes[node_begin[g] + a]];
+      K(a, a) = weight(n);
+      b[a] = weight(n) * y[nodes_[n].s_w];
+    }
+    for (int r = 0; r < gm; ++r) {
+      const Constraint& c = e.constraints[rows[group_rows[row_begin[g] + r]]];
+      b[gn + r] = c.velocity_rhs;
+      for (auto [n, coef] : c.row)
+        if (!nodes_[n].ground) {
+          const int a = in_group[local_[n]];
+          K(gn + r, a) += coef;
+          K(a, gn + r) += coef;
+        }
+    }
+    // Complete orthogonal decomposition: redundant constraints (several stuck elements on one
+    // rigid shaft) give the minimum-norm multipliers and still the unique speeds.
+    const Eigen::VectorXd x = Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd>(K).solve(b);
+    for (int a = 0; a < gn; ++a) w_new[group_nodes[node_begin[g] + a]] = x[a];
+  }
   double kinetic_change = 0.0;
   for (int i = 0; i < nn; ++i) {
     double& w = y[nodes_[node_list[i]].s_w];
-    kinetic_change += 0.5 * nodes_[node_list[i]].J * (w * w - x[i] * x[i]);
-    w = x[i];
+    kinetic_change += 0.5 * nodes_[node_list[i]].J * (w * w - w_new[i] * w_new[i]);
+    w = w_new[i];
     local_[node_list[i]] = -1;
   }
   impulsive_loss_ += std::max(kinetic_change, 0.0);
@@ -1966,24 +2042,28 @@ System::EnergyState System::Energy() const {
   return s;
 }
 
-double System::StepEndReadings(std::vector<double>& loss, std::vector<double>& tau) const {
+double System::StepEndReadings(std::vector<double>& loss, std::vector<double>& tau, double& lowest) const {
   if (loss.size() != elements_.size()) loss.assign(elements_.size(), 0.0);
   if (tau.size() != elements_.size()) tau.assign(elements_.size(), NAN);
-  double scale = 0.0;
+  double scale = 0.0, low = INFINITY;
   for (std::size_t k = 0; k < reading_elements_.size(); ++k) {
     const auto i = static_cast<std::size_t>(reading_elements_[k]);
     const Element& el = *elements_[i];
+    double p;
     if (reading_direct_[k] == kSpringDamper) {
       const msl::SpringDamper& sd = AsSpringDamper(el);
-      loss[i] = sd.msl::SpringDamper::LossPower(eval_);
-      scale += std::abs(loss[i]) + std::abs(sd.msl::SpringDamper::SourcePower(eval_));
+      p = sd.msl::SpringDamper::LossPower(eval_);
+      scale += std::abs(p) + std::abs(sd.msl::SpringDamper::SourcePower(eval_));
       tau[i] = sd.msl::SpringDamper::PeakTorque(eval_);
     } else {
-      loss[i] = el.LossPower(eval_);
-      scale += std::abs(loss[i]) + std::abs(el.SourcePower(eval_));
+      p = el.LossPower(eval_);
+      scale += std::abs(p) + std::abs(el.SourcePower(eval_));
       tau[i] = el.PeakTorque(eval_);
     }
+    loss[i] = p;
+    low = p < low ? p : low;
   }
+  lowest = low;
   return scale;
 }
 
@@ -2025,8 +2105,10 @@ double System::NextTimeEvent(double t) const {
 
 bool System::HandleEvent(double t, double* y, bool initial, std::vector<std::string>* changes,
                          std::vector<std::string>* changed_elements, const int* root_info) {
-  // The modes change between the evaluations of the event iteration: no cache in here.
-  cache_valid_ = false;
+  // The modes change between the evaluations of the event iteration: no cache in here, and
+  // every solve checks the constraints' pattern (Solve sets pattern_current_ only while the
+  // cache is enabled).
+  DiscreteStateChanged();
   cache_enabled_ = false;
   struct Restore {
     bool& flag;
@@ -2108,12 +2190,12 @@ bool System::HandleContinuousRoots(double t, const double* y, const int* root_in
   for (auto& el : elements_)
     for (int k = 0; k < el->NumRoots(); ++k)
       if (root_info[el->root_offset + k] != 0) el->ContinuousRoot(k, eval_);
-  cache_valid_ = false;
+  DiscreteStateChanged();
   return true;
 }
 
 void System::AfterEventRow() {
-  cache_valid_ = false;  // discrete state or start values change
+  DiscreteStateChanged();  // discrete state or start values change
   for (auto& el : elements_) {
     el->AfterEventRow();
     el->ClearFired();

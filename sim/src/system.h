@@ -160,14 +160,16 @@ class System {
   /// `loss`, and the power scale sum(|loss| + |source power|) over the elements as the result;
   /// for the peaks each element's torque (Element::PeakTorque, NaN for elements without one)
   /// into `tau`. One entry per element; only those of ReadingElements() are written, the
-  /// others are 0 (loss) and NaN (tau) from when the vectors were sized.
-  double StepEndReadings(std::vector<double>& loss, std::vector<double>& tau) const;
+  /// others are 0 (loss) and NaN (tau) from when the vectors were sized. `lowest` gets the
+  /// smallest dissipated power written (+infinity when none; a NaN power is not taken), which
+  /// the passivity monitor compares with its threshold instead of scanning `loss` again.
+  double StepEndReadings(std::vector<double>& loss, std::vector<double>& tau, double& lowest) const;
   /// Kinetic energy removed by the speed projections of all events so far (J, >= 0).
   double impulsive_loss() const { return impulsive_loss_; }
 
   void set_segment_start(double t) {
     t_segment_ = t;
-    cache_valid_ = false;
+    DiscreteStateChanged();
   }
   double segment_start() const { return t_segment_; }
   const std::string& error() const { return error_; }
@@ -192,15 +194,10 @@ class System {
   void BuildHydraulicNodes(const Network& network);
   /// Pressure derivatives of the hydraulic nodes, after the elements' Forces().
   bool HydraulicDerivatives(double* ydot);
+  /// The speeds at an event made consistent with the velocity-level constraints: the change of
+  /// least kinetic energy, solved per group of nodes that the constraints couple (the KKT matrix
+  /// is block diagonal over the groups).
   bool ProjectSpeeds(double* y);
-  /// The matrices of the last speed projections and their decompositions, most recent first
-  /// (an event iteration alternates between a few sets of active constraints).
-  struct Projection {
-    Eigen::MatrixXd matrix;
-    Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> decomposition;
-  };
-  static constexpr std::size_t kProjections = 4;
-  std::vector<Projection> projections_;
   /// The start state from node angles and speeds (indexed like start_unknown_): element
   /// states (InitStates), hydraulic start pressures when `pressures`, balanced massless nodes.
   void StartState(const Eigen::VectorXd& phi, const Eigen::VectorXd& w, double* y, bool pressures);
@@ -307,6 +304,19 @@ class System {
   static constexpr int kSmallGroup = 16;  ///< up to this size: our own elimination
   void ConstraintSignature(std::vector<int>& signature) const;
   bool SignatureMatches() const;  ///< the active constraints have the pattern of signature_
+  /// The active constraints were found to have the pattern of signature_ since the discrete
+  /// state last changed. An element's constraints are a function of its discrete state (its
+  /// mode), so between events Solve leaves out SignatureMatches (debug builds assert it).
+  /// Cleared wherever the discrete state may change (DiscreteStateChanged, a branch reassumed
+  /// in Evaluate); never set inside the event iteration (HandleEvent), where the modes change
+  /// between the solves.
+  bool pattern_current_ = false;
+  /// The discrete state may have changed: the evaluation cache and the constraints' pattern are
+  /// no longer known to be current.
+  void DiscreteStateChanged() {
+    cache_valid_ = false;
+    pattern_current_ = false;
+  }
   void BuildGroups();
   std::vector<Group> groups_;
   /// The free nodes with inertia in no constraint, with their inertia: acc = force / J.
