@@ -1923,89 +1923,67 @@ bool System::ProjectSpeeds(double* y) {
   for (int n : node_list) j_max = std::max(j_max, nodes_[n].J);
   // W: each node's inertia with 1e-9 of the largest added (a node without inertia stays determined).
   auto weight = [&](int n) { return nodes_[n].J + 1e-9 * (j_max + 1e-12); };
-  // The groups of nodes coupled by the rows (union-find on the local indices): the problem
-  // separates into one small KKT system per group. A row on ground nodes alone constrains no
-  // speed and belongs to no group.
-  std::vector<int> parent(static_cast<std::size_t>(nn));
-  std::iota(parent.begin(), parent.end(), 0);
-  auto find = [&](int i) {
-    while (parent[i] != i) i = parent[i] = parent[parent[i]];
-    return i;
-  };
-  std::vector<int> row_root(static_cast<std::size_t>(m), -1);
+  // The groups of nodes coupled by the rows: the problem separates into one small KKT system
+  // per group. A row on ground nodes alone constrains no speed and belongs to no group. (In a
+  // group the nodes and the rows keep their order.)
+  UnionFind coupled(nn);
+  std::vector<int> row_node(static_cast<std::size_t>(m), -1);  // a node of each row (local index)
   for (int j = 0; j < m; ++j)
     for (auto [n, c] : e.constraints[rows[j]].row) {
       if (nodes_[n].ground) continue;
-      const int r = find(local_[n]);
-      if (row_root[j] < 0) row_root[j] = r;
-      else parent[r] = find(row_root[j]);
+      if (row_node[j] < 0) row_node[j] = local_[n];
+      else coupled.Unite(local_[n], row_node[j]);
     }
-  std::vector<int> group_of(static_cast<std::size_t>(nn), -1), group_nodes, group_rows;
-  std::vector<int> node_begin, row_begin;
-  {
-    std::vector<int> root_group(static_cast<std::size_t>(nn), -1), node_count, row_count;
-    for (int i = 0; i < nn; ++i) {
-      const int r = find(i);
-      if (root_group[r] < 0) {
-        root_group[r] = static_cast<int>(node_count.size());
-        node_count.push_back(0);
-        row_count.push_back(0);
-      }
-      group_of[i] = root_group[r];
-      ++node_count[group_of[i]];
+  std::vector<std::vector<int>> group_nodes, group_rows;  // local node indices, indices into rows
+  std::vector<int> group_of_root(static_cast<std::size_t>(nn), -1);
+  auto group_of = [&](int i) {
+    int& g = group_of_root[coupled.Find(i)];
+    if (g < 0) {
+      g = static_cast<int>(group_nodes.size());
+      group_nodes.emplace_back();
+      group_rows.emplace_back();
     }
-    for (int j = 0; j < m; ++j)
-      if (row_root[j] >= 0) ++row_count[root_group[find(row_root[j])]];
-    const std::size_t groups = node_count.size();
-    node_begin.assign(groups + 1, 0);
-    row_begin.assign(groups + 1, 0);
-    for (std::size_t g = 0; g < groups; ++g) {
-      node_begin[g + 1] = node_begin[g] + node_count[g];
-      row_begin[g + 1] = row_begin[g] + row_count[g];
-    }
-    group_nodes.resize(static_cast<std::size_t>(nn));
-    group_rows.resize(static_cast<std::size_t>(row_begin[groups]));
-    std::vector<int> next_node(node_begin.begin(), node_begin.end() - 1);
-    std::vector<int> next_row(row_begin.begin(), row_begin.end() - 1);
-    for (int i = 0; i < nn; ++i) group_nodes[next_node[group_of[i]]++] = i;
-    for (int j = 0; j < m; ++j)
-      if (row_root[j] >= 0) group_rows[next_row[root_group[find(row_root[j])]]++] = j;
-  }
+    return g;
+  };
+  for (int i = 0; i < nn; ++i) group_nodes[group_of(i)].push_back(i);
+  for (int j = 0; j < m; ++j)
+    if (row_node[j] >= 0) group_rows[group_of(row_node[j])].push_back(j);
   std::vector<double> w_new(static_cast<std::size_t>(nn));
   std::vector<int> in_group(static_cast<std::size_t>(nn), -1);  // local index -> index in its group
   std::vector<double> coefficient;
-  for (std::size_t g = 0; g + 1 < node_begin.size(); ++g) {
-    const int gn = node_begin[g + 1] - node_begin[g], gm = row_begin[g + 1] - row_begin[g];
-    for (int a = 0; a < gn; ++a) in_group[group_nodes[node_begin[g] + a]] = a;
+  for (std::size_t g = 0; g < group_nodes.size(); ++g) {
+    const std::vector<int>& members = group_nodes[g];
+    const int gn = static_cast<int>(members.size()), gm = static_cast<int>(group_rows[g].size());
+    for (int a = 0; a < gn; ++a) in_group[members[a]] = a;
     if (gm == 1) {
       // One row g.w' = v (nearly every group: a gear or a stuck element between two nodes):
       // w' = w + W^-1 g lambda with lambda = (v - g.w) / (g^T W^-1 g).
-      const Constraint& c = e.constraints[rows[group_rows[row_begin[g]]]];
+      const Constraint& c = e.constraints[rows[group_rows[g][0]]];
       coefficient.assign(static_cast<std::size_t>(gn), 0.0);
       for (auto [n, coef] : c.row)
         if (!nodes_[n].ground) coefficient[in_group[local_[n]]] += coef;  // (a node twice: one entry)
       double gw = 0.0, gwg = 0.0;
       for (int a = 0; a < gn; ++a) {
-        const int n = node_list[group_nodes[node_begin[g] + a]];
+        const int n = node_list[members[a]];
         gw += coefficient[a] * y[nodes_[n].s_w];
         gwg += coefficient[a] * coefficient[a] / weight(n);
       }
       const double lambda = gwg > 0.0 ? (c.velocity_rhs - gw) / gwg : 0.0;  // (no row left: no change)
       for (int a = 0; a < gn; ++a) {
-        const int i = group_nodes[node_begin[g] + a], n = node_list[i];
-        w_new[i] = y[nodes_[n].s_w] + coefficient[a] * lambda / weight(n);
+        const int n = node_list[members[a]];
+        w_new[members[a]] = y[nodes_[n].s_w] + coefficient[a] * lambda / weight(n);
       }
       continue;
     }
     Eigen::MatrixXd K = Eigen::MatrixXd::Zero(gn + gm, gn + gm);
     Eigen::VectorXd b = Eigen::VectorXd::Zero(gn + gm);
     for (int a = 0; a < gn; ++a) {
-      const int n = node_list[group_nodes[node_begin[g] + a]];
+      const int n = node_list[members[a]];
       K(a, a) = weight(n);
       b[a] = weight(n) * y[nodes_[n].s_w];
     }
     for (int r = 0; r < gm; ++r) {
-      const Constraint& c = e.constraints[rows[group_rows[row_begin[g] + r]]];
+      const Constraint& c = e.constraints[rows[group_rows[g][r]]];
       b[gn + r] = c.velocity_rhs;
       for (auto [n, coef] : c.row)
         if (!nodes_[n].ground) {
@@ -2017,7 +1995,7 @@ bool System::ProjectSpeeds(double* y) {
     // Complete orthogonal decomposition: redundant constraints (several stuck elements on one
     // rigid shaft) give the minimum-norm multipliers and still the unique speeds.
     const Eigen::VectorXd x = Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd>(K).solve(b);
-    for (int a = 0; a < gn; ++a) w_new[group_nodes[node_begin[g] + a]] = x[a];
+    for (int a = 0; a < gn; ++a) w_new[members[a]] = x[a];
   }
   double kinetic_change = 0.0;
   for (int i = 0; i < nn; ++i) {
