@@ -260,10 +260,6 @@ struct CallbackData {
   System* system = nullptr;
   void* cvode = nullptr;
   ColoredJacobian* jacobian = nullptr;
-  /// The roots CVODE locates (the system's roots but the kinematic ones) when they are not all
-  /// of them; g_all holds every root function of the evaluation.
-  const std::vector<int>* cvode_roots = nullptr;
-  std::vector<double> g_all;
   std::string message;
   std::string element;
   std::string cvode_message;  ///< last message of CVODE's error handler
@@ -406,30 +402,6 @@ bool SignChanged(const std::vector<double>& before, const std::vector<double>& a
     }
   }
   return any;
-}
-
-int RootFunction(sunrealtype t, N_Vector y, sunrealtype* g, void* user) {
-  auto* data = static_cast<CallbackData*>(user);
-  try {
-    if (!data->system->Evaluate(t, N_VGetArrayPointer(y), nullptr)) {
-      data->message = data->system->error();
-      data->element = data->system->error_element();
-      return -1;
-    }
-    if (data->cvode_roots == nullptr) {
-      data->system->Roots(g);
-    } else {
-      data->system->Roots(data->g_all.data());
-      for (std::size_t i = 0; i < data->cvode_roots->size(); ++i) g[i] = data->g_all[(*data->cvode_roots)[i]];
-    }
-    return 0;
-  } catch (const std::exception& ex) {
-    data->message = std::string("root function: ") + ex.what();
-    return -1;
-  } catch (...) {
-    data->message = "root function: unknown exception";
-    return -1;
-  }
 }
 
 // The start of a run, shared by Simulator::Run and ComputeStartValues: the initial event (modes
@@ -873,35 +845,30 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
   } else if (sparse && !check(CVodeSetJacFn(cv.mem, SparseJacobian), "CVodeSetJacFn", t)) {
     return finish();
   }
-  // State events: CVODE locates the roots that need the whole model evaluated; the kinematic
-  // ones (System::KinematicRoot: a function of the node speeds and angles, no restart) are
-  // located here on CVODE's interpolant from the states alone, which saves the dozen model
-  // evaluations of each location (a jammed actuator's input speed reverses hundreds of times).
+  // State events are found here, not by CVODE: the root functions are compared at every step's
+  // end (and at the output points a long step passes) with their values at the last sample, and
+  // a crossing is located on CVODE's interpolant (locate_crossing). The model is evaluated at
+  // every step's end anyway, for the peaks, so the comparison costs no evaluation of its own;
+  // CVODE's root finding would evaluate the same point and scan every function after every
+  // step once more. The kinematic roots (System::KinematicRoot: functions of the node speeds and
+  // angles, no restart) are compared and located from the states alone, without evaluating the
+  // model (a jammed actuator's input speed reverses hundreds of times).
   const int n_roots = sys.NumRoots();
   std::vector<int> root_info(std::max(n_roots, 1)), directions(std::max(n_roots, 1));
   std::vector<char> kinematic(std::max(n_roots, 1), 0);
-  std::vector<int> cvode_roots;
+  int n_state_roots = 0;  // the roots that need the model evaluated
   for (int k = 0; k < n_roots; ++k) {
     kinematic[k] = sys.KinematicRoot(k) ? 1 : 0;
-    if (!kinematic[k]) cvode_roots.push_back(k);
+    if (!kinematic[k]) ++n_state_roots;
   }
-  const int n_cvode_roots = static_cast<int>(cvode_roots.size());
-  const bool has_kinematic_roots = n_cvode_roots < n_roots;
-  std::vector<int> cvode_info(std::max(n_cvode_roots, 1)), cvode_directions(std::max(n_cvode_roots, 1));
-  if (has_kinematic_roots) {
-    data.cvode_roots = &cvode_roots;
-    data.g_all.assign(n_roots, 0.0);
-  }
+  const bool has_kinematic_roots = n_state_roots < n_roots;
+  const bool has_state_roots = n_state_roots > 0;
+  long root_evaluations = 0;  // the model evaluated for its root functions (step ends, location)
+  // The directions follow the discrete state: set at the start and after every event.
   auto set_directions = [&] {
-    if (n_roots == 0) return true;
-    sys.RootDirections(directions.data());
-    if (n_cvode_roots == 0) return true;
-    for (int i = 0; i < n_cvode_roots; ++i) cvode_directions[i] = directions[cvode_roots[i]];
-    return check(CVodeSetRootDirection(cv.mem, cvode_directions.data()), "CVodeSetRootDirection", t);
+    if (n_roots > 0) sys.RootDirections(directions.data());
   };
-  if (n_cvode_roots > 0 && !check(CVodeRootInit(cv.mem, n_cvode_roots, RootFunction), "CVodeRootInit", t))
-    return finish();
-  if (!set_directions()) return finish();
+  set_directions();
 
   auto accumulate = [&] {
     long v = 0;
@@ -914,7 +881,8 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
     if (CVodeGetNumErrTestFails(cv.mem, &v) == CV_SUCCESS) s.error_test_failures += v;
     if (CVodeGetNumNonlinSolvConvFails(cv.mem, &v) == CV_SUCCESS)
       s.nonlinear_convergence_failures += v;
-    if (CVodeGetNumGEvals(cv.mem, &v) == CV_SUCCESS) s.root_evaluations += v;
+    s.root_evaluations += root_evaluations;
+    root_evaluations = 0;
     s.rhs_evaluations += colored.rhs_evaluations;  // the sparse Jacobian's own
     colored.rhs_evaluations = 0;
   };
@@ -981,7 +949,8 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
     ++report.statistics.reinitialisations;
     if (!check(CVodeReInit(cv.mem, te, cv.y), "CVodeReInit", te)) return false;
     stop_set = NAN;
-    return set_directions();
+    set_directions();
+    return true;
   };
 
   // One step at a time (CV_ONE_STEP): every step end is sampled; the output points it passed
@@ -1016,54 +985,35 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
     }
     return true;
   };
-  auto interpolate = [&](double tq) {
-    return check(CVodeGetDky(cv.mem, tq, 0, interpolated), "CVodeGetDky", tq) && evaluate_interpolated(tq);
-  };
-  // The earliest crossing in (ta, tb] of the roots flagged in root_info, on the interpolant, by
-  // bisection to CVODE's root tolerance; leaves `interpolated` and root_info at the root.
-  auto locate_root = [&](double ta, double tb, double& t_root) {
-    const double tol = 100.0 * std::numeric_limits<double>::epsilon() * std::max(std::abs(ta), std::abs(tb)) + 1e-15;
-    std::vector<int> flagged(root_info.begin(), root_info.end());
-    while (tb - ta > tol) {
-      const double tm = 0.5 * (ta + tb);
-      if (!interpolate(tm)) return false;
-      sys.Roots(g_probe.data());
-      std::vector<int> info(flagged.size(), 0);
-      if (SignChanged(g_prev, g_probe, directions, info, kinematic, 0)) {
-        tb = tm;
-        flagged = info;
-      } else {
-        ta = tm;
-      }
-    }
-    t_root = tb;
-    root_info = flagged;
-    return interpolate(tb);
-  };
-  // The earliest crossing of a kinematic root in (ta, tb], on the interpolant, from the states
-  // alone: the Illinois variant of regula falsi that CVODE uses for its own roots (the secant
-  // point of the root that crosses first, the weight of a retained end halved or doubled), to
-  // the same tolerance as locate_root. On entry g_prev holds the roots at ta and g_probe at tb,
-  // and kinematic_info the roots crossing in (ta, tb]; on return `interpolated` is the state at
-  // t_root and kinematic_info the roots that cross there.
-  std::vector<int> kinematic_info(root_info.size(), 0), probe_info(root_info.size(), 0);
+  // The earliest crossing in (ta, tb] of the roots of one kind (`which`: 1 the kinematic ones,
+  // 0 the others), on the interpolant of the last step, by the Illinois variant of regula falsi
+  // that CVODE uses for its own roots: the secant point of the root whose secant crosses first,
+  // the weight of an end kept twice in a row halved or doubled; to CVODE's time tolerance of
+  // 100 units of roundoff. On entry g_prev holds the roots at ta, g_tb those at tb and `info`
+  // the roots of that kind that cross in (ta, tb]. On return `interpolated` is the state at
+  // t_root (evaluated there for the roots that need the model) and `info` the roots that cross
+  // there. The kinematic roots are probed from the states alone (System::KinematicRoots), the
+  // others on the evaluated model.
+  std::vector<int> kinematic_info(root_info.size(), 0), probe_info(root_info.size(), 0),
+      point_info(root_info.size(), 0);
   std::vector<double> g_low, g_high;
-  auto locate_kinematic_root = [&](double ta, double tb, double& t_root) {
+  auto locate_crossing = [&](double ta, double tb, char which, std::vector<int>& info,
+                             const std::vector<double>& g_tb, double& t_root) {
     const double tol = 100.0 * std::numeric_limits<double>::epsilon() * std::max(std::abs(ta), std::abs(tb)) + 1e-15;
     g_low = g_prev;
-    g_high = g_probe;
+    g_high = g_tb;
     // The root whose secant point comes first: the largest |g_high / (g_high - g_low)|.
-    auto first = [&](const std::vector<int>& info) {
+    auto first = [&](const std::vector<int>& flags) {
       int best = -1;
       double most = -1.0;
       for (int i = 0; i < n_roots; ++i)
-        if (info[i] != 0) {
+        if (flags[i] != 0) {
           const double fraction = std::abs(g_high[i] / (g_high[i] - g_low[i]));
           if (fraction > most) most = fraction, best = i;
         }
       return best;
     };
-    int lead = first(kinematic_info);
+    int lead = first(info);
     double alpha = 1.0;
     int side = 0, side_before = -1;
     // (A root exactly zero at tb is at tb.)
@@ -1075,24 +1025,31 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
       if (!(std::abs(tm - ta) >= 0.5 * tol)) tm = ta + inward * (tb - ta);
       if (!(std::abs(tb - tm) >= 0.5 * tol)) tm = tb - inward * (tb - ta);
       if (!check(CVodeGetDky(cv.mem, tm, 0, interpolated), "CVodeGetDky", tm)) return false;
-      sys.KinematicRoots(tm, N_VGetArrayPointer(interpolated), g_probe.data());
+      if (which == 1) {
+        sys.KinematicRoots(tm, N_VGetArrayPointer(interpolated), g_probe.data());
+      } else {
+        if (!evaluate_interpolated(tm)) return false;
+        sys.Roots(g_probe.data());
+        ++root_evaluations;
+      }
       side_before = side;
-      if (SignChanged(g_low, g_probe, directions, probe_info, kinematic, 1)) {
+      if (SignChanged(g_low, g_probe, directions, probe_info, kinematic, which)) {
         tb = tm;  // a crossing in (ta, tm]
         g_high.swap(g_probe);
-        kinematic_info.swap(probe_info);
-        lead = first(kinematic_info);
+        info.swap(probe_info);
+        lead = first(info);
         side = 1;
       } else {
         ta = tm;  // none there: the crossing of (ta, tb] lies in (tm, tb]
         g_low.swap(g_probe);
-        SignChanged(g_low, g_high, directions, kinematic_info, kinematic, 1);
-        lead = first(kinematic_info);
+        SignChanged(g_low, g_high, directions, info, kinematic, which);
+        lead = first(info);
         side = 2;
       }
     }
     t_root = tb;
-    return check(CVodeGetDky(cv.mem, tb, 0, interpolated), "CVodeGetDky", tb);
+    if (!check(CVodeGetDky(cv.mem, tb, 0, interpolated), "CVodeGetDky", tb)) return false;
+    return which == 1 || evaluate_interpolated(tb);
   };
   struct StepEnd {
     bool valid = false;
@@ -1124,7 +1081,7 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
     int flag = CV_SUCCESS;
     const bool resumed = pending.active;
     if (resumed) {
-      // The rest of the last step, after the kinematic root handled at t.
+      // The rest of the last step, after a root inside it handled at t.
       t_ret = pending.t;
       flag = pending.flag;
       std::copy(pending.y.begin(), pending.y.end(), N_VGetArrayPointer(cv.y));
@@ -1137,30 +1094,74 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
         break;
       }
     }
-    // CVODE locates a root that sits at the restart itself (a normal force rising from exactly
-    // 0 at the start) within its root tolerance, which may put it before the restart time
-    // (t = -1e-35 at a start at 0): such a root is at the restart, and no event may lie before
-    // it (the time events of the sources would otherwise be scheduled in the past).
-    if (flag == CV_ROOT_RETURN && t_ret < t) t_ret = t;
-    // A kinematic root in (t, t_ret]: handled first, at its own time; the return waits.
-    bool kinematic_root = false;
-    if (has_kinematic_roots && t_ret > t) {
-      sys.KinematicRoots(t_ret, N_VGetArrayPointer(cv.y), g_probe.data());
-      if (SignChanged(g_prev, g_probe, directions, kinematic_info, kinematic, 1)) {
-        double t_root = t_ret;
-        pending.y.assign(N_VGetArrayPointer(cv.y), N_VGetArrayPointer(cv.y) + n);
-        if (!locate_kinematic_root(t, t_ret, t_root)) {
+    // The root functions at the return: every one where the model is evaluated at the step's
+    // end anyway (end.g; the peaks read that evaluation), else the kinematic ones.
+    const bool step_moved = n_roots > 0 && t_ret > t;
+    if (step_moved) {
+      if (has_state_roots) {
+        if (!sys.Evaluate(t_ret, N_VGetArrayPointer(cv.y), nullptr)) {
+          fail(SimulationStatus::kModelError, sys.error(), t_ret);
+          report.element = sys.error_element();
           record_failure_state();
           break;
         }
-        pending.active = true;
-        pending.t = t_ret;
-        pending.flag = flag;
+        sys.Roots(end.g.data());
+        ++root_evaluations;
+      } else {
+        sys.KinematicRoots(t_ret, N_VGetArrayPointer(cv.y), end.g.data());
+      }
+    }
+    // The rest of CVODE's step waits while a root inside it is handled first (CVODE itself
+    // stays at the step's end); cv.y holds that end until the first root inside is located.
+    auto hold_step_end = [&] {
+      if (pending.active) return;
+      pending.y.assign(N_VGetArrayPointer(cv.y), N_VGetArrayPointer(cv.y) + n);
+      pending.active = true;
+      pending.t = t_ret;
+      pending.flag = flag;
+    };
+    // A kinematic root in (t, t_ret]: located from the states alone.
+    bool kinematic_root = false, state_root = false;
+    if (step_moved && has_kinematic_roots && SignChanged(g_prev, end.g, directions, kinematic_info, kinematic, 1)) {
+      double t_root = t_ret;
+      if (!locate_crossing(g_prev_time, t_ret, 1, kinematic_info, end.g, t_root)) {
+        record_failure_state();
+        break;
+      }
+      hold_step_end();
+      std::copy(N_VGetArrayPointer(interpolated), N_VGetArrayPointer(interpolated) + n, N_VGetArrayPointer(cv.y));
+      t_ret = t_root;
+      flag = CV_SUCCESS;  // this return is the root's; CVODE's own waits
+      kinematic_root = true;
+      // The other roots at the kinematic one, to look for an earlier crossing of theirs.
+      if (has_state_roots) {
+        if (!sys.Evaluate(t_ret, N_VGetArrayPointer(cv.y), nullptr)) {
+          fail(SimulationStatus::kModelError, sys.error(), t_ret);
+          break;
+        }
+        sys.Roots(end.g.data());
+        ++root_evaluations;
+      }
+    }
+    // A root that needs the model in (g_prev_time, t_ret]: located on the evaluated model. One at
+    // the kinematic root's very time is handled with it.
+    if (step_moved && has_state_roots && SignChanged(g_prev, end.g, directions, root_info, kinematic, 0)) {
+      double t_root = t_ret;
+      if (!locate_crossing(g_prev_time, t_ret, 0, root_info, end.g, t_root)) {
+        record_failure_state();
+        break;
+      }
+      if (t_root < t_ret) {
+        hold_step_end();
         std::copy(N_VGetArrayPointer(interpolated), N_VGetArrayPointer(interpolated) + n, N_VGetArrayPointer(cv.y));
         t_ret = t_root;
-        flag = CV_SUCCESS;  // this return is the kinematic root's; CVODE's own waits
-        kinematic_root = true;
+        flag = CV_SUCCESS;
+      } else if (kinematic_root) {
+        for (int i = 0; i < n_roots; ++i)
+          if (kinematic_info[i] != 0) root_info[i] = kinematic_info[i];
       }
+      kinematic_root = false;
+      state_root = true;
     }
     // The output points the step passed (those at t_ret itself are written below), evaluated on
     // the interpolant for a sink that reads the rows, for the energy balance, and in a step
@@ -1170,19 +1171,16 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
     // interpolant and handled as a root of the step. So every pair of crossings more than an
     // output interval apart is seen, and the check does not depend on whether the rows are
     // read. The peaks and the passivity monitor do not read the output points.
-    // When the output points are evaluated and CVODE's root functions left the elements
-    // evaluated at the step's end, the step end's readings are taken now: the output points'
-    // evaluations replace that one, and the step end then needs no second evaluation of the
-    // same point unless an event or a row that reads the values needs the elements there.
+    // When the output points are evaluated, the step end's readings are taken first from its
+    // evaluation above: the output points' evaluations replace that one, and the step end then
+    // needs no second evaluation of the same point unless an event or a row that reads the
+    // values needs the elements there.
     const bool check_roots = n_roots > 0 && t_ret - t > dt;
     const bool evaluate_points = evaluate_outputs || check_roots;
-    end.valid = flag == CV_SUCCESS && !kinematic_root && evaluate_points && next_output() < t_ret - eps_t &&
-                sys.IsEvaluatedAt(t_ret, N_VGetArrayPointer(cv.y));
-    if (end.valid) {
-      read(end.readings, SampleKind::kStepEnd);
-      if (n_roots > 0) sys.Roots(end.g.data());
-    }
-    bool failed = false, hidden_root = false;
+    end.valid = flag == CV_SUCCESS && !kinematic_root && !state_root && evaluate_points &&
+                next_output() < t_ret - eps_t && sys.IsEvaluatedAt(t_ret, N_VGetArrayPointer(cv.y));
+    if (end.valid) read(end.readings, SampleKind::kStepEnd);
+    bool failed = false;
     while (next_output() < t_ret - eps_t) {
       const double t_out = next_output();
       HIGHLIFT_CHECK(t_out < t_end + eps_t && (k == 1 || t0 + static_cast<double>(k - 1) * dt < t_end - eps_t),
@@ -1204,17 +1202,19 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
       }
       if (check_roots) {
         if (!roots_done) sys.Roots(g_out.data());
-        if (SignChanged(g_prev, g_out, directions, root_info, kinematic, 0)) {
+        if (SignChanged(g_prev, g_out, directions, point_info, kinematic, 0)) {
           double t_root = t_out;
-          if (!locate_root(g_prev_time, t_out, t_root)) {
+          if (!locate_crossing(g_prev_time, t_out, 0, point_info, g_out, t_root)) {
             failed = true;
             break;
           }
+          hold_step_end();
           std::copy(N_VGetArrayPointer(interpolated), N_VGetArrayPointer(interpolated) + n, N_VGetArrayPointer(cv.y));
+          root_info.swap(point_info);
           t_ret = t_root;
-          hidden_root = true;
-          kinematic_root = false;  // the integrator restarts at the hidden root, before it
-          pending.active = false;
+          flag = CV_SUCCESS;
+          state_root = true;
+          kinematic_root = false;
           break;
         }
         g_prev.swap(g_out);
@@ -1242,10 +1242,11 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
     report.time = t;
     // The step end is sampled from the readings taken above when it has them; the elements are
     // then evaluated there again (the same values) only for an event or a row that reads them.
-    const bool from_readings = end.valid && !hidden_root;
+    const bool from_readings = end.valid;
     const bool on_output = std::abs(t - next_output()) <= eps_t;
     const bool time_event = event_ahead && std::abs(t - t_event) <= eps_t && t < t_end - eps_t;
-    const bool event = flag == CV_ROOT_RETURN || hidden_root || kinematic_root || time_event;
+    const bool root = state_root || kinematic_root;
+    const bool event = root || time_event;
     const SampleKind end_kind = event ? SampleKind::kKink : SampleKind::kStepEnd;
     if (event) t_event_current = false;
     if (from_readings) record(t, end.readings, end_kind);
@@ -1255,28 +1256,8 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
       break;
     }
     if (!from_readings) sample(t, end_kind);
-    if (flag == CV_ROOT_RETURN || hidden_root || kinematic_root) {
-      if (kinematic_root) {
-        root_info = kinematic_info;
-      } else if (!hidden_root) {
-        if (!check(CVodeGetRootInfo(cv.mem, cvode_info.data()), "CVodeGetRootInfo", t)) break;
-        std::fill(root_info.begin(), root_info.end(), 0);
-        bool any = false;
-        for (int i = 0; i < n_cvode_roots; ++i) {
-          root_info[cvode_roots[i]] = cvode_info[i];
-          any = any || cvode_info[i] != 0;
-        }
-        // CVODE flags a root only where g_lo * g_hi < 0; that product underflows to -0 when
-        // both are tiny (a normal force reported as -DBL_MIN at rest that rises to 1e-16 at the
-        // located time), and CVODE returns a root with no root flagged. The sign changes since
-        // the last sample are the roots then; without this the rise was lost and the brake
-        // stayed free for the rest of the run.
-        if (!any) {
-          std::vector<double> g_now(std::max(n_roots, 1), 1.0);
-          sys.Roots(g_now.data());
-          SignChanged(g_prev, g_now, directions, root_info, kinematic, 0);
-        }
-      }
+    if (root) {
+      if (kinematic_root) root_info = kinematic_info;
       std::string what = "root";
       for (const auto& el : elements)
         for (int r = 0; r < el->NumRoots(); ++r)
@@ -1284,7 +1265,8 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
             what = el->id + (el->RootRestarts(r) ? " root " + std::to_string(r) : " contact");
       if (!sys.NeedsRestart(root_info.data())) {
         // A kink (backlash contact, spring breakpoint, a regularised gear reversing): the
-        // right-hand side stays continuous, so the integrator continues without a restart.
+        // right-hand side stays continuous, so the integrator continues without a restart, and
+        // the rest of its step (held above) returns next.
         if (!sys.HandleContinuousRoots(t, N_VGetArrayPointer(cv.y), root_info.data())) {
           fail(SimulationStatus::kModelError, sys.error(), t);
           break;
@@ -1302,14 +1284,8 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
                "more than " + std::to_string(options.max_events) + " events (chattering?)", t);
           break;
         }
-        // CVODE stepped beyond a hidden root: it restarts from the root.
-        if (hidden_root) {
-          accumulate();
-          ++report.statistics.reinitialisations;
-          pending.active = false;
-          if (!check(CVodeReInit(cv.mem, t, cv.y), "CVodeReInit", t)) break;
-          stop_set = NAN;
-        }
+        // A time event at the kink's very time (the step's stop time) restarts the integrator.
+        if (time_event && !handle_event(t, "time", "input", nullptr)) break;
       } else if (!handle_event(t, "state", what, root_info.data())) {
         break;
       }
@@ -1322,15 +1298,13 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
       ++k;
       steps_since_output = 0;
     }
-    if (n_roots > 0 && from_readings && !event) {  // the step end's, read above
+    if (n_roots > 0 && step_moved && !event) {  // the step end's, taken above
       g_prev.swap(end.g);
       g_prev_time = t;
-    } else if (n_roots > 0 && kinematic_root && pending.active && pending.flag != CV_ROOT_RETURN &&
-               (next_output() >= pending.t - eps_t || pending.t - t <= dt)) {
-      // After a kink at a kinematic root inside a step, the rest of the step returns next with
-      // no root check at an output point on the way: only the kinematic roots are compared
-      // there (the others are the step end's), and those are functions of the states
-      // (System::KinematicRoots).
+    } else if (n_roots > 0 && kinematic_root && !time_event) {
+      // After a kink at a kinematic root the others are those taken at it above (the kink keeps
+      // the right-hand side continuous) and the kinematic ones follow the new discrete state.
+      if (has_state_roots) g_prev.swap(end.g);
       sys.KinematicRoots(t, N_VGetArrayPointer(cv.y), g_prev.data());
       g_prev_time = t;
     } else if (n_roots > 0) {  // the root functions where the next step starts (cached evaluation)
@@ -1339,6 +1313,7 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
         break;
       }
       sys.Roots(g_prev.data());
+      ++root_evaluations;
       g_prev_time = t;
     }
     if (progress != nullptr) {

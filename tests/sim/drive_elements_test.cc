@@ -279,7 +279,10 @@ TEST(PDU, BrakesReleaseWhenCommandedAgain) {
   EXPECT_NEAR(r.At("pdu.phi", 0.5), held, 1e-12);  // held until the new command
   EXPECT_DOUBLE_EQ(r.Col("pdu.brake").back(), 0.0);
   EXPECT_EQ(r.Col("pdu.mode").back(), 2) << "free";
-  EXPECT_NEAR(r.Col("pdu.w").back(), -5.0, 1e-6);
+  // The speed loop's tail: w approaches -5 by a factor of about 10 every 0.05 s (1e-4 short at
+  // 0.8 s, 1e-6 at 0.9 s), the integration error at rtol 1e-8 being some 1e-9.
+  EXPECT_NEAR(r.Col("pdu.w").back(), -5.0, 1e-5);
+  EXPECT_LT(std::abs(r.Col("pdu.w").back() + 5.0), 0.2 * std::abs(r.At("pdu.w", 0.85) + 5.0));
   // The brake applied at the instant w_set fell to w_hold: w_set = 5*exp(-(t - t0)/T_w) after
   // the ramp, so it is applied once and released once.
   int applications = 0, releases = 0;

@@ -11,8 +11,10 @@
 //
 // Events. Friction stick/slip (the MSL state machine of PartialFriction, Brake, Clutch,
 // BearingFriction, OneWayClutch and LossyGear), backlash contact and the engagement of brakes
-// and clutches are state events located by CVODE's root finding; steps, ramp corners and pulse
-// edges of the sources are time events hit exactly with CVodeSetStopTime. After every event
+// and clutches are state events: their root functions are compared at every step end (the model
+// is evaluated there for the peaks anyway) and a crossing is located on CVODE's interpolant by
+// the Illinois method CVODE uses for its own roots; steps, ramp corners and pulse edges of the
+// sources are time events hit exactly with CVodeSetStopTime. After every event
 // the modes are iterated to a consistent set (the worst violator of a stuck set is released
 // first), the speeds are projected onto the active constraints, and CVODE is re-initialised.
 #pragma once
