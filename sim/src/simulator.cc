@@ -1097,28 +1097,38 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
     // The root functions at the return: every one where the model is evaluated at the step's
     // end anyway (end.g; the peaks read that evaluation), else the kinematic ones.
     const bool step_moved = n_roots > 0 && t_ret > t;
+    // Every root function at (t_ret, cv.y), from the model evaluated there.
+    auto evaluate_roots = [&] {
+      if (!sys.Evaluate(t_ret, N_VGetArrayPointer(cv.y), nullptr)) {
+        fail(SimulationStatus::kModelError, sys.error(), t_ret);
+        report.element = sys.error_element();
+        record_failure_state();
+        return false;
+      }
+      sys.Roots(end.g.data());
+      ++root_evaluations;
+      return true;
+    };
     if (step_moved) {
       if (has_state_roots) {
-        if (!sys.Evaluate(t_ret, N_VGetArrayPointer(cv.y), nullptr)) {
-          fail(SimulationStatus::kModelError, sys.error(), t_ret);
-          report.element = sys.error_element();
-          record_failure_state();
-          break;
-        }
-        sys.Roots(end.g.data());
-        ++root_evaluations;
+        if (!evaluate_roots()) break;
       } else {
         sys.KinematicRoots(t_ret, N_VGetArrayPointer(cv.y), end.g.data());
       }
     }
-    // The rest of CVODE's step waits while a root inside it is handled first (CVODE itself
-    // stays at the step's end); cv.y holds that end until the first root inside is located.
-    auto hold_step_end = [&] {
-      if (pending.active) return;
-      pending.y.assign(N_VGetArrayPointer(cv.y), N_VGetArrayPointer(cv.y) + n);
-      pending.active = true;
-      pending.t = t_ret;
-      pending.flag = flag;
+    // The return moves back to a root inside the step (the state at it is in `interpolated`).
+    // The rest of CVODE's step waits while the root is handled first (CVODE itself stays at the
+    // step's end); cv.y holds that end until the first root inside is located.
+    auto move_to_root = [&](double t_root) {
+      if (!pending.active) {
+        pending.y.assign(N_VGetArrayPointer(cv.y), N_VGetArrayPointer(cv.y) + n);
+        pending.active = true;
+        pending.t = t_ret;
+        pending.flag = flag;
+      }
+      std::copy(N_VGetArrayPointer(interpolated), N_VGetArrayPointer(interpolated) + n, N_VGetArrayPointer(cv.y));
+      t_ret = t_root;
+      flag = CV_SUCCESS;  // this return is the root's; CVODE's own waits
     };
     // A kinematic root in (t, t_ret]: located from the states alone.
     bool kinematic_root = false, state_root = false;
@@ -1128,20 +1138,10 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
         record_failure_state();
         break;
       }
-      hold_step_end();
-      std::copy(N_VGetArrayPointer(interpolated), N_VGetArrayPointer(interpolated) + n, N_VGetArrayPointer(cv.y));
-      t_ret = t_root;
-      flag = CV_SUCCESS;  // this return is the root's; CVODE's own waits
+      move_to_root(t_root);
       kinematic_root = true;
       // The other roots at the kinematic one, to look for an earlier crossing of theirs.
-      if (has_state_roots) {
-        if (!sys.Evaluate(t_ret, N_VGetArrayPointer(cv.y), nullptr)) {
-          fail(SimulationStatus::kModelError, sys.error(), t_ret);
-          break;
-        }
-        sys.Roots(end.g.data());
-        ++root_evaluations;
-      }
+      if (has_state_roots && !evaluate_roots()) break;
     }
     // A root that needs the model in (g_prev_time, t_ret]: located on the evaluated model. One at
     // the kinematic root's very time is handled with it.
@@ -1152,10 +1152,7 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
         break;
       }
       if (t_root < t_ret) {
-        hold_step_end();
-        std::copy(N_VGetArrayPointer(interpolated), N_VGetArrayPointer(interpolated) + n, N_VGetArrayPointer(cv.y));
-        t_ret = t_root;
-        flag = CV_SUCCESS;
+        move_to_root(t_root);
       } else if (kinematic_root) {
         for (int i = 0; i < n_roots; ++i)
           if (kinematic_info[i] != 0) root_info[i] = kinematic_info[i];
@@ -1208,11 +1205,8 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
             failed = true;
             break;
           }
-          hold_step_end();
-          std::copy(N_VGetArrayPointer(interpolated), N_VGetArrayPointer(interpolated) + n, N_VGetArrayPointer(cv.y));
+          move_to_root(t_root);
           root_info.swap(point_info);
-          t_ret = t_root;
-          flag = CV_SUCCESS;
           state_root = true;
           kinematic_root = false;
           break;
