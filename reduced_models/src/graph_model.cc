@@ -21,8 +21,11 @@ bool IsNearPort(const Component& c, const std::string& port) {
 }  // namespace
 
 std::optional<ParameterView> FindParameter(const Component& c, std::string_view name) {
-  auto it = c.parameters.find(std::string(name));
-  if (it != c.parameters.end()) return ParameterView{it->second.nominal, it->second.domain, it->second.provenance};
+  // A scan that compares the lengths first: a component has a few dozen parameters at most, and
+  // the map's own find wanted a std::string key (an allocation for most names) and a full
+  // comparison at every level.
+  for (const auto& [key, p] : c.parameters)
+    if (key.size() == name.size() && key == name) return ParameterView{p.nominal, p.domain, p.provenance};
   const ComponentTypeSpec* type = FindComponentType(c.type);
   const ParameterSpec* spec = type ? type->FindParameter(name) : nullptr;
   if (!spec) return std::nullopt;

@@ -6,7 +6,9 @@
 #pragma once
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <string_view>
 
@@ -31,12 +33,24 @@ struct Interval {
   bool contains(double v) const { return lo <= v && v <= hi; }
 };
 
+/// The next double above x: std::nextafter(x, +infinity), bit for bit, without the library call
+/// (17 % of `highlift peak` went into it). IEEE doubles of one sign are
+/// ordered as their bit patterns, so one step is one unit in the last place of the pattern.
+inline double NextUp(double x) {
+  if (std::isnan(x) || x == std::numeric_limits<double>::infinity()) return x;
+  if (x == 0.0) return std::numeric_limits<double>::denorm_min();  // from +0 and from -0
+  const auto bits = std::bit_cast<std::uint64_t>(x);
+  return std::bit_cast<double>(x > 0.0 ? bits + 1 : bits - 1);
+}
+/// The next double below x: std::nextafter(x, -infinity), bit for bit.
+inline double NextDown(double x) { return std::isnan(x) ? x : -NextUp(-x); }
+
 inline double Down(double x, int ulps = 1) {
-  for (int i = 0; i < ulps; ++i) x = std::nextafter(x, -std::numeric_limits<double>::infinity());
+  for (int i = 0; i < ulps; ++i) x = NextDown(x);
   return x;
 }
 inline double Up(double x, int ulps = 1) {
-  for (int i = 0; i < ulps; ++i) x = std::nextafter(x, std::numeric_limits<double>::infinity());
+  for (int i = 0; i < ulps; ++i) x = NextUp(x);
   return x;
 }
 inline Interval Outward(double lo, double hi, int ulps = 1) { return {Down(lo, ulps), Up(hi, ulps)}; }
