@@ -34,8 +34,8 @@ struct Interval {
 };
 
 /// The next double above x: std::nextafter(x, +infinity), bit for bit, without the library call
-/// (17 % of `highlift peak` went into it). IEEE doubles of one sign are
-/// ordered as their bit patterns, so one step is one unit in the last place of the pattern.
+/// (17 % of `highlift peak` went into it). IEEE doubles of one sign are ordered as their bit
+/// patterns, so one step is one unit in the last place of the pattern.
 inline double NextUp(double x) {
   if (std::isnan(x) || x == std::numeric_limits<double>::infinity()) return x;
   if (x == 0.0) return std::numeric_limits<double>::denorm_min();  // from +0 and from -0
