@@ -23,6 +23,7 @@ namespace highlift::sim::detail {
 /// tau > 0 opposes forward rotation: the shaft feels -tau, the support +tau.
 class ShaftBrake : public msl::Friction {
  public:
+  bool ReadsNodeAngles() const override { return false; }
   /// Throws InputError (naming `id` and `type`) unless 0 <= tauB_max <= tauB_lim.
   ShaftBrake(const std::string& id, const std::string& type, double tauB_max, double tauB_lim);
   explicit ShaftBrake(const NetworkElement& e);
@@ -63,6 +64,7 @@ class ShaftBrake : public msl::Friction {
 /// one node (as MSL BearingFriction). With J > 0 it is the LossyInertia (J on flange_a).
 class StribeckFriction final : public msl::Friction {
  public:
+  bool ReadsNodeAngles() const override { return false; }
   StribeckFriction(const NetworkElement& e, bool with_inertia);
 
   std::vector<std::vector<std::string>> RigidFlanges() const override;
@@ -190,6 +192,7 @@ class BrakeActuation : public Element {
 /// The spring of figure 4 with the output y of equation (2); tau = tau_c(phi_rel) + d*w_rel.
 class NonlinearSpring : public msl::Compliant {
  public:
+  bool ReadsNodeAngles() const override { return false; }
   explicit NonlinearSpring(const NetworkElement& e);
   /// Spring torque tau_c(phi_rel): c1, then c2 from tau1, then c3 from tau2 (by direction).
   double TauC(double phi_rel) const;

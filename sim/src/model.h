@@ -300,6 +300,11 @@ class Element {
     other = -1;
     return 0.0;
   }
+  /// Whether the element's laws (Forces, Constraints, AfterSolve, Derivatives, Reassume,
+  /// Signals and SignalDerivatives) read the angles e.phi of its nodes. Only its outputs and
+  /// start values may read them when false: the sparse Jacobian's colouring then leaves the
+  /// angles of its nodes out (System::ModeJacobianPattern). The default claims nothing.
+  virtual bool ReadsNodeAngles() const { return true; }
   /// Nodes this element may couple by a constraint (for the KKT grouping and bandwidth).
   virtual std::vector<int> CoupledNodes() const { return {}; }
   /// Nodes this element reads or acts on.

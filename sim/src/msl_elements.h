@@ -59,6 +59,7 @@ class Fixed : public Element {
 
 class Inertia : public Element {
  public:
+  bool ReadsNodeAngles() const override { return false; }
   explicit Inertia(const NetworkElement& e) : J(Param(e, "J")) {
     if (Given(e, "phi_start")) phi_start = Param(e, "phi_start");
     if (Given(e, "w_start")) w_start = Param(e, "w_start");
@@ -219,6 +220,7 @@ class Compliant : public TwoFlange {
 
 class Spring : public Compliant {
  public:
+  bool ReadsNodeAngles() const override { return false; }
   explicit Spring(const NetworkElement& e)
       : Compliant(e), c(Param(e, "c")), phi_rel0(Param(e, "phi_rel0")) {}
   double Tau(double phi_rel, double) const override { return c * (phi_rel - phi_rel0); }
@@ -232,6 +234,7 @@ class Spring : public Compliant {
 
 class Damper : public Compliant {
  public:
+  bool ReadsNodeAngles() const override { return false; }
   explicit Damper(const NetworkElement& e) : Compliant(e), d(Param(e, "d")) {}
   double Tau(double, double w_rel) const override { return d * w_rel; }
   double d;
@@ -239,6 +242,7 @@ class Damper : public Compliant {
 
 class SpringDamper : public Compliant {
  public:
+  bool ReadsNodeAngles() const override { return false; }
   explicit SpringDamper(const NetworkElement& e)
       : Compliant(e), c(Param(e, "c")), d(Param(e, "d")), phi_rel0(Param(e, "phi_rel0")) {}
   double Tau(double phi_rel, double w_rel) const final {
@@ -369,6 +373,7 @@ class GearBase : public Element {
 
 class IdealGear : public GearBase {
  public:
+  bool ReadsNodeAngles() const override { return false; }
   explicit IdealGear(const NetworkElement& e) : GearBase(e, "IdealGear") {}
   void Constraints(Eval& e) override {
     Constraint& c = e.NewConstraint(index);
@@ -1153,6 +1158,7 @@ class TorqueSource : public Element {
 
 class TorqueInput : public TorqueSource {
  public:
+  bool ReadsNodeAngles() const override { return false; }
   std::vector<std::string> SignalInputs() const override { return {"tau"}; }
   void BindSignals(const std::function<int(const std::string&)>& signal_of) override {
     u = signal_of("tau");

@@ -218,6 +218,7 @@ struct ColoredJacobian {
   double relative_tolerance = 1e-6;      ///< the run's (scales the increments of states at rest)
   N_Vector work_y = nullptr, work_f = nullptr, weights = nullptr;
   long rhs_evaluations = 0;
+  bool mode_colouring = true;  ///< SimulationOptions::mode_colouring
   /// The KLU solver and its matrix, re-pivoted after a failed refactorisation (SparseJacobian).
   SUNLinearSolver klu = nullptr;
   SUNMatrix matrix = nullptr;
@@ -230,24 +231,8 @@ struct ColoredJacobian {
   void Build(const std::vector<int>& pattern_colptr, const std::vector<int>& pattern_rows) {
     colptr = pattern_colptr;
     rows = pattern_rows;
-    const int n = static_cast<int>(colptr.size()) - 1;
-    // The pattern is structurally symmetric (cliques), so the columns with an entry in row i
-    // are the rows of column i.
-    std::vector<int> color(n, -1), mark;
-    for (int j = 0; j < n; ++j) {
-      mark.assign(colors.size() + 1, 0);
-      for (int k = colptr[j]; k < colptr[j + 1]; ++k) {
-        const int i = rows[k];
-        for (int m = colptr[i]; m < colptr[i + 1]; ++m)
-          if (color[rows[m]] >= 0) mark[color[rows[m]]] = 1;
-      }
-      int c = 0;
-      while (mark[c]) ++c;
-      color[j] = c;
-      if (c == static_cast<int>(colors.size())) colors.emplace_back();
-      colors[c].push_back(j);
-    }
-    increment.assign(n, 0.0);
+    colors = detail::ColourColumns(colptr, rows);
+    increment.assign(colptr.size() - 1, 0.0);
   }
   ~ColoredJacobian() {
     if (work_y != nullptr) N_VDestroy(work_y);
@@ -330,27 +315,41 @@ int SparseJacobian(sunrealtype t, N_Vector y, N_Vector fy, SUNMatrix J, void* us
     for (int j = 0; j <= n; ++j) colptr[j] = jac.colptr[j];
     for (std::size_t k = 0; k < jac.rows.size(); ++k) rowind[k] = jac.rows[k];
     std::copy(yv, yv + n, yp);
-    for (const auto& group : jac.colors) {
-      for (int j : group) {
-        const double inc =
-            std::max({srur * std::abs(yv[j]), srur / (jac.relative_tolerance * wv[j]), min_inc / wv[j]});
-        // The increment that is actually represented in floating point.
-        yp[j] = yv[j] + inc;
-        jac.increment[j] = yp[j] - yv[j];
-      }
-      ++jac.rhs_evaluations;
-      if (!data->system->Evaluate(t, yp, fp)) {
-        data->message = data->system->error();
-        data->element = data->system->error_element();
-        return 1;  // recoverable: CVODE retries with a smaller step
-      }
-      for (int j : group) {
-        const double inv = 1.0 / jac.increment[j];
-        for (int k = jac.colptr[j]; k < jac.colptr[j + 1]; ++k) {
-          const int i = jac.rows[k];
-          values[k] = (fp[i] - fv[i]) * inv;
+    // The colouring of the mode of the last evaluation, while every perturbed evaluation stays
+    // in that mode: the entries outside the mode's pattern are zero (their difference quotients
+    // would be exactly zero), the others the same quotients as the superset's colouring gives.
+    // Should an evaluation change the mode (a friction branch reassumed), the superset's.
+    const System::ModePattern* mode = jac.mode_colouring ? data->system->ModeJacobianPattern() : nullptr;
+    for (bool done = false; !done;) {
+      done = true;
+      for (const auto& group : mode != nullptr ? mode->colours : jac.colors) {
+        for (int j : group) {
+          const double inc =
+              std::max({srur * std::abs(yv[j]), srur / (jac.relative_tolerance * wv[j]), min_inc / wv[j]});
+          // The increment that is actually represented in floating point.
+          yp[j] = yv[j] + inc;
+          jac.increment[j] = yp[j] - yv[j];
         }
-        yp[j] = yv[j];
+        ++jac.rhs_evaluations;
+        if (!data->system->Evaluate(t, yp, fp)) {
+          data->message = data->system->error();
+          data->element = data->system->error_element();
+          return 1;  // recoverable: CVODE retries with a smaller step
+        }
+        if (mode != nullptr && !data->system->InMode(*mode)) {
+          for (int j : group) yp[j] = yv[j];
+          mode = nullptr;
+          done = false;
+          break;
+        }
+        for (int j : group) {
+          const double inv = 1.0 / jac.increment[j];
+          for (int k = jac.colptr[j]; k < jac.colptr[j + 1]; ++k) {
+            const int i = jac.rows[k];
+            values[k] = mode == nullptr || mode->entry[k] ? (fp[i] - fv[i]) * inv : 0.0;
+          }
+          yp[j] = yv[j];
+        }
       }
     }
     return 0;
@@ -794,6 +793,7 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
   if (sparse) {
     colored.Build(sys.jacobian_colptr(), sys.jacobian_rows());
     colored.relative_tolerance = options.relative_tolerance;
+    colored.mode_colouring = options.mode_colouring;
     colored.work_y = N_VClone(cv.y);
     colored.work_f = N_VClone(cv.y);
     colored.weights = N_VClone(cv.y);

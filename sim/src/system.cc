@@ -446,6 +446,7 @@ void System::AssignStates(const std::map<std::string, int>& signal_source, const
   }
   // A massless node's speed follows from the balance of every compliant element on it (and on
   // the massless nodes next to it): their states form one clique.
+  const std::size_t first_fixed_clique = cliques.size();
   if (!massless_.empty()) {
     UnionFind chain(n_nodes);
     for (const auto& el : elements_) {
@@ -570,6 +571,21 @@ void System::AssignStates(const std::map<std::string, int>& signal_source, const
       jacobian_colptr_.push_back(static_cast<int>(jacobian_rows_.size()));
     }
   }
+  // The inputs of ModeJacobianPattern, in state indices.
+  auto states_of = [&](const std::vector<int>& blocks) {
+    std::vector<int> states;
+    for (int b : blocks)
+      for (int k = 0; k < block_size[b]; ++k) states.push_back(first_state[b] + k);
+    return states;
+  };
+  footprint_states_.clear();
+  for (int i = 0; i < n_elements; ++i) footprint_states_.push_back(states_of(footprint[i]));
+  fixed_cliques_.clear();
+  for (std::size_t c = first_fixed_clique; c < cliques.size(); ++c) {
+    fixed_cliques_.push_back(states_of(cliques[c]));
+    std::sort(fixed_cliques_.back().begin(), fixed_cliques_.back().end());
+  }
+  mode_patterns_.clear();
   // Half-bandwidth: the widest clique, in state indices.
   bandwidth_ = 1;  // phi' = w within each node's pair
   for (const auto& c : cliques) {
@@ -1586,9 +1602,8 @@ void System::ConstraintSignature(std::vector<int>& signature) const {
   }
 }
 
-bool System::SignatureMatches() const {
+bool System::SignatureMatches(const std::vector<int>& sig) const {
   const Eval& e = eval_;
-  const std::vector<int>& sig = signature_;
   if (sig.empty() || sig[0] != e.n_constraints) return false;
   std::size_t at = 1;
   for (int k = 0; k < e.n_constraints; ++k) {
@@ -1602,6 +1617,169 @@ bool System::SignatureMatches() const {
       if (sig[at++] != n) return false;
   }
   return at == sig.size();
+}
+
+std::vector<std::vector<int>> ColourColumns(const std::vector<int>& colptr, const std::vector<int>& rows,
+                                            const std::vector<char>* entry) {
+  const int n = static_cast<int>(colptr.size()) - 1;
+  auto present = [&](int k) { return entry == nullptr || (*entry)[static_cast<std::size_t>(k)] != 0; };
+  // The columns with an entry in each row (the pattern transposed).
+  std::vector<int> row_begin(static_cast<std::size_t>(n) + 1, 0), row_columns;
+  for (int k = 0; k < colptr[n]; ++k)
+    if (present(k)) ++row_begin[static_cast<std::size_t>(rows[k]) + 1];
+  for (int i = 0; i < n; ++i) row_begin[i + 1] += row_begin[i];
+  row_columns.resize(static_cast<std::size_t>(row_begin[n]));
+  std::vector<int> fill(row_begin.begin(), row_begin.end() - 1);
+  for (int j = 0; j < n; ++j)
+    for (int k = colptr[j]; k < colptr[j + 1]; ++k)
+      if (present(k)) row_columns[static_cast<std::size_t>(fill[rows[k]]++)] = j;
+  std::vector<std::vector<int>> colours;
+  std::vector<int> colour(static_cast<std::size_t>(n), -1);
+  std::vector<char> mark;
+  for (int j = 0; j < n; ++j) {
+    mark.assign(colours.size() + 1, 0);
+    for (int k = colptr[j]; k < colptr[j + 1]; ++k) {
+      if (!present(k)) continue;
+      const int i = rows[k];
+      for (int m = row_begin[i]; m < row_begin[i + 1]; ++m)
+        if (const int c = colour[row_columns[m]]; c >= 0) mark[c] = 1;
+    }
+    int c = 0;
+    while (mark[c]) ++c;
+    colour[j] = c;
+    if (c == static_cast<int>(colours.size())) colours.emplace_back();
+    colours[c].push_back(j);
+  }
+  return colours;
+}
+
+const System::ModePattern* System::ModeJacobianPattern() {
+  const Eval& e = eval_;
+  ConstraintSignature(mode_key_);
+  if (auto it = mode_patterns_.find(mode_key_); it != mode_patterns_.end())
+    return it->second.colours.empty() ? nullptr : &it->second;
+  if (mode_patterns_.size() >= kModePatterns) mode_patterns_.clear();
+  ModePattern& pattern = mode_patterns_[mode_key_];
+  pattern.key = mode_key_;
+  // Hydraulic networks keep the superset's colouring: on the hydraulic PDU example the two
+  // colourings' quotients for a supply pressure differ (the superset's attribute a part of its
+  // change to node angles that no law reads), so they would not give the same Jacobian.
+  if (!hnodes_.empty()) return nullptr;
+  const int n_nodes = static_cast<int>(nodes_.size());
+  const auto at = [](auto& v, int i) -> auto& { return v[static_cast<std::size_t>(i)]; };
+  if (speed_rows_.empty()) {
+    // What holds in every mode: the rows of the angles and twists (SpeedRows), the angles that
+    // no law reads (a column of zeros but for its diagonal), each element's free nodes.
+    speed_rows_ = SpeedRows();
+    std::vector<char> read(static_cast<std::size_t>(n_nodes), 0);
+    element_nodes_.assign(elements_.size(), {});
+    for (std::size_t i = 0; i < elements_.size(); ++i)
+      for (int n : elements_[i]->Nodes()) {
+        if (elements_[i]->ReadsNodeAngles()) at(read, n) = 1;
+        if (!nodes_[n].ground) element_nodes_[i].push_back(n);
+      }
+    unread_angle_.assign(static_cast<std::size_t>(n_states_), 0);
+    node_state_.assign(static_cast<std::size_t>(n_states_), 0);
+    for (int n = 0; n < n_nodes; ++n) {
+      if (nodes_[n].ground) continue;
+      at(node_state_, nodes_[n].s_phi) = at(node_state_, nodes_[n].s_w) = 1;
+      if (!at(read, n)) at(unread_angle_, nodes_[n].s_phi) = 1;
+    }
+  }
+  // The groups of nodes the active constraints couple (numbered by their first node).
+  UnionFind groups(n_nodes);
+  for (int k = 0; k < e.n_constraints; ++k) {
+    int first = -1;
+    auto touch = [&](int n) {
+      if (nodes_[n].ground) return;
+      if (first < 0) first = n;
+      else groups.Unite(first, n);
+    };
+    for (auto [n, c] : e.constraints[k].row) touch(n);
+    for (auto [n, c] : e.constraints[k].column) touch(n);
+  }
+  std::vector<int> group_of(static_cast<std::size_t>(n_nodes), -1), group_of_root(static_cast<std::size_t>(n_nodes), -1);
+  int n_groups = 0;
+  for (int n = 0; n < n_nodes; ++n)
+    if (!nodes_[n].ground) {
+      int& g = at(group_of_root, groups.Find(n));
+      if (g < 0) g = n_groups++;
+      at(group_of, n) = g;
+    }
+  // The cliques of AssignStates with the active constraints' groups, each as rows and the
+  // columns they may depend on. A group: the accelerations of its nodes on its nodes' states
+  // and on the footprints of the laws on its nodes; the states of elements (and hydraulic
+  // nodes) those laws read on the same, as their derivatives may read the group's
+  // accelerations or constraint torques; not the states of the nodes next to it. An element:
+  // its states on its footprint and on its nodes' groups' columns.
+  std::vector<std::vector<int>> rows(static_cast<std::size_t>(n_groups)), columns(static_cast<std::size_t>(n_groups));
+  for (int n = 0; n < n_nodes; ++n)
+    if (!nodes_[n].ground)
+      for (int s : {nodes_[n].s_phi, nodes_[n].s_w}) {
+        at(rows, at(group_of, n)).push_back(s);
+        at(columns, at(group_of, n)).push_back(s);
+      }
+  for (std::size_t i = 0; i < elements_.size(); ++i)
+    for (int n : element_nodes_[i]) {
+      auto& c = at(columns, at(group_of, n));
+      c.insert(c.end(), footprint_states_[i].begin(), footprint_states_[i].end());
+    }
+  for (int g = 0; g < n_groups; ++g) {
+    auto& c = at(columns, g);
+    std::sort(c.begin(), c.end());
+    c.erase(std::unique(c.begin(), c.end()), c.end());
+    for (int s : c)
+      if (!at(node_state_, s)) at(rows, g).push_back(s);
+  }
+  // Marks the entries (i, j) of rows x columns, but none in the column of an angle no law reads
+  // and in the row of an angle or a twist only its speeds; false for an entry outside the
+  // superset (an element whose constraint reaches beyond its CoupledNodes: the superset's
+  // colouring stays in use).
+  pattern.entry.assign(jacobian_rows_.size(), 0);
+  const auto begin = jacobian_rows_.begin();
+  auto mark = [&](int i, int j) {
+    const auto first = begin + at(jacobian_colptr_, j), last = begin + at(jacobian_colptr_, j + 1);
+    const auto it = std::lower_bound(first, last, i);
+    if (it == last || *it != i) return false;
+    at(pattern.entry, static_cast<int>(it - begin)) = 1;
+    return true;
+  };
+  auto mark_all = [&](const std::vector<int>& clique_rows, const std::vector<int>& clique_columns) {
+    for (int i : clique_rows) {
+      if (const auto& speeds = at(speed_rows_, i)) {
+        for (int j : *speeds)
+          if (!at(unread_angle_, j) && std::binary_search(clique_columns.begin(), clique_columns.end(), j) &&
+              !mark(i, j))
+            return false;
+        continue;
+      }
+      for (int j : clique_columns)
+        if (!at(unread_angle_, j) && !mark(i, j)) return false;
+    }
+    return true;
+  };
+  for (int j = 0; j < n_states_; ++j)
+    if (!mark(j, j)) return nullptr;
+  for (int g = 0; g < n_groups; ++g)
+    if (!mark_all(at(rows, g), at(columns, g))) return nullptr;
+  std::vector<int> element_rows, element_columns;
+  for (std::size_t i = 0; i < elements_.size(); ++i) {
+    const int n_states = elements_[i]->NumStates();
+    if (n_states == 0) continue;
+    element_rows.clear();
+    for (int k = 0; k < n_states; ++k) element_rows.push_back(elements_[i]->state_offset + k);
+    element_columns = footprint_states_[i];
+    for (int n : element_nodes_[i]) {
+      const auto& c = at(columns, at(group_of, n));
+      element_columns.insert(element_columns.end(), c.begin(), c.end());
+    }
+    std::sort(element_columns.begin(), element_columns.end());  // (mark_all searches them)
+    if (!mark_all(element_rows, element_columns)) return nullptr;
+  }
+  for (const auto& c : fixed_cliques_)  // (sorted: AssignStates)
+    if (!mark_all(c, c)) return nullptr;
+  pattern.colours = ColourColumns(jacobian_colptr_, jacobian_rows_, &pattern.entry);
+  return &pattern;
 }
 
 void System::BuildGroups() {

@@ -23,6 +23,12 @@ struct EquilibriumOptions {
   bool group_twists = true;
 };
 
+/// A greedy colouring of the columns of a pattern (compressed columns, rows sorted; with
+/// `entry`, the entries k with entry[k] == 0 left out): the columns of one colour share no
+/// row, so one difference quotient gives all of them (Curtis, Powell and Reid).
+std::vector<std::vector<int>> ColourColumns(const std::vector<int>& colptr, const std::vector<int>& rows,
+                                            const std::vector<char>* entry = nullptr);
+
 class System {
  public:
   explicit System(const Network& network);
@@ -45,6 +51,25 @@ class System {
   /// jacobian_rows()[jacobian_colptr()[j] .. jacobian_colptr()[j + 1]).
   const std::vector<int>& jacobian_colptr() const { return jacobian_colptr_; }
   const std::vector<int>& jacobian_rows() const { return jacobian_rows_; }
+  /// The part of that pattern the discrete mode of the last evaluation can make nonzero, and a
+  /// colouring of its columns. The superset pattern joins every group of nodes that a
+  /// constraint may couple (a brake that may stick), and every state of a node or an element
+  /// to every other in its cliques. In a mode only the active constraints couple nodes; an
+  /// angle's or a twist's derivative is a speed (SpeedRows); a node's angle that no law reads
+  /// (Element::ReadsNodeAngles) has no column. A column's entries are then fewer and more
+  /// columns share a colour.
+  struct ModePattern {
+    std::vector<int> key;                   ///< the active constraints (ConstraintSignature)
+    std::vector<char> entry;                ///< per entry of jacobian_rows(): in the mode's pattern
+    std::vector<std::vector<int>> colours;  ///< columns that share no row of the mode's pattern
+  };
+  /// The ModePattern of the last evaluation's active constraints (built once per pattern of
+  /// constraints and kept, up to kModePatterns of them), or null when the superset's colouring
+  /// is the one to use: a network with hydraulic nodes, or an active constraint that couples
+  /// nodes outside the superset's groups.
+  const ModePattern* ModeJacobianPattern();
+  /// Whether the last evaluation's active constraints are those of `pattern`.
+  bool InMode(const ModePattern& pattern) const { return SignatureMatches(pattern.key); }
   /// Per state, the states its derivative depends on when those are speeds alone, in every
   /// mode: a node angle on the node's speed, a massless node's held speed state on nothing, a
   /// relative angle (Element::StateSpeedNodes) on the speeds of its nodes when none of them is
@@ -303,7 +328,9 @@ class System {
   std::vector<double> kinematic_scratch_;          ///< one element's roots
   static constexpr int kSmallGroup = 16;  ///< up to this size: our own elimination
   void ConstraintSignature(std::vector<int>& signature) const;
-  bool SignatureMatches() const;  ///< the active constraints have the pattern of signature_
+  /// The active constraints have the pattern of `signature` (by default signature_).
+  bool SignatureMatches(const std::vector<int>& signature) const;
+  bool SignatureMatches() const { return SignatureMatches(signature_); }
   /// The active constraints were found to have the pattern of signature_ since the discrete
   /// state last changed. An element's constraints are a function of its discrete state (its
   /// mode), so between events Solve leaves out SignatureMatches (debug builds assert it).
@@ -323,6 +350,19 @@ class System {
   std::vector<std::pair<int, double>> unconstrained_;
   std::vector<int> grounded_rows_;   ///< constraints between ground nodes only
   std::vector<int> signature_;
+  // What ModeJacobianPattern builds on (AssignStates): per element the states of its footprint,
+  // and the cliques of the pattern that no constraint forms (massless chains, hydraulic nodes).
+  std::vector<std::vector<int>> footprint_states_;
+  std::vector<std::vector<int>> fixed_cliques_;
+  std::map<std::vector<int>, ModePattern> mode_patterns_;  ///< by ConstraintSignature
+  /// At most this many kept (about 8 KB each on the A380-class model; a run that chatters
+  /// through more modes starts the cache afresh rather than grow).
+  static constexpr std::size_t kModePatterns = 64;
+  std::vector<int> mode_key_;                             ///< scratch
+  std::vector<std::optional<std::vector<int>>> speed_rows_;  ///< SpeedRows (on first use)
+  std::vector<std::vector<int>> element_nodes_;  ///< per element: its nodes that are not ground
+  std::vector<char> node_state_;    ///< per state: a node's angle or speed
+  std::vector<char> unread_angle_;  ///< per state: the angle of a node no law reads (Element::ReadsNodeAngles)
   std::vector<int> parent_;
   std::vector<int> local_;
   std::vector<char> in_constraint_;
