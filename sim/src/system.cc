@@ -1661,9 +1661,10 @@ const System::ModePattern* System::ModeJacobianPattern() {
   if (mode_patterns_.size() >= kModePatterns) mode_patterns_.clear();
   ModePattern& pattern = mode_patterns_[mode_key_];
   pattern.key = mode_key_;
-  // Hydraulic networks keep the superset's colouring: on the hydraulic PDU example the two
-  // colourings' quotients for a supply pressure differ (the superset's attribute a part of its
-  // change to node angles that no law reads), so they would not give the same Jacobian.
+  // Hydraulic networks keep the superset's colouring: on the hydraulic PDU example a supply
+  // pressure's derivative changes at the rounding level with states outside the superset
+  // pattern, which each colouring adds to other entries, so the two would not give the same
+  // Jacobian to the last bit (docs/performance.md, issue 30, nineteenth pass).
   if (!hnodes_.empty()) return nullptr;
   const int n_nodes = static_cast<int>(nodes_.size());
   const auto at = [](auto& v, int i) -> auto& { return v[static_cast<std::size_t>(i)]; };
