@@ -1658,6 +1658,8 @@ const System::ModePattern* System::ModeJacobianPattern() {
   ConstraintSignature(mode_key_);
   if (auto it = mode_patterns_.find(mode_key_); it != mode_patterns_.end())
     return it->second.colours.empty() ? nullptr : &it->second;
+  // Solve's groups are those of the last evaluation unless it failed before its solve.
+  if (e.n_constraints > 0 && !SignatureMatches()) return nullptr;
   if (mode_patterns_.size() >= kModePatterns) mode_patterns_.clear();
   ModePattern& pattern = mode_patterns_[mode_key_];
   pattern.key = mode_key_;
@@ -1687,26 +1689,17 @@ const System::ModePattern* System::ModeJacobianPattern() {
       if (!at(read, n)) at(unread_angle_, nodes_[n].s_phi) = 1;
     }
   }
-  // The groups of nodes the active constraints couple (numbered by their first node).
-  UnionFind groups(n_nodes);
-  for (int k = 0; k < e.n_constraints; ++k) {
-    int first = -1;
-    auto touch = [&](int n) {
-      if (nodes_[n].ground) return;
-      if (first < 0) first = n;
-      else groups.Unite(first, n);
-    };
-    for (auto [n, c] : e.constraints[k].row) touch(n);
-    for (auto [n, c] : e.constraints[k].column) touch(n);
-  }
-  std::vector<int> group_of(static_cast<std::size_t>(n_nodes), -1), group_of_root(static_cast<std::size_t>(n_nodes), -1);
+  // The groups of nodes the active constraints couple: Solve's (BuildGroups, current for the
+  // last evaluation's constraints), every other node a group of its own.
+  std::vector<int> group_of(static_cast<std::size_t>(n_nodes), -1);
   int n_groups = 0;
-  for (int n = 0; n < n_nodes; ++n)
-    if (!nodes_[n].ground) {
-      int& g = at(group_of_root, groups.Find(n));
-      if (g < 0) g = n_groups++;
-      at(group_of, n) = g;
+  if (e.n_constraints > 0)
+    for (const Group& g : groups_) {
+      for (int n : g.nodes) at(group_of, n) = n_groups;
+      ++n_groups;
     }
+  for (int n = 0; n < n_nodes; ++n)
+    if (!nodes_[n].ground && at(group_of, n) < 0) at(group_of, n) = n_groups++;
   // The cliques of AssignStates with the active constraints' groups, each as rows and the
   // columns they may depend on. A group: the accelerations of its nodes on its nodes' states
   // and on the footprints of the laws on its nodes; the states of elements (and hydraulic
