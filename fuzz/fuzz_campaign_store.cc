@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <sstream>
 #include <string>
+#include <system_error>
 
 #include "../campaign/src/store.h"
 #include "highlift/campaign/campaign.h"
@@ -73,7 +74,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   fs::remove_all(out);
   fs::create_directories(dir);
   const fs::path file = dir / "campaign.sqlite";
-  fs::copy_file(template_file, file);
+  // A signal (libFuzzer's timers) may interrupt the copy (EINTR, a CI run of 2026-12-06): the
+  // harness copies again rather than report its own copy as a finding.
+  for (std::error_code ec;;) {
+    fs::copy_file(template_file, file, fs::copy_options::overwrite_existing, ec);
+    if (!ec) break;
+    if (ec != std::errc::interrupted) throw fs::filesystem_error("copying the template", template_file, file, ec);
+  }
   {
     sqlite::Connection c(file, sqlite::Connection::Mode::kReadWrite);
     std::istringstream lines(std::string(reinterpret_cast<const char*>(data), size));
