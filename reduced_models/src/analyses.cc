@@ -225,7 +225,7 @@ ModeData Evaluate(const detail::Graph& g, const detail::ParameterMode& mode, con
     ModeData d = *nominal;
     d.mode = mode;
     // Friction changes only the drag flow (the back-drive flow is computed without friction).
-    if (FrictionOnly(mode.parameter)) d.drag = detail::SolveFlow<Interval>(g, mode, {}, w, true);
+    if (FrictionOnly(mode.parameter)) d.drag = detail::SolveFlow<Interval>(g, mode, {}, w, true, &nominal->drag);
     return d;
   }
   ModeData d;
@@ -238,6 +238,15 @@ ModeData Evaluate(const detail::Graph& g, const detail::ParameterMode& mode, con
   d.link_J.assign(count, Interval(0.0));
   for (std::size_t i = 0; i < count; ++i) {
     const Component& c = *g.nodes[i].component;
+    // One parameter spans its domain: every other component's lumped values are the nominal
+    // mode's, the same operations on the same doubles, where its speed ratio is the same too.
+    if (nominal && mode.kind == detail::ParameterMode::kOne && c.id != mode.component &&
+        n[i].lo == nominal->n[i].lo && n[i].hi == nominal->n[i].hi) {
+      d.J[i] = nominal->J[i];
+      d.link_c[i] = nominal->link_c[i];
+      d.link_J[i] = nominal->link_J[i];
+      continue;
+    }
     const Interval n2 = n[i] * n[i];
     const model::ComponentModel* m = g.nodes[i].model;
     const model::Lumped<Interval> lumped = detail::LumpedOf<Interval>(c, mode, m);
@@ -254,8 +263,8 @@ ModeData Evaluate(const detail::Graph& g, const detail::ParameterMode& mode, con
     d.drag = nominal->drag;
     return d;
   }
-  d.back = detail::SolveFlow<Interval>(g, mode, aiding, w, false);
-  d.drag = detail::SolveFlow<Interval>(g, mode, {}, w, true);
+  d.back = detail::SolveFlow<Interval>(g, mode, aiding, w, false, nominal ? &nominal->back : nullptr);
+  d.drag = detail::SolveFlow<Interval>(g, mode, {}, w, true, nominal ? &nominal->drag : nullptr);
   return d;
 }
 

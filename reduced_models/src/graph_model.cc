@@ -34,15 +34,12 @@ std::optional<ParameterView> FindParameter(const Component& c, std::string_view 
 
 bool HasValue(const Component& c, std::string_view name) {
   const auto p = FindParameter(c, name);
-  // A default domain without a nominal value is the valid range: not a value.
-  return p && (p->nominal || (p->provenance != Provenance::kDefault && p->domain.bounded() && !p->domain.empty()));
+  return p && ValueOf(*p);
 }
 
 double NominalValue(const Component& c, std::string_view name) {
   const auto p = FindParameter(c, name);
-  if (p && p->nominal) return *p->nominal;
-  if (p && p->provenance != Provenance::kDefault && p->domain.bounded() && !p->domain.empty())
-    return p->domain.mid();
+  if (const std::optional<double> value = p ? ValueOf(*p) : std::nullopt) return *value;
   throw InputError("component '" + c.id + "' (" + c.type + "): parameter '" + std::string(name) +
                        "' has no value, which the reduced models need; give it a value or an interval",
                    c.where);

@@ -102,6 +102,14 @@ struct ParameterView {
   Provenance provenance = Provenance::kDefault;
 };
 std::optional<ParameterView> FindParameter(const Component& c, std::string_view name);
+/// The value of a parameter: its nominal value, else the middle of a domain the user (or the
+/// database, an estimate) gave. A default domain without a nominal value is the valid range:
+/// not a value (nullopt).
+inline std::optional<double> ValueOf(const ParameterView& p) {
+  if (p.nominal) return p.nominal;
+  if (p.provenance != Provenance::kDefault && p.domain.bounded() && !p.domain.empty()) return p.domain.mid();
+  return std::nullopt;
+}
 double NominalValue(const Component& c, std::string_view name);
 bool HasValue(const Component& c, std::string_view name);
 
@@ -115,10 +123,13 @@ template <>
 inline Interval Read<Interval>(const Component& c, std::string_view name, const ParameterMode& mode) {
   const bool wide = mode.kind == ParameterMode::kIntervals ||
                     (mode.kind == ParameterMode::kOne && mode.component == c.id && mode.parameter == name);
+  // One lookup: the nominal value is NominalValue's, read from the same view (the lookup is most
+  // of a read's cost, and the peak analysis reads every parameter once per uncertain one).
   const auto p = FindParameter(c, name);
   if (wide && p && p->domain.bounded() && !p->domain.empty() && !p->domain.is_point())
     return Interval(p->domain.lo, p->domain.hi);
-  return Interval(NominalValue(c, name));
+  if (const std::optional<double> value = p ? ValueOf(*p) : std::nullopt) return Interval(*value);
+  return Interval(NominalValue(c, name));  // no value: NominalValue's error
 }
 
 /// The uncertain parameters (bounded, non-point domains) that the reduced models read, as

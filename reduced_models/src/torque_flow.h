@@ -13,6 +13,10 @@
 
 namespace highlift::reduced_models::detail {
 
+/// The same value to the bit (an Interval: both bounds).
+inline bool SameValue(double a, double b) { return a == b; }
+inline bool SameValue(const Interval& a, const Interval& b) { return a.lo == b.lo && a.hi == b.hi; }
+
 template <class T>
 struct Flow {
   std::vector<T> tau_in;   ///< N*m at each node's input flange, at its own speed
@@ -22,9 +26,14 @@ struct Flow {
 
 /// `loads`: actuator id -> output torque (positive opposing the motion). `w_pdu` >= 0 (an interval
 /// when the PDU speed is uncertain).
+///
+/// `nominal` (a mode of one parameter only, ParameterMode::kOne): the same flow in the nominal
+/// mode, with the same `loads`, `w_pdu` and `friction`. A node whose component is not the
+/// parameter's, whose speed is the same and whose children's torques are the same takes the
+/// nominal torque: its law would do the same operations on the same values.
 template <class T>
 Flow<T> SolveFlow(const Graph& g, const ParameterMode& mode, const std::map<std::string, double>& loads,
-                  const T& w_pdu, bool friction = true) {
+                  const T& w_pdu, bool friction = true, const Flow<T>* nominal = nullptr) {
   Flow<T> f;
   const std::size_t count = g.nodes.size();
   f.n = SpeedRatios<T>(g, mode);
@@ -32,8 +41,19 @@ Flow<T> SolveFlow(const Graph& g, const ParameterMode& mode, const std::map<std:
   f.tau_in.assign(count, T(0.0));
   for (std::size_t i = 0; i < count; ++i) f.w_in[i] = f.n[i] * w_pdu;
   const T on(friction ? 1.0 : 0.0);
+  if (mode.kind != ParameterMode::kOne || (nominal != nullptr && nominal->tau_in.size() != count)) nominal = nullptr;
+  std::vector<char> changed(nominal != nullptr ? count : 0, 0);
   for (std::size_t k = count; k-- > 0;) {
     const Component& c = *g.nodes[k].component;
+    if (nominal != nullptr) {
+      bool same = c.id != mode.component && SameValue(f.w_in[k], nominal->w_in[k]);
+      for (int child : g.nodes[k].children) same = same && !changed[child];
+      if (same) {
+        f.tau_in[k] = nominal->tau_in[k];
+        continue;
+      }
+      changed[k] = 1;
+    }
     T through(0.0), branch(0.0);
     for (int child : g.nodes[k].children)
       (g.nodes[child].parent_port == "branch" ? branch : through) += f.tau_in[child];

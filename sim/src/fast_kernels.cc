@@ -330,6 +330,11 @@ SUNMatrix CloneSparse(SUNMatrix A) {
 
 }  // namespace
 
+HIGHLIFT_VECTOR_CLONES void ScaleAddIdentity(std::size_t n, double scale, const double* values,
+                                             const double* identity, double* out) {
+  for (std::size_t p = 0; p < n; ++p) out[p] = (scale * values[p] + 0.0) + identity[p];
+}
+
 void InstallFastVectorOps(N_Vector v) {
   N_Vector_Ops ops = v->ops;
   ops->nvlinearsum = LinearSum;

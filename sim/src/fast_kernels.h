@@ -11,6 +11,8 @@
 // every vector CVODE clones from the state vector uses them.
 #pragma once
 
+#include <cstddef>
+
 #include "sundials_compat.h"
 
 namespace highlift::sim::detail {
@@ -22,5 +24,10 @@ void InstallFastVectorOps(N_Vector v);
 /// pattern holds every diagonal entry (the simulator's Jacobian pattern does); the other
 /// operations stay SUNDIALS'.
 void InstallFastSparseOps(SUNMatrix A);
+
+/// out = scale * values + 0.0 + identity, entry by entry (n entries): M = I - gamma*J as
+/// SUNMatScaleAddI(-gamma, J) forms it, with `identity` 1 at the diagonal's positions and 0
+/// elsewhere. The same doubles as the scalar loop.
+void ScaleAddIdentity(std::size_t n, double scale, const double* values, const double* identity, double* out);
 
 }  // namespace highlift::sim::detail

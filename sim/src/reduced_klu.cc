@@ -8,6 +8,8 @@
 #include <memory>
 #include <optional>
 
+#include "fast_kernels.h"
+
 namespace highlift::sim::detail {
 
 std::vector<char> EliminatedStates(const std::vector<int>& colptr, const std::vector<int>& rows,
@@ -96,6 +98,9 @@ struct Content {
   Factors reduced, full;
   /// 1 at the diagonal's position in M's values, 0 elsewhere: M = -gamma*J + I entry by entry.
   std::vector<double> identity;
+  /// M's values when the setup is given J, formed in one vectorised pass (ScaleAddIdentity) and
+  /// read where the setup needs them.
+  std::vector<double> m_values;
   /// The next setup is given J (ReducedKluSetGamma) rather than M.
   bool given_jacobian = false;
   double gamma = 0.0;
@@ -198,9 +203,9 @@ int Setup(SUNLinearSolver S, SUNMatrix A) {
   c.given_jacobian = false;
   // M = I - gamma*J as SUNMatScaleAddI(-gamma, J) forms it (fast_kernels.cc): -gamma*J + 0.0,
   // then 1 added on the diagonal. The same doubles, read where they are needed.
-  const double scale = -c.gamma;
-  const double* identity = c.identity.data();
-  return SetupOn(c, [values, identity, scale](long p) { return (scale * values[p] + 0.0) + identity[p]; });
+  ScaleAddIdentity(c.m_values.size(), -c.gamma, values, c.identity.data(), c.m_values.data());
+  const double* m_values = c.m_values.data();
+  return SetupOn(c, [m_values](long p) { return m_values[p]; });
 }
 
 int Solve(SUNLinearSolver S, SUNMatrix, N_Vector x, N_Vector b, sunrealtype) {
@@ -322,6 +327,7 @@ SUNLinearSolver NewReducedKlu(const std::vector<int>& colptr, const std::vector<
     c->eliminated.push_back(std::move(el));
   }
   c->identity.assign(rows.size(), 0.0);
+  c->m_values.assign(rows.size(), 0.0);
   for (int j = 0; j < n; ++j) {
     const long p = position(j, j);
     if (p < 0) return nullptr;  // the pattern lacks a diagonal: not for this solver

@@ -11,6 +11,7 @@
 #include "highlift/core/project_io.h"
 #include "highlift/reduced_models/analyses.h"
 #include "highlift/reduced_models/sizing.h"
+#include "torque_flow.h"
 
 namespace highlift::reduced_models {
 namespace {
@@ -104,6 +105,55 @@ TEST(HydraulicExample, JamStaticPartIsTheMotorsStallTorqueThroughTheSystemLimite
       EXPECT_GT(expected, 1.5 * tau2);  // the case where the brake slips
     }
   }
+}
+
+// The peak analysis solves the torque flow once per uncertain parameter, and takes the nominal
+// flow's torque wherever the parameter cannot reach (SolveFlow's `nominal`). That must be the
+// torque the full solve gives, to the bit: for every uncertain parameter of the example, with
+// and without friction, with the airloads and without.
+TEST(A380Example, TheFlowOfOneParameterReusesOnlyWhatItCannotChange) {
+  Project project = LoadProject(kExample);
+  // And a ratio that spans a domain, which moves the speeds of everything behind it.
+  Component* tgb = nullptr;
+  for (Component& c : project.components)
+    if (c.id == "tgb_l4") tgb = &c;
+  ASSERT_NE(tgb, nullptr);
+  tgb->parameters["ratio"].domain = {1.96, 2.04};
+  const detail::Graph g = detail::BuildGraph(project);
+  ASSERT_FALSE(project.load_cases.empty());
+  const std::map<std::string, double> loads = detail::SizingLoads(project.load_cases.front());
+  ASSERT_FALSE(loads.empty());
+  const detail::Interval w(detail::SizingSpeed(project.load_cases.front(), *g.nodes[0].component));
+  const auto uncertain = detail::UncertainParameters(g);
+  ASSERT_GT(uncertain.size(), 50u);
+  int reused = 0, solved = 0, ratios = 0;
+  for (const bool friction : {false, true})
+    for (const auto* airloads : {&loads, static_cast<const std::map<std::string, double>*>(nullptr)}) {
+      const std::map<std::string, double> none;
+      const auto& l = airloads ? *airloads : none;
+      const detail::Flow<detail::Interval> nominal = detail::SolveFlow<detail::Interval>(g, {}, l, w, friction);
+      for (const auto& [component, parameter] : uncertain) {
+        const detail::ParameterMode one{detail::ParameterMode::kOne, component, parameter};
+        const auto full = detail::SolveFlow<detail::Interval>(g, one, l, w, friction);
+        const auto fast = detail::SolveFlow<detail::Interval>(g, one, l, w, friction, &nominal);
+        ASSERT_EQ(full.tau_in.size(), fast.tau_in.size());
+        bool moved = false;
+        for (std::size_t k = 0; k < full.tau_in.size(); ++k) {
+          EXPECT_EQ(full.tau_in[k].lo, fast.tau_in[k].lo) << component << "." << parameter << " node " << k;
+          EXPECT_EQ(full.tau_in[k].hi, fast.tau_in[k].hi) << component << "." << parameter << " node " << k;
+          const bool same = detail::SameValue(full.tau_in[k], nominal.tau_in[k]);
+          reused += same;
+          solved += !same;
+          moved = moved || !same;
+        }
+        // The ratio moves the speeds, and the torques, of the station behind the gearbox.
+        if (component == "tgb_l4" && parameter == "ratio" && moved)
+          for (std::size_t k = 0; k < full.w_in.size(); ++k) ratios += !detail::SameValue(full.w_in[k], nominal.w_in[k]);
+      }
+    }
+  EXPECT_GT(reused, solved);  // most of the tree is out of one parameter's reach
+  EXPECT_GT(solved, 0);
+  EXPECT_GT(ratios, 0);
 }
 
 }  // namespace
