@@ -241,7 +241,7 @@ ModeData Evaluate(const detail::Graph& g, const detail::ParameterMode& mode, con
     // One parameter spans its domain: every other component's lumped values are the nominal
     // mode's, the same operations on the same doubles, where its speed ratio is the same too.
     if (nominal && mode.kind == detail::ParameterMode::kOne && c.id != mode.component &&
-        n[i].lo == nominal->n[i].lo && n[i].hi == nominal->n[i].hi) {
+        detail::SameValue(n[i], nominal->n[i])) {
       d.J[i] = nominal->J[i];
       d.link_c[i] = nominal->link_c[i];
       d.link_J[i] = nominal->link_J[i];

@@ -202,7 +202,7 @@ int Setup(SUNLinearSolver S, SUNMatrix A) {
   if (!c.given_jacobian) return SetupOn(c, [values](long p) { return values[p]; });
   c.given_jacobian = false;
   // M = I - gamma*J as SUNMatScaleAddI(-gamma, J) forms it (fast_kernels.cc): -gamma*J + 0.0,
-  // then 1 added on the diagonal. The same doubles, read where they are needed.
+  // then 1 added on the diagonal. The same doubles, formed in one pass before the setup reads them.
   ScaleAddIdentity(c.m_values.size(), -c.gamma, values, c.identity.data(), c.m_values.data());
   const double* m_values = c.m_values.data();
   return SetupOn(c, [m_values](long p) { return m_values[p]; });
