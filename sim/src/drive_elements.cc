@@ -582,12 +582,13 @@ class CombiTable1Ds : public SignalBlock {
       if (x >= x1) return ys.back();
     }
     // Linear, extrapolated through the outer two points.
-    return InterpolatePoints(
-        n, [this](std::size_t i) { return xs[i]; }, [this](std::size_t i) { return ys[i]; }, x);
+    return InterpolatePointsNear(
+        n, [this](std::size_t i) { return xs[i]; }, [this](std::size_t i) { return ys[i]; }, x, interval_);
   }
   double Signal(const Eval& e) const override { return Value(e.signal[u]); }
   /// The table's two columns, contiguous: a table is read at every evaluation, one per actuator.
   std::vector<double> xs, ys;
+  mutable std::size_t interval_ = 0;  ///< the interval of the last read (InterpolatePointsNear)
   int extrapolation;
   int u = -1;
 };

@@ -97,6 +97,24 @@ double InterpolatePoints(std::size_t n, XAt x_at, YAt y_at, double x) {
   return y0 + (y1 - y0) * (x - x0) / (x1 - x0);
 }
 
+/// InterpolatePoints, its search started at the interval `hint` of the last call (and left
+/// there for the next): a table read at every evaluation is read at nearby points. The same
+/// interval, hence the same value bit for bit: the search walks back while x is not past the
+/// interval's left end, then on as InterpolatePoints does.
+template <class XAt, class YAt>
+double InterpolatePointsNear(std::size_t n, XAt x_at, YAt y_at, double x, std::size_t& hint) {
+  if (n == 0) return 0.0;
+  if (n == 1) return y_at(0);
+  std::size_t i = hint + 2 < n ? hint : n - 2;
+  while (i > 0 && !(x > x_at(i))) --i;
+  while (i + 2 < n && x > x_at(i + 1)) ++i;
+  hint = i;
+  const double x0 = x_at(i), x1 = x_at(i + 1);
+  const double y0 = y_at(i), y1 = y_at(i + 1);
+  if (x1 == x0) return y1;
+  return y0 + (y1 - y0) * (x - x0) / (x1 - x0);
+}
+
 /// InterpolatePoints on column `column` of `table` against column 0.
 double Interpolate(const Table& table, int column, double x);
 

@@ -80,6 +80,8 @@ struct Content {
   int n = 0, m = 0;       ///< full and reduced size
   std::vector<int> kept;  ///< full index of each reduced one
   std::vector<Eliminated> eliminated;
+  /// Every eliminated state's zero_pos, in one array.
+  std::vector<long> zero_positions;
   std::vector<long> s_from;  ///< position in M of each entry of the reduced matrix S
   /// S(v1, v2) -= M(v1, k) M(k, v2) / M(k, k): for eliminated state e, column entry i and row
   /// entry j, the position of S(v1, v2) is update_s[update_begin[e] + i * rows + j].
@@ -89,12 +91,19 @@ struct Content {
   /// of row_values (M(k, v)) and row_reduced (v's reduced index); the state of each.
   std::vector<long> row_begin;
   std::vector<int> row_reduced, eliminated_state;
+  /// The eliminated states by the length of their rows (1, 2, more), for the back substitution:
+  /// most rows hold one speed or two, and a loop per length has no inner loop to run. The order
+  /// of the states does not matter there (each writes its own x_k from z).
+  std::vector<int> rows_of_one, rows_of_two, rows_of_more;
   /// The column entries of the last setup that are not 0 (most of a pattern column is: an angle
-  /// drives nothing but the elements that read it): reduced index and value, per eliminated
-  /// state from active_begin[e] to active_begin[e + 1].
-  std::vector<int> active_v;
+  /// drives nothing but the elements that read it): reduced index, value and eliminated state,
+  /// in the order of the states (so each z_v takes its terms in that order), n_active of them;
+  /// sized for every entry of the pattern's columns.
+  std::vector<int> active_v, active_e;
   std::vector<double> active_values;
-  std::vector<long> active_begin;
+  long n_active = 0;
+  /// b_k / M(k, k) of each eliminated state, in a solve.
+  std::vector<double> xk;
   Factors reduced, full;
   /// 1 at the diagonal's position in M's values, 0 elsewhere: M = -gamma*J + I entry by entry.
   std::vector<double> identity;
@@ -149,14 +158,14 @@ bool Factor(Factors& f, SuiteSparse_long size, klu_l_common& common) {
 template <class Entry>
 int SetupOn(Content& c, const Entry& m) {
   // The eliminated rows hold nothing but their speeds, and their diagonals are not small.
-  bool reducible = true;
-  for (std::size_t e = 0; e < c.eliminated.size(); ++e) {
+  // (The zeros of all rows first, in one loop over their positions.)
+  bool reducible = std::all_of(c.zero_positions.begin(), c.zero_positions.end(), [&](long p) { return m(p) == 0.0; });
+  for (std::size_t e = 0; e < c.eliminated.size() && reducible; ++e) {
     const Eliminated& el = c.eliminated[e];
     double largest = 0.0;
     for (long p : el.row_pos) largest = std::max(largest, std::abs(m(p)));
     const double d = m(el.diagonal);
-    if (!std::all_of(el.zero_pos.begin(), el.zero_pos.end(), [&](long p) { return m(p) == 0.0; }) ||
-        !(std::abs(d) > 1e-8 * largest) || !std::isfinite(d)) {
+    if (!(std::abs(d) > 1e-8 * largest) || !std::isfinite(d)) {
       reducible = false;
       break;
     }
@@ -168,24 +177,27 @@ int SetupOn(Content& c, const Entry& m) {
   if (reducible) {
     double* sv = c.reduced.values.data();
     for (std::size_t i = 0; i < c.s_from.size(); ++i) sv[i] = m(c.s_from[i]);
-    c.active_v.clear();
-    c.active_values.clear();
+    long n_active = 0;
+    int* const active_v = c.active_v.data();
+    int* const active_e = c.active_e.data();
+    double* const active_values = c.active_values.data();
     for (std::size_t e = 0; e < c.eliminated.size(); ++e) {
       const Eliminated& el = c.eliminated[e];
-      c.active_begin[e] = static_cast<long>(c.active_v.size());
       const std::size_t n_row = el.row_pos.size();
       const double* row = c.row_values.data() + c.row_begin[e];
       const long* s_pos = c.update_s.data() + c.update_begin[e];
       for (std::size_t i = 0; i < el.column_pos.size(); ++i) {
         const double a = m(el.column_pos[i]);
         if (a == 0.0) continue;
-        c.active_v.push_back(el.column_v[i]);
-        c.active_values.push_back(a);
+        active_v[n_active] = el.column_v[i];
+        active_e[n_active] = static_cast<int>(e);
+        active_values[n_active] = a;
+        ++n_active;
         const double f = a * c.inverse_diagonal[e];
         for (std::size_t j = 0; j < n_row; ++j) sv[s_pos[i * n_row + j]] -= f * row[j];
       }
     }
-    c.active_begin[c.eliminated.size()] = static_cast<long>(c.active_v.size());
+    c.n_active = n_active;
     ok = Factor(c.reduced, c.m, c.common);
   } else {
     ++c.full_setups;
@@ -218,22 +230,44 @@ int Solve(SUNLinearSolver S, SUNMatrix, N_Vector x, N_Vector b, sunrealtype) {
     c.last_flag = ok ? SUNLS_SUCCESS : SUNLS_PACKAGE_FAIL_REC;
     return c.last_flag;
   }
-  for (int r = 0; r < c.m; ++r) c.z[r] = bv[c.kept[r]];
-  for (std::size_t e = 0; e < c.eliminated.size(); ++e) {
-    const double xk = bv[c.eliminated_state[e]] * c.inverse_diagonal[e];
-    for (long i = c.active_begin[e]; i < c.active_begin[e + 1]; ++i) c.z[c.active_v[i]] -= c.active_values[i] * xk;
+  // z = b_V - M(V, k) b_k / M(k, k): each z_v takes its terms in the order of the states.
+  const std::size_t n_eliminated = c.eliminated_state.size();
+  const int* const state = c.eliminated_state.data();
+  const double* const inverse_diagonal = c.inverse_diagonal.data();
+  double* const xk = c.xk.data();
+  double* const z = c.z.data();
+  for (std::size_t e = 0; e < n_eliminated; ++e) xk[e] = bv[state[e]] * inverse_diagonal[e];
+  for (int r = 0; r < c.m; ++r) z[r] = bv[c.kept[r]];
+  {
+    const int* const v = c.active_v.data();
+    const int* const of = c.active_e.data();
+    const double* const a = c.active_values.data();
+    for (long i = 0; i < c.n_active; ++i) z[v[i]] -= a[i] * xk[of[i]];
   }
-  if (klu_l_solve(c.reduced.symbolic, c.reduced.numeric, c.m, 1, c.z.data(), &c.common) == 0) {
+  if (klu_l_solve(c.reduced.symbolic, c.reduced.numeric, c.m, 1, z, &c.common) == 0) {
     c.last_flag = SUNLS_PACKAGE_FAIL_REC;
     return c.last_flag;
   }
-  // x_V = z; x_k = (b_k - M(k, V) x_V) / M(k, k), written after b_k was read (b may be x).
-  const std::size_t n_eliminated = c.eliminated_state.size();
-  for (std::size_t e = 0; e < n_eliminated; ++e) {
-    const int k = c.eliminated_state[e];
+  // x_V = z; x_k = (b_k - M(k, V) x_V) / M(k, k), written after b_k was read (b may be x), by
+  // rows of one entry, of two, and the rest: the same sums, term by term.
+  const long* const begin = c.row_begin.data();
+  const double* const row = c.row_values.data();
+  const int* const v = c.row_reduced.data();
+  for (const int e : c.rows_of_one) {
+    const long p = begin[e];
+    const int k = state[e];
+    xv[k] = (bv[k] - row[p] * z[v[p]]) * inverse_diagonal[e];
+  }
+  for (const int e : c.rows_of_two) {
+    const long p = begin[e];
+    const int k = state[e];
+    xv[k] = (bv[k] - row[p] * z[v[p]] - row[p + 1] * z[v[p + 1]]) * inverse_diagonal[e];
+  }
+  for (const int e : c.rows_of_more) {
+    const int k = state[e];
     double sum = bv[k];
-    for (long i = c.row_begin[e]; i < c.row_begin[e + 1]; ++i) sum -= c.row_values[i] * c.z[c.row_reduced[i]];
-    xv[k] = sum * c.inverse_diagonal[e];
+    for (long i = begin[e]; i < begin[e + 1]; ++i) sum -= row[i] * z[v[i]];
+    xv[k] = sum * inverse_diagonal[e];
   }
   for (int r = 0; r < c.m; ++r) xv[c.kept[r]] = c.z[r];
   c.last_flag = SUNLS_SUCCESS;
@@ -324,6 +358,7 @@ SUNLinearSolver NewReducedKlu(const std::vector<int>& colptr, const std::vector<
     if (el.diagonal < 0) return nullptr;  // the pattern lacks a diagonal: not for this solver
     for (long p : el.zero_pos)
       if (p < 0) return nullptr;  // not structurally symmetric
+    c->zero_positions.insert(c->zero_positions.end(), el.zero_pos.begin(), el.zero_pos.end());
     c->eliminated.push_back(std::move(el));
   }
   c->identity.assign(rows.size(), 0.0);
@@ -338,9 +373,18 @@ SUNLinearSolver NewReducedKlu(const std::vector<int>& colptr, const std::vector<
   c->full.rows.assign(rows.begin(), rows.end());
   c->full.values.assign(rows.size(), 0.0);
   c->inverse_diagonal.assign(c->eliminated.size(), 0.0);
-  c->active_begin.assign(c->eliminated.size() + 1, 0);
+  std::size_t column_entries = 0;
+  for (const Eliminated& el : c->eliminated) column_entries += el.column_pos.size();
+  c->active_v.assign(column_entries, 0);
+  c->active_e.assign(column_entries, 0);
+  c->active_values.assign(column_entries, 0.0);
+  c->xk.assign(c->eliminated.size(), 0.0);
   c->z.assign(c->m, 0.0);
   c->row_begin.push_back(static_cast<long>(c->row_values.size()));
+  for (std::size_t e = 0; e < c->eliminated.size(); ++e) {
+    const long length = c->row_begin[e + 1] - c->row_begin[e];
+    (length == 1 ? c->rows_of_one : length == 2 ? c->rows_of_two : c->rows_of_more).push_back(static_cast<int>(e));
+  }
   klu_l_defaults(&c->common);
   c->common.ordering = 0;  // AMD: the pattern is structurally symmetric
 

@@ -386,13 +386,13 @@ int ReducedLinearSystem(sunrealtype t, N_Vector y, N_Vector fy, SUNMatrix A, sun
 /// Whether a root function changed sign from `before` to `after` in the allowed direction
 /// (CVodeSetRootDirection: 0 either, 1 rising, -1 falling); marks them in `info` (+1 rising,
 /// -1 falling, as CVodeGetRootInfo). A function that is exactly zero before is not a crossing.
-/// Only the roots with `kinematic[i]` equal to `which` are looked at (the others get info 0).
+/// Only the roots listed in `roots` (those of one kind) are looked at; the others get info 0.
 bool SignChanged(const std::vector<double>& before, const std::vector<double>& after, const std::vector<int>& direction,
-                 std::vector<int>& info, const std::vector<char>& kinematic, char which) {
+                 std::vector<int>& info, const std::vector<int>& roots) {
+  std::fill(info.begin(), info.end(), 0);
   bool any = false;
-  for (std::size_t i = 0; i < info.size(); ++i) {
-    info[i] = 0;
-    if (kinematic[i] != which || before[i] == 0.0) continue;
+  for (const int i : roots) {
+    if (before[i] == 0.0) continue;
     const bool rising = before[i] < 0.0 && after[i] >= 0.0;
     const bool falling = before[i] > 0.0 && after[i] <= 0.0;
     if ((rising && direction[i] >= 0) || (falling && direction[i] <= 0)) {
@@ -855,12 +855,10 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
   // model (a jammed actuator's input speed reverses hundreds of times).
   const int n_roots = sys.NumRoots();
   std::vector<int> root_info(std::max(n_roots, 1)), directions(std::max(n_roots, 1));
-  std::vector<char> kinematic(std::max(n_roots, 1), 0);
-  int n_state_roots = 0;  // the roots that need the model evaluated
-  for (int k = 0; k < n_roots; ++k) {
-    kinematic[k] = sys.KinematicRoot(k) ? 1 : 0;
-    if (!kinematic[k]) ++n_state_roots;
-  }
+  // The roots of each kind: roots_of[1] the kinematic ones, roots_of[0] those that need the model.
+  std::vector<int> roots_of[2];
+  for (int k = 0; k < n_roots; ++k) roots_of[sys.KinematicRoot(k) ? 1 : 0].push_back(k);
+  const int n_state_roots = static_cast<int>(roots_of[0].size());
   const bool has_kinematic_roots = n_state_roots < n_roots;
   const bool has_state_roots = n_state_roots > 0;
   long root_evaluations = 0;  // the model evaluated for its root functions (step ends, location)
@@ -997,7 +995,7 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
   std::vector<int> kinematic_info(root_info.size(), 0), probe_info(root_info.size(), 0),
       point_info(root_info.size(), 0);
   std::vector<double> g_low, g_high;
-  auto locate_crossing = [&](double ta, double tb, char which, std::vector<int>& info,
+  auto locate_crossing = [&](double ta, double tb, int which, std::vector<int>& info,
                              const std::vector<double>& g_tb, double& t_root) {
     const double tol = 100.0 * std::numeric_limits<double>::epsilon() * std::max(std::abs(ta), std::abs(tb)) + 1e-15;
     g_low = g_prev;
@@ -1033,7 +1031,7 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
         ++root_evaluations;
       }
       side_before = side;
-      if (SignChanged(g_low, g_probe, directions, probe_info, kinematic, which)) {
+      if (SignChanged(g_low, g_probe, directions, probe_info, roots_of[which])) {
         tb = tm;  // a crossing in (ta, tm]
         g_high.swap(g_probe);
         info.swap(probe_info);
@@ -1042,7 +1040,7 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
       } else {
         ta = tm;  // none there: the crossing of (ta, tb] lies in (tm, tb]
         g_low.swap(g_probe);
-        SignChanged(g_low, g_high, directions, info, kinematic, which);
+        SignChanged(g_low, g_high, directions, info, roots_of[which]);
         lead = first(info);
         side = 2;
       }
@@ -1132,7 +1130,7 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
     };
     // A kinematic root in (t, t_ret]: located from the states alone.
     bool kinematic_root = false, state_root = false;
-    if (step_moved && has_kinematic_roots && SignChanged(g_prev, end.g, directions, kinematic_info, kinematic, 1)) {
+    if (step_moved && has_kinematic_roots && SignChanged(g_prev, end.g, directions, kinematic_info, roots_of[1])) {
       double t_root = t_ret;
       if (!locate_crossing(g_prev_time, t_ret, 1, kinematic_info, end.g, t_root)) {
         record_failure_state();
@@ -1145,7 +1143,7 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
     }
     // A root that needs the model in (g_prev_time, t_ret]: located on the evaluated model. One at
     // the kinematic root's very time is handled with it.
-    if (step_moved && has_state_roots && SignChanged(g_prev, end.g, directions, root_info, kinematic, 0)) {
+    if (step_moved && has_state_roots && SignChanged(g_prev, end.g, directions, root_info, roots_of[0])) {
       double t_root = t_ret;
       if (!locate_crossing(g_prev_time, t_ret, 0, root_info, end.g, t_root)) {
         record_failure_state();
@@ -1199,7 +1197,7 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
       }
       if (check_roots) {
         if (!roots_done) sys.Roots(g_out.data());
-        if (SignChanged(g_prev, g_out, directions, point_info, kinematic, 0)) {
+        if (SignChanged(g_prev, g_out, directions, point_info, roots_of[0])) {
           double t_root = t_out;
           if (!locate_crossing(g_prev_time, t_out, 0, point_info, g_out, t_root)) {
             failed = true;

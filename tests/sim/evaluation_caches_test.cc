@@ -1,13 +1,16 @@
 // The evaluation caches and shortcuts of the simulator's internals (sim/src/model.h): Memo
 // recognises the arguments of the last call bit for bit; ConstraintEntries keeps up to four
 // entries inside the constraint and spills more, in order; LossyGear's law is reused only within
-// one evaluation point (Eval::point), mode and quadrant; SmoothSign is tanh; the Stribeck peak
+// one evaluation point (Eval::point), mode and quadrant; a table read near its last interval
+// reads what a search from the start reads; SmoothSign is tanh; the Stribeck peak
 // and SpringDamper's direct law are the products they replace. The simulator's results do not
 // depend on either (the campaign and peak tests compare them); these pin down the cases the
 // models rarely reach.
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <bit>
+#include <cstdint>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -34,6 +37,36 @@ TEST(Memo, SameOnlyForBitIdenticalArguments) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   EXPECT_FALSE(memo.Same({nan, 2.0}));
   EXPECT_TRUE(memo.Same({nan, 2.0}));  // the same bits give the same value of a pure function
+}
+
+// A table read from the interval of its last read finds the interval InterpolatePoints finds
+// from the start, so the same value bit for bit: along a sweep up and down, with jumps, at the
+// knots, outside the table on both sides, at infinities and NaN, also on a table with a repeated
+// abscissa (nondecreasing) and on tables of one and two points.
+TEST(InterpolatePointsNear, ReadsTheValueInterpolatePointsReads) {
+  const double inf = std::numeric_limits<double>::infinity();
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const std::vector<std::vector<double>> abscissae{
+      {0.0}, {0.0, 1.0}, {-2.0, -1.0, 0.5, 3.0, 4.0, 10.0}, {0.0, 1.0, 1.0, 2.0, 5.0}};
+  for (const std::vector<double>& xs : abscissae) {
+    std::vector<double> ys;
+    for (std::size_t i = 0; i < xs.size(); ++i) ys.push_back(std::sin(3.0 * static_cast<double>(i) + 0.3));
+    std::vector<double> queries;
+    for (int k = 0; k <= 60; ++k) queries.push_back(-4.0 + 0.25 * k);  // up, across every knot
+    for (int k = 60; k >= 0; --k) queries.push_back(-4.0 + 0.25 * k + 0.01);  // and down
+    for (double x : {11.0, -3.0, 4.0, 1.0, 1.0, 0.5, -inf, inf, nan, 2.0, nan, -2.0, 10.0, 3.0}) queries.push_back(x);
+    for (double x : xs) queries.push_back(x);
+    std::size_t hint = 0;
+    auto x_at = [&](std::size_t i) { return xs[i]; };
+    auto y_at = [&](std::size_t i) { return ys[i]; };
+    for (double x : queries) {
+      const double expected = InterpolatePoints(xs.size(), x_at, y_at, x);
+      const double near = InterpolatePointsNear(xs.size(), x_at, y_at, x, hint);
+      EXPECT_EQ(std::bit_cast<std::uint64_t>(near), std::bit_cast<std::uint64_t>(expected))
+          << xs.size() << " points, x = " << x;
+      EXPECT_LT(hint + 1, std::max<std::size_t>(xs.size(), 2));
+    }
+  }
 }
 
 // SmoothSign is tanh by the expm1 formulas, inline: within an ulp of std::tanh everywhere it

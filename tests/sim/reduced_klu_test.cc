@@ -236,6 +236,47 @@ TEST(ReducedKlu, GivenTheJacobianAndGammaItSolvesAsGivenIMinusGammaJ) {
   EXPECT_EQ(ReducedKluFullSetups(from_jacobian.fixture->solver()), 1);
 }
 
+// An eliminated state whose row reads three speeds (as a differential's angle would), beside the
+// angles (one speed) and the twists (two): the back substitution takes each length of row in a
+// loop of its own, and every one gives the whole system's solution.
+TEST(ReducedKlu, RowsOfOneTwoAndThreeSpeedsSolveAsTheWholeSystem) {
+  const Chain chain(6);
+  const int k = chain.n, n = chain.n + 1;  // the new state, last
+  std::vector<std::vector<int>> dense(n, std::vector<int>(n, 0));
+  for (int i = 0; i < chain.n; ++i)
+    for (int j = 0; j < chain.n; ++j) dense[i][j] = chain.dense[i][j];
+  const std::vector<int> footprint{1, 3, 5, 9, k};  // the speeds it reads and those it drives
+  for (int a : footprint)
+    for (int b : footprint) dense[a][b] = 1;
+  Rows speed_rows = chain.speed_rows;
+  speed_rows.push_back(std::vector<int>{1, 5, 9});
+  std::vector<int> colptr, rows;
+  Pattern(dense, colptr, rows);
+  const std::vector<char> eliminated = EliminatedStates(colptr, rows, speed_rows);
+  ASSERT_EQ(eliminated[k], 1);
+  int count = 0;
+  for (char e : eliminated) count += e;
+  EXPECT_EQ(count, 6 + 5 + 1);  // the angles, the twists and the new state
+  SolverFixture fixture(colptr, rows, speed_rows);
+  ASSERT_NE(fixture.solver(), nullptr);
+  EXPECT_EQ(ReducedKluSize(fixture.solver()), 6);
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (double gamma : {1e-5, 1e-3, 1e-2}) {
+    Eigen::MatrixXd J = Eigen::MatrixXd::Zero(n, n);
+    J.topLeftCorner(chain.n, chain.n) = chain.Jacobian(rng);
+    J(k, 1) = 1.0;
+    J(k, 5) = 1.0;
+    J(k, 9) = -2.0;
+    for (int v : {1, 3, 5, 9}) J(v, k) = 50.0 * u(rng);  // it drives node speeds
+    const Eigen::MatrixXd M = Eigen::MatrixXd::Identity(n, n) - gamma * J;
+    Eigen::VectorXd b(n);
+    for (int i = 0; i < n; ++i) b(i) = u(rng);
+    EXPECT_LT(fixture.SolveError(M, b), 1e-12) << "gamma " << gamma;
+  }
+  EXPECT_EQ(ReducedKluFullSetups(fixture.solver()), 0);
+}
+
 /// Four inertias on three springs, with a solver.
 class ReducedKluOnFourInertias : public ::testing::Test {
  protected:
