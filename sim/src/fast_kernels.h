@@ -7,7 +7,9 @@
 // of the run time went into N_VLinearSum, N_VWSqrSumLocal and the sparse matrix copy, zero and
 // scale-add. These kernels have the same semantics as nvector_serial.c and sunmatrix_sparse.c
 // of SUNDIALS 6.4 (operation by operation, including the special values of N_VMinQuotient and
-// N_VInvTest); they are compiled with the project's optimisation. Clones inherit the tables, so
+// N_VInvTest), but for the weighted sums of squares behind CVODE's norms, which add in eight
+// partial sums instead of one running sum (other roundoff, a fifth of the time); they are
+// compiled with the project's optimisation. Clones inherit the tables, so
 // every vector CVODE clones from the state vector uses them.
 #pragma once
 

@@ -2,7 +2,10 @@
 // nvector_serial operations, bit for bit: the kernels promise the same doubles operation by
 // operation (CVODE's steps, and so every answer, depend on it). z = a*x + b*y for every
 // special case of the coefficients (1, -1, a == b, a == -b, the general one, signed zeros),
-// with z a third vector, x itself or y itself; the linear combinations and the weighted norm.
+// with z a third vector, x itself or y itself; the linear combinations. The weighted norms add
+// their squares in eight partial sums (element i to sum i mod 8, the sums pairwise), not in
+// SUNDIALS' one running sum: the same doubles as that order written out, within a few ulps of
+// SUNDIALS' norm.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -105,7 +108,7 @@ TEST(FastKernels, LinearSumGivesSundialsDoublesInEveryCase) {
   EXPECT_EQ(cases, 9 * 9 * 3);
 }
 
-TEST(FastKernels, CombinationsAndNormGiveSundialsDoubles) {
+TEST(FastKernels, CombinationsGiveSundialsDoublesAndTheNormItsOwnOrder) {
   const Vectors sundials(false), ours(true);
   double norms[2] = {0.0, 0.0};
   for (int k = 0; k < 2; ++k) {
@@ -125,18 +128,83 @@ TEST(FastKernels, CombinationsAndNormGiveSundialsDoubles) {
     N_Vector Y[2] = {v[0], v[1]}, Z[2] = {v[0], v[1]};
     double a[2] = {-1.25, 3.0};
     N_VScaleAddMulti(2, a, v[2], Y, Z);
-    // The weighted RMS norm of finite values (weights: |x| + 1).
+    // The weighted RMS norm of finite values whose squares are finite (weights: |x| + 1).
     v.Set(2, Values(8));
     std::vector<double> w = Values(9);
     for (double& x : w) x = std::isfinite(x) ? std::abs(x) + 1.0 : 1.0;
     std::vector<double> x = Values(8);
-    for (double& value : x) value = std::isfinite(value) ? value : 1.0;
+    for (double& value : x) value = std::abs(value) < 1e100 ? value : 1.0;  // (squares that do not overflow)
     v.Set(1, w);
     v.Set(2, x);
     norms[k] = N_VWrmsNorm(v[2], v[1]);
   }
   for (int k : {0, 1, 3}) EXPECT_TRUE(SameBits(sundials.Get(k), ours.Get(k))) << "vector " << k;
-  EXPECT_TRUE(SameDouble(norms[0], norms[1])) << norms[0] << " against " << norms[1];
+  // The norm in the partial sums' order, written out.
+  const std::vector<double> x = ours.Get(2), w = ours.Get(1);
+  double partial[8] = {};
+  for (int i = 0; i < kLength; ++i) partial[i % 8] += (x[i] * w[i]) * (x[i] * w[i]);
+  const double in_order =
+      std::sqrt((((partial[0] + partial[4]) + (partial[1] + partial[5])) +
+                 ((partial[2] + partial[6]) + (partial[3] + partial[7]))) / kLength);
+  EXPECT_TRUE(SameDouble(in_order, norms[1])) << in_order << " against " << norms[1];
+  EXPECT_NE(norms[0], 0.0);
+  EXPECT_LE(std::abs(norms[1] - norms[0]), 4.0 * std::numeric_limits<double>::epsilon() * norms[0])
+      << norms[0] << " against " << norms[1];
+}
+
+// Data on which the order of the additions shows: one running sum, eight partial sums added
+// pairwise, the same eight added in a row, and four partial sums each give another double. The
+// norm is the pairwise one's.
+TEST(FastKernels, NormAddsInItsOwnOrder) {
+  const Vectors ours(true);
+  std::vector<double> x(kLength), w(kLength);
+  for (int i = 0; i < kLength; ++i) {
+    x[i] = std::sin(44.0 * i + 1.0) * std::pow(10.0, (44 * i) % 7 - 3);
+    w[i] = 1.0 / (1.0 + 0.1 * i);
+  }
+  ours.Set(0, x);
+  ours.Set(1, w);
+  double running = 0.0, eight[8] = {}, four[4] = {};
+  for (int i = 0; i < kLength; ++i) {
+    const double p = x[i] * w[i];
+    running += p * p;
+    eight[i % 8] += p * p;
+    four[i % 4] += p * p;
+  }
+  const double pairwise = ((eight[0] + eight[4]) + (eight[1] + eight[5])) + ((eight[2] + eight[6]) + (eight[3] + eight[7]));
+  double in_a_row = 0.0;
+  for (double e : eight) in_a_row += e;
+  const double by_four = (four[0] + four[2]) + (four[1] + four[3]);
+  ASSERT_NE(pairwise, running);
+  ASSERT_NE(pairwise, in_a_row);
+  ASSERT_NE(pairwise, by_four);
+  EXPECT_TRUE(SameDouble(std::sqrt(pairwise / kLength), N_VWrmsNorm(ours[0], ours[1])));
+}
+
+// The masked norm (N_VWrmsNormMask) adds only the elements whose id is positive, in the same
+// partial sums: an element masked out counts for nothing, even where it is not finite.
+TEST(FastKernels, MaskedNormLeavesTheMaskedElementsOut) {
+  const Vectors ours(true);
+  std::vector<double> x = Values(3), w(kLength), id(kLength);
+  for (int i = 0; i < kLength; ++i) {
+    w[i] = 1.0 + 0.1 * i;
+    id[i] = i % 3 == 0 ? 0.0 : 1.0;
+    if (i % 3 == 0) x[i] = std::numeric_limits<double>::quiet_NaN();
+  }
+  for (double& value : x)
+    if (!std::isnan(value) && !std::isfinite(value)) value = 2.0;
+  ours.Set(0, x);
+  ours.Set(1, w);
+  ours.Set(2, id);
+  double partial[8] = {};
+  for (int i = 0; i < kLength; ++i)
+    if (id[i] > 0.0) partial[i % 8] += (x[i] * w[i]) * (x[i] * w[i]);
+  const double expected =
+      std::sqrt((((partial[0] + partial[4]) + (partial[1] + partial[5])) +
+                 ((partial[2] + partial[6]) + (partial[3] + partial[7]))) / kLength);
+  const double got = N_VWrmsNormMask(ours[0], ours[1], ours[2]);
+  EXPECT_TRUE(SameDouble(expected, got)) << expected << " against " << got;
+  EXPECT_TRUE(std::isfinite(got));
 }
 
 }  // namespace
