@@ -461,9 +461,12 @@ struct PeakTrack {
   bool middle_smooth = false;  ///< the last sample is not a kink: it may be a parabola's middle
   double t1 = 0.0, t2 = 0.0;   ///< times of the samples before the last one and of the last one
   std::vector<double> v1, v2;  ///< the elements' torques there
-  void Push(double t, const std::vector<double>& tau, bool smooth) {
+  /// Takes the new sample's torques by swapping buffers, not copying them: `tau` is left with
+  /// the oldest sample's buffer, which the next readings overwrite (System::StepEndReadings
+  /// writes every element with readings; the others hold NaN in every buffer).
+  void Push(double t, std::vector<double>& tau, bool smooth) {
     v1.swap(v2);
-    v2 = tau;
+    v2.swap(tau);
     t1 = t2;
     t2 = t;
     samples = std::min(samples + 1, 2);
@@ -634,7 +637,7 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
   bool first_sample = true;
   double last_t = options.start_time, last_loss = 0.0, last_source = 0.0, impulsive_base = 0.0;
   PeakTrack track;
-  auto record = [&](double t, const Readings& r, SampleKind kind) {
+  auto record = [&](double t, Readings& r, SampleKind kind) {
     if (kind != SampleKind::kOutputPoint) {
       monitor(t, r.loss, r.loss_scale, r.loss_min);
       // (Raw pointers: the store into has_torque, a char, could otherwise alias every vector's

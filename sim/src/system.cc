@@ -1415,7 +1415,10 @@ void System::MarkDirectCalls() {
   derivatives_direct_.clear();
   for (const Element* el : derivatives_) derivatives_direct_.push_back(spring_damper(*el));
   reading_direct_.clear();
-  for (int i : reading_elements_) reading_direct_.push_back(spring_damper(*elements_[static_cast<std::size_t>(i)]));
+  for (int i : reading_elements_) {
+    const Element& el = *elements_[static_cast<std::size_t>(i)];
+    reading_direct_.push_back(IsSmoothFriction(el) ? kSmoothFriction : spring_damper(el));
+  }
 }
 
 void System::EvaluateSignals(const std::vector<int>& order) {
@@ -1865,6 +1868,27 @@ void System::BuildGroups() {
     }
     for (int n : g.nodes) local_[n] = -1;
   }
+  pair_groups_.clear();
+  other_groups_.clear();
+  for (std::size_t i = 0; i < groups_.size(); ++i) {
+    const Group& g = groups_[i];
+    if (g.schur && g.nodes.size() == 2 && g.rows.size() == 1 && g.column_begin[1] == 2 && g.row_begin[1] == 2) {
+      PairGroup p;
+      for (int k = 0; k < 2; ++k) {
+        p.node[k] = g.nodes[k];
+        p.inverse_J[k] = g.inverse_J[k];
+        p.column_entry[k] = g.column_entry[k];
+        p.column_local[k] = g.column_local[k];
+        p.row_entry[k] = g.row_entry[k];
+        p.row_local[k] = g.row_local[k];
+      }
+      p.row = g.rows[0];
+      p.group = static_cast<int>(i);
+      pair_groups_.push_back(p);
+    } else {
+      other_groups_.push_back(static_cast<int>(i));
+    }
+  }
 }
 
 // M acc - C lambda = F, R acc = rhs with M = diag(J) > 0: acc = M^-1 (F + C lambda) and the
@@ -1933,34 +1957,6 @@ bool System::SolveSchurOne(Group& g) {
   const int *const column_entry = g.column_entry.data(), *const column_local = g.column_local.data();
   const int *const row_entry = g.row_entry.data(), *const row_local = g.row_local.data();
   const int column_end = g.column_begin[1], row_end = g.row_begin[1];
-  if (nn == 2 && column_end == 2 && row_end == 2) {
-    // Nearly every group: a gear or a rigid coupling between two nodes (594 000 of the 645 000
-    // groups solved in rupture_wtb). The loops of the general case below, unrolled, on locals
-    // rather than the group's arrays (nothing reads those after a solve): the same operations
-    // in the same order.
-    double acc0[2] = {force[nodes[0]] * inverse_J[0], force[nodes[1]] * inverse_J[1]};
-    double column[2] = {0.0, 0.0};
-    const int cl0 = column_local[0], cl1 = column_local[1], rl0 = row_local[0], rl1 = row_local[1];
-    const double c0 = ck[column_entry[0]].second, c1 = ck[column_entry[1]].second;
-    const double r0 = rk[row_entry[0]].second, r1 = rk[row_entry[1]].second;
-    column[cl0] += c0 * inverse_J[cl0];
-    column[cl1] += c1 * inverse_J[cl1];
-    double s = 0.0;
-    s += r0 * column[rl0];
-    s += r1 * column[rl1];
-    double v = c.rhs;
-    v -= r0 * acc0[rl0];
-    v -= r1 * acc0[rl1];
-    if (!(std::abs(s) > 1e-12 * std::max(0.0, std::abs(s)))) return false;
-    const double lambda = v / s;
-    c.lambda = lambda;
-    acc0[cl0] += c0 * lambda * inverse_J[cl0];
-    acc0[cl1] += c1 * lambda * inverse_J[cl1];
-    double* const acc = e.acc.data();
-    acc[nodes[0]] = acc0[0];
-    acc[nodes[1]] = acc0[1];
-    return true;
-  }
   double* const acc0 = g.x.data();
   double* const column = g.b.data();
   for (int i = 0; i < nn; ++i) {
@@ -1987,6 +1983,38 @@ bool System::SolveSchurOne(Group& g) {
   return true;
 }
 
+// SolveSchurOne's loops for a PairGroup, unrolled, on locals (nothing reads the group's arrays
+// after a solve): the same operations in the same order, so the same doubles.
+inline bool System::SolvePair(const PairGroup& p) {
+  Eval& e = eval_;
+  const double* const force = e.force.data();
+  Constraint& c = e.constraints[p.row];
+  const std::pair<int, double>* const ck = c.column.begin();
+  const std::pair<int, double>* const rk = c.row.begin();
+  double acc0[2] = {force[p.node[0]] * p.inverse_J[0], force[p.node[1]] * p.inverse_J[1]};
+  double column[2] = {0.0, 0.0};
+  const int cl0 = p.column_local[0], cl1 = p.column_local[1], rl0 = p.row_local[0], rl1 = p.row_local[1];
+  const double c0 = ck[p.column_entry[0]].second, c1 = ck[p.column_entry[1]].second;
+  const double r0 = rk[p.row_entry[0]].second, r1 = rk[p.row_entry[1]].second;
+  column[cl0] += c0 * p.inverse_J[cl0];
+  column[cl1] += c1 * p.inverse_J[cl1];
+  double s = 0.0;
+  s += r0 * column[rl0];
+  s += r1 * column[rl1];
+  double v = c.rhs;
+  v -= r0 * acc0[rl0];
+  v -= r1 * acc0[rl1];
+  if (!(std::abs(s) > 1e-12 * std::max(0.0, std::abs(s)))) return false;
+  const double lambda = v / s;
+  c.lambda = lambda;
+  acc0[cl0] += c0 * lambda * p.inverse_J[cl0];
+  acc0[cl1] += c1 * lambda * p.inverse_J[cl1];
+  double* const acc = e.acc.data();
+  acc[p.node[0]] = acc0[0];
+  acc[p.node[1]] = acc0[1];
+  return true;
+}
+
 bool System::Solve() {
   Eval& e = eval_;
   const int n_nodes = static_cast<int>(nodes_.size());
@@ -2007,74 +2035,81 @@ bool System::Solve() {
   assert(SignatureMatches());
   for (const auto& [n, J] : unconstrained_) e.acc[n] = e.force[n] / J;
   for (int k : grounded_rows_) e.constraints[k].lambda = 0.0;
-  for (Group& g : groups_) {
-    const int nn = static_cast<int>(g.nodes.size()), m = static_cast<int>(g.rows.size());
-    if (g.schur && (m == 1 ? SolveSchurOne(g) : SolveSchur(g))) continue;
-    for (int i = 0; i < nn; ++i) local_[g.nodes[i]] = i;
-    g.A.setZero();
-    for (int i = 0; i < nn; ++i) {
-      g.A(i, i) = nodes_[g.nodes[i]].J;
-      g.b[i] = e.force[g.nodes[i]];
-    }
-    for (int j = 0; j < m; ++j) {
-      const Constraint& c = e.constraints[g.rows[j]];
-      for (auto [n, coef] : c.column)
-        if (!nodes_[n].ground) g.A(local_[n], nn + j) -= coef;
-      for (auto [n, coef] : c.row)
-        if (!nodes_[n].ground) g.A(nn + j, local_[n]) += coef;
-      g.b[nn + j] = c.rhs;
-    }
-    // Partial pivoting suffices unless the constraints are redundant (a tiny pivot).
-    bool solved = false;
-    if (nn + m <= kSmallGroup) {
-      g.lu_work = g.A;
-      g.x = g.b;
-      solved = SmallLuSolve(g.lu_work.data(), g.x.data(), nn + m);
-    } else {
-      g.lu.compute(g.A);
-      const auto& lu = g.lu.matrixLU();
-      double pivot_min = std::numeric_limits<double>::infinity(), pivot_max = 0.0;
-      for (int i = 0; i < nn + m; ++i) {
-        pivot_min = std::min(pivot_min, std::abs(lu(i, i)));
-        pivot_max = std::max(pivot_max, std::abs(lu(i, i)));
-      }
-      if (pivot_min > 1e-12 * pivot_max) {
-        g.x = g.lu.solve(g.b);
-        solved = true;
-      }
-    }
-    if (!solved) {
-      // Redundant constraints (several stuck elements on one rigid shaft): the accelerations
-      // are unique, the split of the constraint torques is not; take the minimum-norm split.
-      Eigen::FullPivLU<Eigen::MatrixXd> full(g.A);
-      if (full.isInvertible()) {
-        g.x = full.solve(g.b);
-      } else {
-        g.x = g.A.completeOrthogonalDecomposition().solve(g.b);
-        const Eigen::MatrixXd kernel = full.kernel();
-        double worst = 0.0;
-        for (int c = 0; c < kernel.cols(); ++c)
-          worst = std::max(worst, kernel.col(c).head(nn).norm() / kernel.col(c).norm());
-        const double residual = (g.A * g.x - g.b).norm();
-        if (worst > 1e-8 || residual > 1e-8 * (1.0 + g.b.norm())) {
-          std::vector<std::string> names;
-          for (int n : g.nodes) names.push_back(nodes_[n].name);
-          std::vector<std::string> owners;
-          for (int k : g.rows) owners.push_back(elements_[e.constraints[k].owner]->id);
-          error_element_ = owners.empty() ? "" : owners.front();
-          error_ = "the accelerations of the flanges " + Join(names) +
-                   " are not determined (singular system of the constraints of " + Join(owners) +
-                   " at t = " + FormatMessageNumber(e.t) +
-                   "); add inertia to these flanges or remove redundant couplings";
-          for (int n : g.nodes) local_[n] = -1;
-          return false;
-        }
-      }
-    }
-    for (int i = 0; i < nn; ++i) e.acc[g.nodes[i]] = g.x[i];
-    for (int j = 0; j < m; ++j) e.constraints[g.rows[j]].lambda = g.x[nn + j];
-    for (int n : g.nodes) local_[n] = -1;
+  for (const PairGroup& p : pair_groups_)
+    if (!SolvePair(p) && !SolveGroup(groups_[p.group])) return false;
+  for (int i : other_groups_)
+    if (!SolveGroup(groups_[i])) return false;
+  return true;
+}
+
+bool System::SolveGroup(Group& g) {
+  Eval& e = eval_;
+  const int nn = static_cast<int>(g.nodes.size()), m = static_cast<int>(g.rows.size());
+  if (g.schur && (m == 1 ? SolveSchurOne(g) : SolveSchur(g))) return true;
+  for (int i = 0; i < nn; ++i) local_[g.nodes[i]] = i;
+  g.A.setZero();
+  for (int i = 0; i < nn; ++i) {
+    g.A(i, i) = nodes_[g.nodes[i]].J;
+    g.b[i] = e.force[g.nodes[i]];
   }
+  for (int j = 0; j < m; ++j) {
+    const Constraint& c = e.constraints[g.rows[j]];
+    for (auto [n, coef] : c.column)
+      if (!nodes_[n].ground) g.A(local_[n], nn + j) -= coef;
+    for (auto [n, coef] : c.row)
+      if (!nodes_[n].ground) g.A(nn + j, local_[n]) += coef;
+    g.b[nn + j] = c.rhs;
+  }
+  // Partial pivoting suffices unless the constraints are redundant (a tiny pivot).
+  bool solved = false;
+  if (nn + m <= kSmallGroup) {
+    g.lu_work = g.A;
+    g.x = g.b;
+    solved = SmallLuSolve(g.lu_work.data(), g.x.data(), nn + m);
+  } else {
+    g.lu.compute(g.A);
+    const auto& lu = g.lu.matrixLU();
+    double pivot_min = std::numeric_limits<double>::infinity(), pivot_max = 0.0;
+    for (int i = 0; i < nn + m; ++i) {
+      pivot_min = std::min(pivot_min, std::abs(lu(i, i)));
+      pivot_max = std::max(pivot_max, std::abs(lu(i, i)));
+    }
+    if (pivot_min > 1e-12 * pivot_max) {
+      g.x = g.lu.solve(g.b);
+      solved = true;
+    }
+  }
+  if (!solved) {
+    // Redundant constraints (several stuck elements on one rigid shaft): the accelerations
+    // are unique, the split of the constraint torques is not; take the minimum-norm split.
+    Eigen::FullPivLU<Eigen::MatrixXd> full(g.A);
+    if (full.isInvertible()) {
+      g.x = full.solve(g.b);
+    } else {
+      g.x = g.A.completeOrthogonalDecomposition().solve(g.b);
+      const Eigen::MatrixXd kernel = full.kernel();
+      double worst = 0.0;
+      for (int c = 0; c < kernel.cols(); ++c)
+        worst = std::max(worst, kernel.col(c).head(nn).norm() / kernel.col(c).norm());
+      const double residual = (g.A * g.x - g.b).norm();
+      if (worst > 1e-8 || residual > 1e-8 * (1.0 + g.b.norm())) {
+        std::vector<std::string> names;
+        for (int n : g.nodes) names.push_back(nodes_[n].name);
+        std::vector<std::string> owners;
+        for (int k : g.rows) owners.push_back(elements_[e.constraints[k].owner]->id);
+        error_element_ = owners.empty() ? "" : owners.front();
+        error_ = "the accelerations of the flanges " + Join(names) +
+                 " are not determined (singular system of the constraints of " + Join(owners) +
+                 " at t = " + FormatMessageNumber(e.t) +
+                 "); add inertia to these flanges or remove redundant couplings";
+        for (int n : g.nodes) local_[n] = -1;
+        return false;
+      }
+    }
+  }
+  for (int i = 0; i < nn; ++i) e.acc[g.nodes[i]] = g.x[i];
+  for (int j = 0; j < m; ++j) e.constraints[g.rows[j]].lambda = g.x[nn + j];
+  for (int n : g.nodes) local_[n] = -1;
   return true;
 }
 
@@ -2209,6 +2244,11 @@ double System::StepEndReadings(std::vector<double>& loss, std::vector<double>& t
       p = sd.msl::SpringDamper::LossPower(eval_);
       scale += std::abs(p) + std::abs(sd.msl::SpringDamper::SourcePower(eval_));
       tau[i] = sd.msl::SpringDamper::PeakTorque(eval_);
+    } else if (reading_direct_[k] == kSmoothFriction) {  // (final: the calls are direct)
+      const StribeckFriction& f = static_cast<const StribeckFriction&>(el);
+      p = f.LossPower(eval_);
+      scale += std::abs(p) + std::abs(f.SourcePower(eval_));
+      tau[i] = f.PeakTorque(eval_);
     } else {
       p = el.LossPower(eval_);
       scale += std::abs(p) + std::abs(el.SourcePower(eval_));

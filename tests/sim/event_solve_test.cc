@@ -7,7 +7,9 @@
 // compared with the active constraints again (their pattern changes only with the modes); an
 // event that changes a mode makes the next solve build them anew: a brake that holds a geared
 // pair of rotors (two rows in one group) releases at an event, and the solve after it has one
-// row left.
+// row left. The commonest group of the acceleration solve, two rotors and one gear, is solved
+// from a flat array of its own (System::PairGroup): checked against the closed form, beside
+// other pairs and a group of two rows.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -56,6 +58,59 @@ Network ThreeGroups() {
   gear("twice1", 1.0, "f", "g");
   gear("twice2", 1.0, "f", "g");
   return net;
+}
+
+// Three gear pairs and a chain of two gears, each rotor driven by a torque of its own: a pair
+// (w_a = ratio w_b) is one degree of freedom with the inertia ratio^2 J_a + J_b at b and the
+// torque ratio tau_a + tau_b, so acc_b = (ratio tau_a + tau_b) / (ratio^2 J_a + J_b) and
+// acc_a = ratio acc_b. A pair solved with another pair's nodes, inertias or gear would give that
+// pair's numbers; the chain (two rows: not a pair) must still satisfy its two gears.
+TEST(AccelerationSolve, GearPairsFromTheFlatArrayAreTheirClosedForm) {
+  struct Pair {
+    std::string a, b;
+    double J_a, J_b, ratio, tau_a, tau_b;
+  };
+  const std::vector<Pair> pairs = {{"a", "b", 0.5, 0.2, 4.0, 3.0, -1.0},
+                                   {"p", "q", 0.3, 0.8, -2.5, 2.0, 0.5},
+                                   {"u", "v", 1.7, 0.05, 0.1, -0.4, 0.9}};
+  Network net;
+  auto rotor = [&](const std::string& id, double J, double tau) {
+    net.AddElement("Inertia", id, P({{"J", J}, {"phi_start", 0}}));
+    net.AddElement("ConstantTorque", "tau_" + id, P({{"tau_constant", tau}}));
+    net.Connect("tau_" + id + ".flange", id + ".flange_a");
+  };
+  auto gear = [&](const std::string& id, double ratio, const std::string& from, const std::string& to) {
+    net.AddElement("IdealGear", id, P({{"ratio", ratio}}));
+    net.Connect(from + ".flange_b", id + ".flange_a");
+    net.Connect(id + ".flange_b", to + ".flange_a");
+  };
+  for (const Pair& p : pairs) {
+    rotor(p.a, p.J_a, p.tau_a);
+    rotor(p.b, p.J_b, p.tau_b);
+    gear("gear_" + p.a, p.ratio, p.a, p.b);
+  }
+  rotor("c", 0.3, 1.0);
+  rotor("d", 0.7, -0.5);
+  rotor("e", 1.1, 0.25);
+  gear("chain1", 2.0, "c", "d");
+  gear("chain2", 3.0, "d", "e");
+  System sys(net);
+  std::vector<double> y = sys.InitialState(0.0);
+  std::vector<std::string> changes, who;
+  ASSERT_TRUE(sys.HandleEvent(0.0, y.data(), true, &changes, &who)) << sys.error();
+  std::vector<double> ydot(y.size(), NAN);
+  ASSERT_TRUE(sys.Evaluate(0.0, y.data(), ydot.data())) << sys.error();
+  auto acc = [&](const std::string& id) { return ydot[static_cast<std::size_t>(SpeedState(sys, id))]; };
+  for (const Pair& p : pairs) {
+    const double acc_b = (p.ratio * p.tau_a + p.tau_b) / (p.ratio * p.ratio * p.J_a + p.J_b);
+    EXPECT_NEAR(acc(p.b), acc_b, 1e-12 * std::abs(acc_b)) << p.a << p.b;
+    EXPECT_NEAR(acc(p.a), p.ratio * acc_b, 1e-12 * std::abs(p.ratio * acc_b)) << p.a << p.b;
+  }
+  // The chain: w_c = 2 w_d and w_d = 3 w_e, one degree of freedom at e.
+  const double acc_e = (6.0 * 1.0 + 3.0 * -0.5 + 0.25) / (36.0 * 0.3 + 9.0 * 0.7 + 1.1);
+  EXPECT_NEAR(acc("e"), acc_e, 1e-12 * std::abs(acc_e));
+  EXPECT_NEAR(acc("d"), 3.0 * acc_e, 1e-12 * std::abs(acc_e));
+  EXPECT_NEAR(acc("c"), 6.0 * acc_e, 1e-12 * std::abs(acc_e));
 }
 
 TEST(SpeedProjection, IsTheLeastKineticEnergyChangeThatMeetsTheConstraintsGroupByGroup) {
