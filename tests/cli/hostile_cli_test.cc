@@ -29,14 +29,7 @@ using testing::ShellQuote;
 
 const char* const kProject = "tests/export/small_drive.json";  // simulates in well under a second
 
-fs::path Scratch() {
-  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  const fs::path dir = fs::temp_directory_path() / ("highlift_hostile_cli_" + std::string(info->name()) + "_" +
-                                                    std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
+fs::path Scratch() { return testing::TestScratchDirectory("highlift_hostile_cli"); }
 
 std::string Read(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);

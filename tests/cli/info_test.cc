@@ -167,10 +167,10 @@ TEST(DescribeProject, ReportsAndJsonAgree) {
 TEST(InfoCommand, InvalidGraphExitsWithTwo) {
   std::string text = kRig;
   text.replace(text.find("[\"shaft_2.b\", \"wtb.a\"]"), 22, "[\"shaft_2.b\", \"wtb.b\"]");
-  const auto path = std::filesystem::temp_directory_path() / ("highlift_info_test_" + std::to_string(::getpid()) + ".json");
+  const auto path = testing::RemoveAfterTheTest(std::filesystem::temp_directory_path() /
+                                                ("highlift_info_test_" + std::to_string(::getpid()) + ".json"));
   std::ofstream(path) << text;
   const auto r = testing::RunCli({"info", path.string(), "--json"});
-  std::filesystem::remove(path);
   EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
   EXPECT_FALSE(nlohmann::json::parse(r.out).at("ok").get<bool>());
   EXPECT_NE(r.err.find("highlift validate"), std::string::npos) << r.err;

@@ -63,6 +63,7 @@ TEST(StationInputGearboxCli, CheckDefinesTheLimiterMarginOnTheStationTorque) {
 TEST(StationInputGearboxCli, SimulatesTheJamAndExportsTheSameNetwork) {
   const auto dir = std::filesystem::temp_directory_path() / ("highlift_sig_" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
+  testing::RemoveAfterTheTest(dir);
   const auto csv = dir / "jam.csv";
   const auto sim = RunCli({"simulate", kRig, "--scenario", "jam_gra_1", "--output", csv.string()});
   ASSERT_EQ(sim.exit_code, 0) << sim.out << sim.err;
@@ -81,7 +82,6 @@ TEST(StationInputGearboxCli, SimulatesTheJamAndExportsTheSameNetwork) {
   EXPECT_NE(text.find("HighLift.Mechanical.TorqueLimiter sig_1_limiter"), std::string::npos);
   EXPECT_NE(text.find("HighLift.Mechanical.BranchGearbox sig_1"), std::string::npos);
   EXPECT_NE(text.find("connect(sig_1.flange_branch, sig_1_limiter.flange_a)"), std::string::npos);
-  std::filesystem::remove_all(dir);
 }
 
 /// The rig with each station input gearbox replaced by a branch_gearbox and a separate
@@ -132,10 +132,10 @@ std::map<std::string, double> PeakTorques(const std::string& project) {
 // the gear stage's agree between the types; the element order differs, so the integrator's
 // steps do: 0.5 %).
 TEST(StationInputGearboxCli, SimulatesAsABranchGearboxWithASeparateLimiter) {
-  const auto file = std::filesystem::temp_directory_path() / ("highlift_sig_separate_" + std::to_string(::getpid()) + ".json");
+  const auto file = testing::RemoveAfterTheTest(std::filesystem::temp_directory_path() /
+                                                ("highlift_sig_separate_" + std::to_string(::getpid()) + ".json"));
   std::ofstream(file) << SeparateRig().dump(1);
   const auto unit = PeakTorques(kRig), separate = PeakTorques(file.string());
-  std::filesystem::remove(file);
   for (const char* id : {"pdu", "shaft_1", "sig_1", "gra_1", "shaft_2", "sig_2", "gra_2"}) {
     ASSERT_TRUE(unit.count(id) && separate.count(id)) << id;
     EXPECT_NEAR(unit.at(id), separate.at(id), 5e-3 * separate.at(id)) << id;

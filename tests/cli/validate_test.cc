@@ -60,8 +60,8 @@ class BadInput : public ::testing::Test {
            ("highlift_validate_test_" + std::to_string(::getpid()) + "_" +
             ::testing::UnitTest::GetInstance()->current_test_info()->name());
     std::filesystem::create_directories(dir_);
+    testing::RemoveAfterTheTest(dir_);
   }
-  void TearDown() override { std::filesystem::remove_all(dir_); }
 
   /// Writes `text` to <dir>/<name> and returns the path.
   std::string Write(const std::string& name, const std::string& text) {

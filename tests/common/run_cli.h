@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include "common/scratch.h"
+
 namespace highlift::testing {
 
 struct CliResult {
@@ -107,14 +109,15 @@ inline std::string ReadFile(const std::filesystem::path& file) {
   return s.str();
 }
 
-/// A fresh directory `<tmp>/<prefix>_<test name>_<pid>` for the running gtest test.
+/// A fresh directory `<tmp>/<prefix>_<test name>_<pid>` for the running gtest test, removed
+/// when the test passed.
 inline std::filesystem::path TestScratchDirectory(const std::string& prefix) {
   const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
   const auto dir = std::filesystem::temp_directory_path() /
                    (prefix + "_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
-  return dir;
+  return RemoveAfterTheTest(dir);
 }
 
 }  // namespace highlift::testing

@@ -20,10 +20,13 @@ using highlift::testing::RunCli;
 using highlift::testing::ScratchDirectory;
 
 // ctest sets HIGHLIFT_DATA_DIR; when the executable is run by hand, keep the default database
-// out of the user's home.
+// out of the user's home, in a folder of this process that goes when every test passed.
 const bool kDataDirectorySet = [] {
-  if (!std::getenv("HIGHLIFT_DATA_DIR"))
-    ::setenv("HIGHLIFT_DATA_DIR", (std::filesystem::temp_directory_path() / "highlift_db_cli_test_home").c_str(), 1);
+  if (!std::getenv("HIGHLIFT_DATA_DIR")) {
+    const auto home = std::filesystem::temp_directory_path() /
+                      ("highlift_db_cli_test_home_" + std::to_string(::getpid()));
+    ::setenv("HIGHLIFT_DATA_DIR", testing::RemoveAtTheEnd(home).c_str(), 1);
+  }
   return true;
 }();
 

@@ -7,11 +7,13 @@
 #include <filesystem>
 #include <string>
 
+#include "common/scratch.h"
 #include "highlift/componentdb/records.h"
 
 namespace highlift::testing {
 
-/// A fresh directory under the system temporary directory, removed at the end of the test.
+/// A fresh directory under the system temporary directory, removed at the end of the test when
+/// it passed.
 class ScratchDirectory {
  public:
   ScratchDirectory() {
@@ -21,8 +23,8 @@ class ScratchDirectory {
              std::to_string(::getpid()));
     std::filesystem::remove_all(path_);
     std::filesystem::create_directories(path_);
+    RemoveAfterTheTest(path_);
   }
-  ~ScratchDirectory() { std::filesystem::remove_all(path_); }
   const std::filesystem::path& path() const { return path_; }
   std::filesystem::path operator/(const std::string& name) const { return path_ / name; }
 

@@ -10,6 +10,7 @@
 #include <fstream>
 #include <string>
 
+#include "common/scratch.h"
 #include "highlift/core/error.h"
 #include "highlift/core/graph.h"
 #include "highlift/core/output_file.h"
@@ -52,10 +53,11 @@ std::string Rig(const std::string& wall = "2 mm", const std::string& extra = "")
   return text;
 }
 
+/// `name` in the folder the tests of this process share.
 fs::path Scratch(const std::string& name) {
   const fs::path dir = fs::temp_directory_path() / ("highlift_hostile_" + std::to_string(::getpid()));
   fs::create_directories(dir);
-  return dir / name;
+  return testing::RemoveAtTheEnd(dir) / name;
 }
 
 std::string Read(const fs::path& p) {

@@ -7,6 +7,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "common/scratch.h"
+
 namespace highlift {
 namespace {
 
@@ -135,6 +137,7 @@ TEST(ProjectIo, RoundTripGivesAnEqualProject) {
   const Project first = ParseProject(kRig, "rig.json");
   const auto dir = std::filesystem::temp_directory_path() / ("highlift_core_roundtrip_" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
+  testing::RemoveAfterTheTest(dir);
   const auto file = dir / "rig.json";
   SaveProject(first, file);
   const Project second = LoadProject(file);
@@ -143,7 +146,6 @@ TEST(ProjectIo, RoundTripGivesAnEqualProject) {
   const Project third = ParseProject(ProjectToJson(second).dump(1));
   EXPECT_EQ(DescribeDifference(second, third), "");
   EXPECT_FALSE(std::filesystem::exists(file.string() + ".tmp." + std::to_string(::getpid())));
-  std::filesystem::remove_all(dir);
 }
 
 TEST(ProjectIo, DescribeDifferenceNamesTheParameter) {

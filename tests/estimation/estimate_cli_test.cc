@@ -15,10 +15,14 @@ namespace {
 
 using highlift::testing::RunCli;
 
-// ctest sets HIGHLIFT_DATA_DIR; run by hand, keep the default database out of the home directory.
+// ctest sets HIGHLIFT_DATA_DIR; run by hand, keep the default database out of the home directory,
+// in a folder of this process that goes when every test passed.
 const bool kDataDirectorySet = [] {
-  if (!std::getenv("HIGHLIFT_DATA_DIR"))
-    ::setenv("HIGHLIFT_DATA_DIR", (std::filesystem::temp_directory_path() / "highlift_estimate_cli_home").c_str(), 1);
+  if (!std::getenv("HIGHLIFT_DATA_DIR")) {
+    const auto home = std::filesystem::temp_directory_path() /
+                      ("highlift_estimate_cli_home_" + std::to_string(::getpid()));
+    ::setenv("HIGHLIFT_DATA_DIR", testing::RemoveAtTheEnd(home).c_str(), 1);
+  }
   return true;
 }();
 
@@ -35,10 +39,11 @@ const char* kProject = R"({
   "connections": [["pdu.left", "shaft_1.a"], ["shaft_1.b", "gra_1.input"]]
 })";
 
+/// `name` in the folder the tests of this process share (with the seed database built once).
 std::filesystem::path Scratch(const std::string& name) {
   const auto dir = std::filesystem::temp_directory_path() / ("highlift_estimate_" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
-  return dir / name;
+  return testing::RemoveAtTheEnd(dir) / name;
 }
 
 // A database made from this build's seed (the default database in the data directory may have

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <unistd.h>
 
+#include "common/scratch.h"
 #include "highlift/componentdb/database.h"
 #include "highlift/core/error.h"
 #include "highlift/estimation/estimator.h"
@@ -50,13 +51,13 @@ class EstimateProjectTest : public ::testing::Test {
     file_ = new std::filesystem::path(std::filesystem::temp_directory_path() /
                                       ("highlift_estimation_" + std::to_string(::getpid()) + ".sqlite"));
     std::filesystem::remove(*file_);
+    for (const char* s : {"", "-wal", "-shm"}) testing::RemoveAtTheEnd(file_->string() + s);
     componentdb::CreateDatabaseFromSeed(*file_);
     db_ = new componentdb::ComponentDatabase(
         componentdb::ComponentDatabase::Open(*file_, componentdb::ComponentDatabase::Mode::kReadOnly));
   }
   static void TearDownTestSuite() {
-    delete db_;
-    for (const char* s : {"", "-wal", "-shm"}) std::filesystem::remove(file_->string() + s);
+    delete db_;  // closes the database before the cleaner removes it at the end
     delete file_;
   }
   static const Parameter& P(const Project& p, const std::string& component, const std::string& parameter) {

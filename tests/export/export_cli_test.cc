@@ -14,11 +14,12 @@ namespace {
 using testing::ReadText;
 using testing::RunCli;
 
+/// A folder for the running test, absent at first; removed when the test passed.
 std::filesystem::path TempDir(const std::string& name) {
   const auto dir = std::filesystem::temp_directory_path() /
                    ("highlift_export_" + name + "_" + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
-  return dir;
+  return testing::RemoveAfterTheTest(dir);
 }
 
 TEST(ExportCli, ExportsAnElementNetworkWithAFlangeConnectedTwice) {
@@ -27,7 +28,6 @@ TEST(ExportCli, ExportsAnElementNetworkWithAFlangeConnectedTwice) {
   const auto r = RunCli({"export", "tests/export/first.json", "--modelica", dir.string()});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(ReadText(dir / "HighLift" / "Models" / "First.mo"), ReadText(testing::ExportTestDir() / "golden" / "First.mo"));
-  std::filesystem::remove_all(dir);
 }
 
 TEST(ExportCli, WritesLibraryAndModel) {
@@ -45,7 +45,6 @@ TEST(ExportCli, WritesLibraryAndModel) {
             ReadText(testing::ExportTestDir() / "golden" / "OneStationRig_full.mo"));
   // Only the package at the top of the folder: one file to load.
   for (const auto& entry : std::filesystem::directory_iterator(dir)) EXPECT_EQ(entry.path().filename(), "HighLift");
-  std::filesystem::remove_all(dir);
 }
 
 TEST(ExportCli, StartsWhereTheSimulatorStartsByDefault) {
@@ -79,7 +78,6 @@ TEST(ExportCli, JsonReportListsTheFiles) {
     has_model = has_model || f == "HighLift/Models/OneStationRig.mo";
   }
   EXPECT_TRUE(has_model);
-  std::filesystem::remove_all(dir);
 }
 
 TEST(ExportCli, BadResolutionIsAUsageError) {
@@ -95,7 +93,6 @@ TEST(ExportCli, UnknownScenarioIsAnInputError) {
   const auto r = RunCli({"export", "tests/export/small_drive.json", "--modelica", dir.string(), "--scenario", "nope"});
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("unknown scenario 'nope': use one of rupture_wtb, jam_gra_1"), std::string::npos) << r.err;
-  std::filesystem::remove_all(dir);
 }
 
 // Issue 27, item 13: a 300-character project name exports (the model name is cut at a word);
@@ -125,7 +122,6 @@ TEST(ExportCli, LongNamesExportOrFailBeforeWriting) {
   EXPECT_EQ(bad.exit_code, 2);
   EXPECT_NE(bad.err.find("give a shorter model name with --model-name"), std::string::npos) << bad.err;
   EXPECT_FALSE(std::filesystem::exists(none));
-  std::filesystem::remove_all(dir);
 }
 
 TEST(ExportCli, OutputFolderIsRequired) {

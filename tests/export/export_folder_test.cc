@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "common/scratch.h"
 #include "export_test_util.h"
 #include "highlift/core/error.h"
 #include "highlift/core/output_file.h"
@@ -25,10 +26,11 @@ namespace fs = std::filesystem;
 using testing::ExportTestDir;
 using testing::ReadText;
 
+/// A folder for the running test, absent at first; removed when the test passed.
 fs::path TempDir(const std::string& name) {
   const auto dir = fs::temp_directory_path() / ("highlift_folder_" + name + "_" + std::to_string(::getpid()));
   fs::remove_all(dir);
-  return dir;
+  return testing::RemoveAfterTheTest(dir);
 }
 
 /// Every file below `dir`, path relative to it, as the checkers take them.
@@ -90,7 +92,6 @@ TEST(ExportFolder, SeveralModelsShareOnePackageAndTheFolderIsComplete) {
   EXPECT_EQ(Issues(CheckModelicaCompleteness(files)), "");
   // Nothing but the package: no staging folder left behind.
   for (const auto& entry : fs::directory_iterator(dir)) EXPECT_EQ(entry.path().filename(), "HighLift");
-  fs::remove_all(dir);
 }
 
 // A folder written before the order was merged lists only its last model: the next export
@@ -111,7 +112,6 @@ TEST(ExportFolder, TheOrderTakesUnlistedModelFilesAndDropsMissingOnes) {
   ExportModelica(project, options, dir);
   EXPECT_EQ(ReadText(order), "Alpha\nBeta\n");
   EXPECT_EQ(Issues(CheckModelica(FolderFiles(dir))), "");
-  fs::remove_all(dir);
 }
 
 // Issue 27, item 13: a model name too long for a file name is refused before anything is
@@ -146,7 +146,6 @@ TEST(ExportFolder, AProjectNameOf300CharactersGivesAShortModelName) {
   EXPECT_EQ(report.model_name.rfind("FlapTransmissionFlapTransmission", 0), 0u) << report.model_name;
   EXPECT_EQ(report.model_name.size() % 16, 0u) << report.model_name;  // whole words "FlapTransmission"
   EXPECT_TRUE(fs::exists(dir / report.model_file));
-  fs::remove_all(dir);
 }
 
 /// Exports the model "Before" into `dir`, then "After" with `fail` set up around the call
@@ -173,7 +172,6 @@ std::string FailedExportMessage(const fs::path& dir, const std::function<void(bo
     EXPECT_EQ(after[i].path, before[i].path);
     EXPECT_EQ(after[i].content, before[i].content) << after[i].path;
   }
-  fs::remove_all(dir);
   return message;
 }
 

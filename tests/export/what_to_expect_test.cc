@@ -75,6 +75,7 @@ std::string GenerateTable() {
   const fs::path dir = fs::temp_directory_path() / ("highlift_what_to_expect_" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
+  testing::RemoveAfterTheTest(dir);
   const std::string example = "examples/a380_class_flaps.json", scenario = "rupture_wtb";
   const std::vector<std::string> signals = {"pdu.tau", "shaft_l1.tau", "shaft_r1.tau", "stl_left.tau",
                                             "shaft_l1.e1.phi_rel", "pdu.w"};
@@ -89,7 +90,6 @@ std::string GenerateTable() {
   const auto run = nlohmann::json::parse(simulated.out);
   const auto first = FirstRow(dir / "run.csv");
   const std::string model = ReadText(dir / "out" / nlohmann::json::parse(exported.out)["model_file"].get<std::string>());
-  fs::remove_all(dir);
 
   std::ostringstream t;
   t << "| quantity | value |\n|---|---|\n";

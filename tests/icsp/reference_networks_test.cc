@@ -11,6 +11,7 @@
 #include <unistd.h>
 #include <sstream>
 
+#include "common/scratch.h"
 #include "common/shared_reference.h"
 #include "highlift/icsp/propagator.h"
 
@@ -166,7 +167,8 @@ TEST(ReferenceNetworks, LargeGeneratedNetworksMatchTheChecksums) {
     std::string hash, name;
     while (f >> hash >> name) sums[name] = hash;
   }
-  const auto tmp = std::filesystem::temp_directory_path() / ("icsp_net_" + std::to_string(::getpid()) + ".txt");
+  const auto tmp = testing::RemoveAfterTheTest(std::filesystem::temp_directory_path() /
+                                               ("icsp_net_" + std::to_string(::getpid()) + ".txt"));
   for (const auto& [family, size] : std::vector<std::pair<std::string, int>>{
            {"dt", 10000}, {"dtinf", 10000}, {"rnd", 10000}, {"dt", 300}}) {
     const ReferenceNetwork ref = Make(family, size);
@@ -180,7 +182,6 @@ TEST(ReferenceNetworks, LargeGeneratedNetworksMatchTheChecksums) {
     ::pclose(pipe);
     EXPECT_EQ(std::string(buf), sums[name]) << name;
   }
-  std::filesystem::remove(tmp);
 }
 
 }  // namespace

@@ -12,6 +12,7 @@
 
 #include <unistd.h>
 
+#include "common/scratch.h"
 #include "highlift/sim/simulator.h"
 
 namespace highlift::sim {
@@ -27,7 +28,8 @@ std::vector<std::string> Split(const std::string& line) {
 TEST(CsvSink, NumbersAreTheShortestTextThatReadsBackExactly) {
   const std::vector<double> values = {0.1,     1.0 / 3.0, -2.5e17, 3.0, 1e-300, std::numeric_limits<double>::denorm_min(),
                                       -0.0,    123456.789, std::nextafter(1.0, 2.0), std::numeric_limits<double>::max()};
-  const auto file = std::filesystem::temp_directory_path() / ("highlift_csv_sink_" + std::to_string(::getpid()) + ".csv");
+  const auto file = highlift::testing::RemoveAfterTheTest(std::filesystem::temp_directory_path() /
+                                                          ("highlift_csv_sink_" + std::to_string(::getpid()) + ".csv"));
   {
     CsvSink sink(file);
     std::vector<std::string> columns;
@@ -41,7 +43,6 @@ TEST(CsvSink, NumbersAreTheShortestTextThatReadsBackExactly) {
   std::getline(in, header);
   std::getline(in, row);
   in.close();
-  std::filesystem::remove(file);
   const auto fields = Split(row);
   ASSERT_EQ(fields.size(), values.size() + 1) << row;
   EXPECT_EQ(fields[0], "0.25");

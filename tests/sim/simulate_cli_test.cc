@@ -14,8 +14,10 @@
 
 namespace {
 
+/// A file for the running test, removed when the test passed.
 std::filesystem::path TempCsv(const std::string& name) {
-  return std::filesystem::temp_directory_path() / ("highlift_sim_" + std::to_string(::getpid()) + "_" + name);
+  return highlift::testing::RemoveAfterTheTest(std::filesystem::temp_directory_path() /
+                                               ("highlift_sim_" + std::to_string(::getpid()) + "_" + name));
 }
 
 TEST(SimulateCli, WritesSelectedColumnsAndJsonSummary) {
@@ -45,7 +47,6 @@ TEST(SimulateCli, WritesSelectedColumnsAndJsonSummary) {
   std::string header;
   std::getline(in, header);
   EXPECT_EQ(header, "\"time\",\"clutch.w_rel\",\"brake.mode\"");
-  std::filesystem::remove(csv);
 }
 
 TEST(SimulateCli, UnknownSignalIsInvalidInputWithSuggestion) {
@@ -56,7 +57,6 @@ TEST(SimulateCli, UnknownSignalIsInvalidInputWithSuggestion) {
   EXPECT_NE(r.err.find("signal 'inertia3.ww' is not an output of this network; closest: inertia3.w"),
             std::string::npos)
       << r.err;
-  std::filesystem::remove(csv);
 }
 
 TEST(SimulateCli, UnknownScenarioListsTheScenarios) {
