@@ -878,6 +878,9 @@ class LossyGear : public GearBase {
   }
   void LawAt(const Eval& e, double& k, double& c0) const {
     const Coefficients c = RollingCoefficients(e);
+    law_bf_a_ = c.bf_a;
+    law_bf_a_point_ = e.point;
+    law_bf_a_mode_ = mode;
     const bool q_pos = quadrant >= 0;
     if (Direction(e) == kForward) {
       k = q_pos ? 1 - c.eta1 : 1 - 1 / c.eta2;
@@ -931,8 +934,8 @@ class LossyGear : public GearBase {
       tau_loss = 0.0;
     }
   }
-  double TauEta(const Eval& e) const {
-    const double bf_a = RollingCoefficients(e).bf_a;
+  double TauEta(const Eval& e) const { return TauEta(e, RollingCoefficients(e).bf_a); }
+  double TauEta(const Eval& e, double bf_a) const {
     const int direction = Direction(e);
     if (direction == kForward) return tau_a - bf_a;
     if (direction == kBackward) return tau_a + bf_a;
@@ -942,7 +945,10 @@ class LossyGear : public GearBase {
   /// solve and corrected after it; the loss is continuous across the boundary.
   bool HasAssumptions() const override { return Regularized() && !ideal; }
   bool Reassume(const Eval& e) override {
-    const double te = TauEta(e);
+    // After the solve of the evaluation whose forces read the law at this point: its quadrant
+    // boundary as LawAt read it (the same coefficients; nothing between the two changes them).
+    const bool read = e.point != 0 && e.point == law_bf_a_point_ && mode == law_bf_a_mode_;
+    const double te = read ? TauEta(e, law_bf_a_) : TauEta(e);
     if (te * quadrant >= -1e-12 * (1.0 + std::abs(tau_a))) return false;
     quadrant = -quadrant;
     return true;
@@ -1122,6 +1128,9 @@ class LossyGear : public GearBase {
   mutable std::uint64_t law_point_ = 0;  ///< Law at this point (Eval::point), mode and quadrant
   mutable int law_mode_ = 0, law_quadrant_ = 0;
   mutable double law_k_ = 0.0, law_c0_ = 0.0;
+  mutable std::uint64_t law_bf_a_point_ = 0;  ///< LawAt's quadrant boundary at this point and mode
+  mutable int law_bf_a_mode_ = 0;
+  mutable double law_bf_a_ = 0.0;
 };
 
 // ------------------------------------------------------------------------------------------

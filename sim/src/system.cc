@@ -309,6 +309,10 @@ System::System(const Network& original) {
     if (!node.ground) state_nodes_.push_back({static_cast<int>(n), node.s_phi, node.s_w, node.massless});
     else ground_nodes_.push_back(static_cast<int>(n));
   }
+  // The nodes with inertia first: the derivatives' loop then needs no branch per node.
+  const auto massless_begin = std::stable_partition(state_nodes_.begin(), state_nodes_.end(),
+                                                    [](const StateNode& node) { return !node.massless; });
+  n_massive_state_nodes_ = static_cast<std::size_t>(massless_begin - state_nodes_.begin());
   // Outputs.
   for (const auto& el : elements_) {
     output_offset_.push_back(static_cast<int>(output_names_.size()));
@@ -1447,17 +1451,16 @@ void System::SetKinematics(double t, const double* y) {
   e.y = y;
   e.ydot = nullptr;
   double *phi = e.phi.data(), *w = e.w.data(), *force = e.force.data(), *acc = e.acc.data();
-  // The nodes with states, then the ground nodes: two loops without a branch per node. (Forces
-  // and accelerations are cleared in them: as a loop of its own GCC makes the clearing two
-  // memset calls, which cost more than these stores.)
+  // The nodes with states; forces and accelerations are cleared in the same loop (as a loop of
+  // its own GCC makes the clearing two memset calls, which cost more than these stores). The
+  // ground nodes are left alone: their angles and speeds are set for good (the constructor),
+  // their accelerations stay 0 (no solve writes them), and nothing reads the torques the
+  // elements add on them (a ground node has no equation), so those sums are never cleared.
+  // (Nearly half of the A380-class model's nodes are ground: every housing and support.)
   for (const StateNode& node : state_nodes_) {
     const int n = node.node;
     phi[n] = y[node.s_phi];
     w[n] = y[node.s_w];
-    force[n] = 0.0;
-    acc[n] = 0.0;
-  }
-  for (int n : ground_nodes_) {  // (their angles and speeds are set for good: the constructor)
     force[n] = 0.0;
     acc[n] = 0.0;
   }
@@ -1529,10 +1532,16 @@ bool System::Evaluate(double t, const double* y, double* ydot) {
     if (!again) break;
   }
   if (ydot != nullptr) {
-    for (const StateNode& node : state_nodes_) {
-      // A massless node's speed is the solved one; its speed state is not used (held).
-      ydot[node.s_phi] = node.massless ? e.w[node.node] : y[node.s_w];
-      ydot[node.s_w] = node.massless ? 0.0 : e.acc[node.node];
+    const StateNode* const nodes = state_nodes_.data();
+    const double* const acc = e.acc.data();
+    for (std::size_t k = 0; k < n_massive_state_nodes_; ++k) {
+      ydot[nodes[k].s_phi] = y[nodes[k].s_w];
+      ydot[nodes[k].s_w] = acc[nodes[k].node];
+    }
+    // A massless node's speed is the solved one; its speed state is not used (held).
+    for (std::size_t k = n_massive_state_nodes_; k < state_nodes_.size(); ++k) {
+      ydot[nodes[k].s_phi] = e.w[nodes[k].node];
+      ydot[nodes[k].s_w] = 0.0;
     }
     for (std::size_t k = 0; k < derivatives_.size(); ++k) {
       if (derivatives_direct_[k] == kSpringDamper)
@@ -1543,6 +1552,11 @@ bool System::Evaluate(double t, const double* y, double* ydot) {
     if (!hnodes_.empty() && !HydraulicDerivatives(ydot)) return false;
     if (!phases_pruned_) PrunePhases();
   }
+  // Kept for a second request at the same point: the evaluations without derivatives (a step's
+  // end for its roots, then its sampling and its event). CVODE's right-hand sides (its Newton
+  // iterates, the Jacobian's perturbed states) are not asked for again, so their states are
+  // not copied. (SetKinematics cleared the cache.)
+  if (ydot != nullptr) return true;
   cache_t_ = t;
   cache_segment_ = t_segment_;
   cache_y_.assign(y, y + n_states_);

@@ -268,7 +268,9 @@ class System {
     int node, s_phi, s_w;
     bool massless;
   };
-  std::vector<StateNode> state_nodes_;  ///< the nodes that are not ground, in node order
+  /// The nodes that are not ground: those with inertia, then the massless ones, each in node order.
+  std::vector<StateNode> state_nodes_;
+  std::size_t n_massive_state_nodes_ = 0;  ///< the first of state_nodes_: those with inertia
   std::vector<int> ground_nodes_;       ///< the ground nodes, in node order
   std::map<std::string, int> port_node_;  ///< flange "element.port" -> node (flat and composite)
   std::vector<int> massless_;                        ///< massless nodes

@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <string>
 #include <tuple>
 #include <utility>
@@ -138,18 +139,26 @@ TEST(ConstraintEntries, InlineAndSpilledEntriesKeepTheirOrder) {
   for (const auto& [node, coef] : entries) EXPECT_EQ(node, expected++);
 }
 
+// A LossyGear on nodes 0 (flange_a), 1 (flange_b) and 2 (support) whose loss table differs
+// between |w_a| = 0 and 10 (efficiencies 0.9/0.8 to 0.5/0.4, bearing friction 2/1 to 4/3 N*m).
+std::unique_ptr<msl::LossyGear> TwoSpeedLossyGear() {
+  model::NetworkElement element;
+  element.id = "gear";
+  element.type = "LossyGear";
+  element.parameters = {{{"ratio", 2.0}}, {{"lossTable", {{0, 0.9, 0.8, 2, 1}, {10, 0.5, 0.4, 4, 3}}}}};
+  auto gear = std::make_unique<msl::LossyGear>(element);
+  gear->Bind([](const std::string& port) { return port == "flange_a" ? 0 : (port == "flange_b" ? 1 : 2); },
+             [](const std::string&) { return -1; });
+  return gear;
+}
+
 // The phases of one evaluation (forces, constraint, loss after the solve) share the law of a
 // point; a new point, another quadrant or mode computes it afresh, and an Eval set up by hand
 // (point 0) never reuses it. (System does not change the speeds within a point; the test does,
 // to see which law is returned.)
 TEST(LossyGearLaw, ReusedOnlyAtTheSamePointModeAndQuadrant) {
-  model::NetworkElement element;
-  element.id = "gear";
-  element.type = "LossyGear";
-  element.parameters = {{{"ratio", 2.0}}, {{"lossTable", {{0, 0.9, 0.8, 2, 1}, {10, 0.5, 0.4, 4, 3}}}}};
-  msl::LossyGear gear(element);
-  gear.Bind([](const std::string& port) { return port == "flange_a" ? 0 : (port == "flange_b" ? 1 : 2); },
-            [](const std::string&) { return -1; });
+  const auto owned = TwoSpeedLossyGear();
+  msl::LossyGear& gear = *owned;
   gear.mode = msl::kForward;
   gear.quadrant = 1;
   Eval e;
@@ -184,6 +193,46 @@ TEST(LossyGearLaw, ReusedOnlyAtTheSamePointModeAndQuadrant) {
   gear.quadrant = 1;
   e.point = 2;
   EXPECT_EQ(law(), slow);  // a new point
+}
+
+// Reassume, after the solve, reads the quadrant boundary bf_a that the law read at the same
+// point and mode (LawAt) instead of the coefficients again; at a new point, at point 0 (an Eval
+// set up by hand) or in another mode it reads them afresh. The loss table's boundary is
+// bf_a = (bf1 - bf2) / (eta1 - 1/eta2): -2.19 N*m at |w_a| = 1, -1.03 N*m at 5, so with
+// tau_a = -1.5 N*m the forward quadrant holds at 1 (tau_a - bf_a = +0.69) and not at 5 (-0.47).
+// (System does not change the speeds within a point; the test does, to see which is read.)
+TEST(LossyGearLaw, ReassumeReadsTheBoundaryOfTheLawAtItsPoint) {
+  const auto owned = TwoSpeedLossyGear();
+  msl::LossyGear& gear = *owned;
+  gear.w_small = 1e-3;  // regularised: the quadrant is assumed and checked after the solve
+  ASSERT_TRUE(gear.HasAssumptions());
+  gear.mode = msl::kForward;
+  gear.tau_a = -1.5;
+  Eval e;
+  e.phi = {0.0, 0.0, 0.0};
+  e.w = {1.0, 0.5, 0.0};
+  auto law_at_point = [&](std::uint64_t point) {
+    e.point = point;
+    e.w[0] = 1.0;
+    double k = 0.0, c0 = 0.0;
+    gear.Law(e, k, c0);
+    e.w[0] = 5.0;
+  };
+  gear.quadrant = 1;
+  law_at_point(1);
+  EXPECT_FALSE(gear.Reassume(e));  // the boundary the law read at |w_a| = 1
+  EXPECT_EQ(gear.quadrant, 1);
+  e.point = 2;
+  EXPECT_TRUE(gear.Reassume(e));  // a new point: the boundary at 5
+  EXPECT_EQ(gear.quadrant, -1);
+
+  gear.quadrant = 1;
+  law_at_point(0);
+  EXPECT_TRUE(gear.Reassume(e));  // point 0 reuses nothing
+  gear.quadrant = 1;
+  law_at_point(3);
+  gear.mode = msl::kBackward;  // another mode at the same point: afresh (w_a > 0 still rolls forward)
+  EXPECT_TRUE(gear.Reassume(e));
 }
 
 // A regularised StribeckFriction on one node (flange_a = flange_b) applies the smooth law
