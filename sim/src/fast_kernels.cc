@@ -50,7 +50,7 @@ HIGHLIFT_VECTOR_CLONES void LinearSum(sunrealtype a, N_Vector x, sunrealtype b, 
   }
 }
 
-void Const(sunrealtype c, N_Vector z) {
+HIGHLIFT_VECTOR_CLONES void Const(sunrealtype c, N_Vector z) {
   double* zd = D(z);
   std::fill(zd, zd + L(z), c);
 }
@@ -357,6 +357,24 @@ SUNMatrix CloneSparse(SUNMatrix A) {
 HIGHLIFT_VECTOR_CLONES void ScaleAddIdentity(std::size_t n, double scale, const double* values,
                                              const double* identity, double* out) {
   for (std::size_t p = 0; p < n; ++p) out[p] = (scale * values[p] + 0.0) + identity[p];
+}
+
+HIGHLIFT_VECTOR_CLONES bool ErrorWeights(std::size_t n, double rtol, const double* atol, bool atol_has_zero,
+                                         const double* y, double* ewt) {
+  // rtol * |y| + atol as N_VLinearSum(rtol, |y|, 1, atol) forms it (a * x + y, no contraction).
+  if (!atol_has_zero) {
+    for (std::size_t i = 0; i < n; ++i) ewt[i] = 1.0 / (rtol * std::abs(y[i]) + atol[i]);
+    return true;
+  }
+  for (std::size_t i = 0; i < n; ++i) ewt[i] = rtol * std::abs(y[i]) + atol[i];
+  if (n > 0) {  // N_VMin's scan
+    double smallest = ewt[0];
+    for (std::size_t i = 1; i < n; ++i)
+      if (ewt[i] < smallest) smallest = ewt[i];
+    if (smallest <= 0.0) return false;
+  }
+  for (std::size_t i = 0; i < n; ++i) ewt[i] = 1.0 / ewt[i];
+  return true;
 }
 
 void InstallFastVectorOps(N_Vector v) {

@@ -32,4 +32,10 @@ void InstallFastSparseOps(SUNMatrix A);
 /// elsewhere. The same doubles as the scalar loop.
 void ScaleAddIdentity(std::size_t n, double scale, const double* values, const double* identity, double* out);
 
+/// CVODE's error weights ewt_i = 1 / (rtol |y_i| + atol_i) for a vector of absolute tolerances
+/// (cvEwtSetSV: N_VAbs, N_VLinearSum, N_VInv, each a pass over the states at every step) in one
+/// pass, the same doubles. As CVODE when some atol_i is 0 (`atol_has_zero`): false, with ewt
+/// undefined, when the smallest rtol |y_i| + atol_i is not positive.
+bool ErrorWeights(std::size_t n, double rtol, const double* atol, bool atol_has_zero, const double* y, double* ewt);
+
 }  // namespace highlift::sim::detail

@@ -248,7 +248,32 @@ struct CallbackData {
   std::string message;
   std::string element;
   std::string cvode_message;  ///< last message of CVODE's error handler
+  // The tolerances of CVODE's error weights (ErrorWeightsFn).
+  double relative_tolerance = 0.0;
+  std::vector<double> absolute_tolerances;
+  bool absolute_tolerance_zero = false;  ///< some absolute tolerance is 0
 };
+
+// CVODE's error weights 1 / (rtol |y_i| + atol_i), at every step: those of CVodeSVtolerances,
+// the same doubles, in one pass over the states instead of three (detail::ErrorWeights).
+int ErrorWeightsFn(N_Vector y, N_Vector ewt, void* user) {
+  auto* data = static_cast<CallbackData*>(user);
+  const double* yd = N_VGetArrayPointer(y);
+  const std::size_t n = data->absolute_tolerances.size();
+  if (static_cast<std::size_t>(N_VGetLength(y)) != n) return -1;
+  if (detail::ErrorWeights(n, data->relative_tolerance, data->absolute_tolerances.data(),
+                           data->absolute_tolerance_zero, yd, N_VGetArrayPointer(ewt)))
+    return 0;
+  for (std::size_t i = 0; i < n; ++i)
+    if (!(data->relative_tolerance * std::abs(yd[i]) + data->absolute_tolerances[i] > 0.0)) {
+      const auto& names = data->system->StateNames();
+      data->message = "the error weight 1 / (rtol |y| + atol) of state '" +
+                      (i < names.size() ? names[i] : std::to_string(i)) + "' is undefined: its absolute tolerance is " +
+                      FormatMessageNumber(data->absolute_tolerances[i]) + " and its value " + FormatMessageNumber(yd[i]);
+      break;
+    }
+  return -1;
+}
 
 // CVODE's messages go into the report instead of stderr.
 void ErrorHandler(int error_code, const char* module, const char* function, char* msg, void* user) {
@@ -774,12 +799,18 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
     const std::vector<double> atol =
         sys.AbsoluteTolerances(options.absolute_tolerance, options.torque_tolerance,
                                options.relative_tolerance * options.speed_resolution);
-    N_Vector tolerances = N_VClone(cv.y);
-    if (!check_ptr(tolerances, "N_VClone")) return finish();
-    std::copy(atol.begin(), atol.end(), N_VGetArrayPointer(tolerances));
-    const int flag = CVodeSVtolerances(cv.mem, options.relative_tolerance, tolerances);
-    N_VDestroy(tolerances);  // CVODE keeps its own copy
-    if (!check(flag, "CVodeSVtolerances", t)) return finish();
+    // CVodeSVtolerances' checks (rtol and every atol_i not negative: the options' validation
+    // makes them positive), then the weights from our function: CVODE's, the same doubles.
+    if (!(options.relative_tolerance >= 0.0) ||
+        std::any_of(atol.begin(), atol.end(), [](double a) { return !(a >= 0.0); })) {
+      fail(SimulationStatus::kSolverFailure,
+           "the tolerances must not be negative: relative_tolerance and absolute_tolerance > 0", t);
+      return finish();
+    }
+    data.relative_tolerance = options.relative_tolerance;
+    data.absolute_tolerances = atol;
+    data.absolute_tolerance_zero = std::any_of(atol.begin(), atol.end(), [](double a) { return a == 0.0; });
+    if (!check(CVodeWFtolerances(cv.mem, ErrorWeightsFn), "CVodeWFtolerances", t)) return finish();
   }
   if (!check(CVodeSetMaxNumSteps(cv.mem, options.max_steps_per_output), "CVodeSetMaxNumSteps", t))
     return finish();

@@ -207,5 +207,47 @@ TEST(FastKernels, MaskedNormLeavesTheMaskedElementsOut) {
   EXPECT_TRUE(std::isfinite(got));
 }
 
+// CVODE's error weights for a vector of absolute tolerances, as its cvEwtSetSV forms them with
+// SUNDIALS' own operations (N_VAbs, N_VLinearSum(rtol, |y|, 1, atol), N_VInv), against
+// ErrorWeights' one pass: the same doubles for every value of y (signed zeros, subnormals,
+// infinities) and for relative tolerances of 1 (N_VLinearSum's x + y case) and others.
+TEST(FastKernels, ErrorWeightsAreCvodesThreePasses) {
+  const Vectors sundials(false);
+  int cases = 0;
+  for (double rtol : {1e-6, 1e-8, 0.3, 1.0}) {
+    for (int seed = 0; seed < 4; ++seed) {
+      std::vector<double> y = Values(seed), atol(kLength);
+      for (int i = 0; i < kLength; ++i) atol[i] = 1e-9 * (1.0 + (i * 5 + seed) % 7) + (i % 4 == 0 ? 1e-300 : 0.0);
+      sundials.Set(0, y);
+      sundials.Set(1, atol);
+      N_VAbs(sundials[0], sundials[2]);
+      N_VLinearSum(rtol, sundials[2], 1.0, sundials[1], sundials[2]);
+      N_VInv(sundials[2], sundials[3]);
+      std::vector<double> ewt(kLength);
+      for (bool has_zero : {false, true}) {
+        ASSERT_TRUE(ErrorWeights(kLength, rtol, atol.data(), has_zero, y.data(), ewt.data()));
+        EXPECT_TRUE(SameBits(sundials.Get(3), ewt)) << "rtol " << rtol << ", seed " << seed << ": "
+                                                     << Show(sundials.Get(3), ewt);
+        ++cases;
+      }
+    }
+  }
+  EXPECT_EQ(cases, 4 * 4 * 2);
+}
+
+// With an absolute tolerance of 0, a state at 0 has no weight: CVODE then fails (N_VMin of
+// rtol |y| + atol not positive), and so does ErrorWeights; a nonzero state keeps it defined.
+TEST(FastKernels, ErrorWeightsFailWhereAZeroToleranceMeetsAZeroState) {
+  std::vector<double> atol(kLength, 1e-6), y(kLength, 0.5), ewt(kLength);
+  atol[9] = 0.0;
+  EXPECT_TRUE(ErrorWeights(kLength, 1e-6, atol.data(), true, y.data(), ewt.data()));
+  EXPECT_EQ(ewt[9], 1.0 / (1e-6 * 0.5));
+  y[9] = -0.0;
+  EXPECT_FALSE(ErrorWeights(kLength, 1e-6, atol.data(), true, y.data(), ewt.data()));
+  y[9] = 0.0;
+  y[10] = 0.0;
+  EXPECT_FALSE(ErrorWeights(kLength, 1e-6, atol.data(), true, y.data(), ewt.data()));
+}
+
 }  // namespace
 }  // namespace highlift::sim::detail
