@@ -799,14 +799,9 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
     const std::vector<double> atol =
         sys.AbsoluteTolerances(options.absolute_tolerance, options.torque_tolerance,
                                options.relative_tolerance * options.speed_resolution);
-    // CVodeSVtolerances' checks (rtol and every atol_i not negative: the options' validation
-    // makes them positive), then the weights from our function: CVODE's, the same doubles.
-    if (!(options.relative_tolerance >= 0.0) ||
-        std::any_of(atol.begin(), atol.end(), [](double a) { return !(a >= 0.0); })) {
-      fail(SimulationStatus::kSolverFailure,
-           "the tolerances must not be negative: relative_tolerance and absolute_tolerance > 0", t);
-      return finish();
-    }
+    // The weights from our function: CVodeSVtolerances', the same doubles. (Its checks that no
+    // tolerance is negative hold by construction: SimulationOptions::Validate makes rtol and
+    // atol positive, and AbsoluteTolerances scales atol by magnitudes and stiffnesses.)
     data.relative_tolerance = options.relative_tolerance;
     data.absolute_tolerances = atol;
     data.absolute_tolerance_zero = std::any_of(atol.begin(), atol.end(), [](double a) { return a == 0.0; });
