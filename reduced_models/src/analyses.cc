@@ -1,6 +1,9 @@
 #include "highlift/reduced_models/analyses.h"
 
 #include <algorithm>
+#include <bit>
+#include <cstdint>
+#include <memory>
 #include <cmath>
 #include <limits>
 #include <functional>
@@ -190,16 +193,62 @@ void Enclose(const detail::Graph& g, const Focus& f, int elements, const detail:
   *J_star = Interval(J_lo * (1 - kEigenSlack), J_hi * (1 + kEigenSlack));
 }
 
+/// Bitwise the same doubles (a signed zero or a NaN compares as its bits).
+bool SameBits(const Interval& a, const Interval& b) {
+  return std::bit_cast<std::uint64_t>(a.lo) == std::bit_cast<std::uint64_t>(b.lo) &&
+         std::bit_cast<std::uint64_t>(a.hi) == std::bit_cast<std::uint64_t>(b.hi);
+}
+bool SameBits(const std::vector<Interval>& a, const std::vector<Interval>& b) {
+  return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](const Interval& x, const Interval& y) {
+           return SameBits(x, y);
+         });
+}
+bool SameBits(const detail::Flow<Interval>& a, const detail::Flow<Interval>& b) {
+  return SameBits(a.tau_in, b.tau_in) && SameBits(a.w_in, b.w_in) && SameBits(a.n, b.n);
+}
+
+/// Values of one mode that the single-parameter modes share with the nominal mode where theirs
+/// are the same doubles: most of the several hundred parameters change one node's inertia or
+/// stiffness, or only a timing, and a copy of every vector per parameter was the largest part
+/// of the process's peak memory (issue 30). Read-only once made.
+template <class T>
+class Shared {
+ public:
+  Shared() = default;
+  /// `value`, or `same`'s storage when `same` holds the same doubles bit for bit.
+  explicit Shared(T value, const Shared* same = nullptr) {
+    if (same != nullptr && same->value_ && SameBits(*same->value_, value)) {
+      value_ = same->value_;
+    } else {
+      value_ = std::make_shared<const T>(std::move(value));
+    }
+  }
+  const T& operator*() const { return *value_; }
+  const T* operator->() const { return value_.get(); }
+  const T* get() const { return value_.get(); }
+
+ private:
+  std::shared_ptr<const T> value_;
+};
+
+/// Per-node intervals (`values[i]` reads node i).
+class NodeValues : public Shared<std::vector<Interval>> {
+ public:
+  using Shared<std::vector<Interval>>::Shared;
+  const Interval& operator[](std::size_t i) const { return (**this)[i]; }
+};
+
 /// Per graph node, what the reduced models read of it (reflected to the PDU speed), and the
-/// steady flows the rupture speed needs, for one parameter mode. Computed once per mode.
+/// steady flows the rupture speed needs, for one parameter mode. Computed once per mode; a
+/// single-parameter mode shares what its parameter leaves as the nominal mode's.
 struct ModeData {
   detail::ParameterMode mode;
-  std::vector<Interval> n;       ///< speed ratio of the node's input to the PDU output
-  std::vector<Interval> J;       ///< concentrated inertia of the node
-  std::vector<Interval> link_c;  ///< stiffness of the node's link (shaft or elastic component), 0 if rigid
-  std::vector<Interval> link_J;  ///< distributed inertia of a shaft
-  detail::Flow<Interval> back;   ///< aiding airloads, no friction
-  detail::Flow<Interval> drag;   ///< friction only
+  NodeValues n;       ///< speed ratio of the node's input to the PDU output
+  NodeValues J;       ///< concentrated inertia of the node
+  NodeValues link_c;  ///< stiffness of the node's link (shaft or elastic component), 0 if rigid
+  NodeValues link_J;  ///< distributed inertia of a shaft
+  Shared<detail::Flow<Interval>> back;  ///< aiding airloads, no friction
+  Shared<detail::Flow<Interval>> drag;  ///< friction only
 };
 
 /// Parameters that only change the monitor and brake timing, or only inertias and stiffnesses:
@@ -221,50 +270,55 @@ bool FrictionOnly(const std::string& name) {
 
 ModeData Evaluate(const detail::Graph& g, const detail::ParameterMode& mode, const std::map<std::string, double>& aiding,
                   const Interval& w, const ModeData* nominal = nullptr) {
+  using Flow = Shared<detail::Flow<Interval>>;
   if (nominal && (TimingOnly(mode.parameter) || FrictionOnly(mode.parameter))) {
-    ModeData d = *nominal;
+    ModeData d = *nominal;  // shares every value
     d.mode = mode;
     // Friction changes only the drag flow (the back-drive flow is computed without friction).
-    if (FrictionOnly(mode.parameter)) d.drag = detail::SolveFlow<Interval>(g, mode, {}, w, true, &nominal->drag);
+    if (FrictionOnly(mode.parameter))
+      d.drag = Flow(detail::SolveFlow<Interval>(g, mode, {}, w, true, nominal->drag.get()), &nominal->drag);
     return d;
   }
   ModeData d;
   d.mode = mode;
-  d.n = detail::SpeedRatios<Interval>(g, mode);
-  const auto& n = d.n;
+  std::vector<Interval> n = detail::SpeedRatios<Interval>(g, mode);
   const std::size_t count = g.nodes.size();
-  d.J.assign(count, Interval(0.0));
-  d.link_c.assign(count, Interval(0.0));
-  d.link_J.assign(count, Interval(0.0));
+  std::vector<Interval> J(count, Interval(0.0)), link_c(count, Interval(0.0)), link_J(count, Interval(0.0));
   for (std::size_t i = 0; i < count; ++i) {
     const Component& c = *g.nodes[i].component;
     // One parameter spans its domain: every other component's lumped values are the nominal
     // mode's, the same operations on the same doubles, where its speed ratio is the same too.
     if (nominal && mode.kind == detail::ParameterMode::kOne && c.id != mode.component &&
         detail::SameValue(n[i], nominal->n[i])) {
-      d.J[i] = nominal->J[i];
-      d.link_c[i] = nominal->link_c[i];
-      d.link_J[i] = nominal->link_J[i];
+      J[i] = nominal->J[i];
+      link_c[i] = nominal->link_c[i];
+      link_J[i] = nominal->link_J[i];
       continue;
     }
     const Interval n2 = n[i] * n[i];
     const model::ComponentModel* m = g.nodes[i].model;
     const model::Lumped<Interval> lumped = detail::LumpedOf<Interval>(c, mode, m);
     if (m && m->roles().segment) {
-      d.link_c[i] = *lumped.c * n2;
-      d.link_J[i] = lumped.J * n2;
+      link_c[i] = *lumped.c * n2;
+      link_J[i] = lumped.J * n2;
       continue;
     }
-    d.J[i] = lumped.J * n2;
-    if (lumped.c) d.link_c[i] = *lumped.c * n2;
+    J[i] = lumped.J * n2;
+    if (lumped.c) link_c[i] = *lumped.c * n2;
   }
+  d.n = NodeValues(std::move(n), nominal ? &nominal->n : nullptr);
+  d.J = NodeValues(std::move(J), nominal ? &nominal->J : nullptr);
+  d.link_c = NodeValues(std::move(link_c), nominal ? &nominal->link_c : nullptr);
+  d.link_J = NodeValues(std::move(link_J), nominal ? &nominal->link_J : nullptr);
   if (nominal && InertiaOrStiffnessOnly(mode.parameter)) {
     d.back = nominal->back;
     d.drag = nominal->drag;
     return d;
   }
-  d.back = detail::SolveFlow<Interval>(g, mode, aiding, w, false, nominal ? &nominal->back : nullptr);
-  d.drag = detail::SolveFlow<Interval>(g, mode, {}, w, true, nominal ? &nominal->drag : nullptr);
+  d.back = Flow(detail::SolveFlow<Interval>(g, mode, aiding, w, false, nominal ? nominal->back.get() : nullptr),
+                nominal ? &nominal->back : nullptr);
+  d.drag = Flow(detail::SolveFlow<Interval>(g, mode, {}, w, true, nominal ? nominal->drag.get() : nullptr),
+                nominal ? &nominal->drag : nullptr);
   return d;
 }
 
@@ -479,8 +533,8 @@ PeakReport AnalysePeaks(const Project& project, const PeakOptions& options) {
       RuptureInput in;
       in.w0 = pick(wide ? w_operating_all : Interval(w_operating), true);
       in.J = pick(J_total, false);
-      in.tau_aiding = std::max(0.0, pick(-(d.back.tau_in[root] * n), true));
-      in.tau_drag = std::max(0.0, pick(d.drag.tau_in[root] * n, false));
+      in.tau_aiding = std::max(0.0, pick(-(d.back->tau_in[root] * n), true));
+      in.tau_drag = std::max(0.0, pick(d.drag->tau_in[root] * n, false));
       in.w_reference = pick(wide ? w_reference_all : Interval(w_reference), true);
       in.overspeed_factor = sensor ? pick(detail::Read<Interval>(*sensor, "overspeed_factor", d.mode), true) : 1.3;
       in.asymmetry_threshold =
@@ -533,10 +587,10 @@ PeakReport AnalysePeaks(const Project& project, const PeakOptions& options) {
       f.actuator = g.Id(a);
       f.limiter = g.Id(lim);
       const double c3 = detail::NominalValue(limiter, "stiffness_end_stop") * speed_ratio[lim] * speed_ratio[lim];
-      const double back = std::max(0.0, (-(at_nominal.back.tau_in[a] * at_nominal.n[a])).hi);
+      const double back = std::max(0.0, (-(at_nominal.back->tau_in[a] * at_nominal.n[a])).hi);
       f.torque.nominal = detail::PeakTorque(pc.w_max, c3, at_nominal.J[a].hi) + back;
       const Interval c3_all = detail::Read<Interval>(limiter, "stiffness_end_stop", bounds.mode) * bounds.n[lim] * bounds.n[lim];
-      const Interval back_all = -(bounds.back.tau_in[a] * bounds.n[a]);
+      const Interval back_all = -(bounds.back->tau_in[a] * bounds.n[a]);
       const Interval back_pos(std::max(0.0, back_all.lo), std::max(0.0, back_all.hi));
       f.torque.bounds = (detail::PeakTorque(w, c3_all, bounds.J[a]) + back_pos).ToDomain();
       pc.flap_loads.push_back(std::move(f));

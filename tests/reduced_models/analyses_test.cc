@@ -46,6 +46,50 @@ TEST(Peak, JamAndRuptureCasesWithEnclosuresAndRanking) {
   EXPECT_FALSE(r.worst.empty());
 }
 
+// Each parameter's share is taken with only that parameter over its domain, every other at its
+// nominal value: the single-parameter modes share the nominal mode's values where their
+// parameter changes nothing (the peak memory of issue 30), and must share none that it changes.
+// So every kind of parameter keeps a width of its own, and taking the uncertainty off one
+// parameter leaves every other parameter's width as it was, bit for bit.
+TEST(Peak, EachParametersShareIsItsOwnWhateverElseIsUncertain) {
+  const Project project = test_projects::OneWingProject();
+  const PeakReport all = AnalysePeaks(project);
+  auto width = [](const PeakCase& c, const std::string& parameter) {
+    for (const auto& p : c.ranking)
+      if (p.parameter == parameter) return p.width;
+    return 0.0;
+  };
+  const PeakCase* rupture = nullptr;
+  for (const auto& c : all.cases)
+    if (c.name == "rupture_shaft_1") rupture = &c;
+  ASSERT_NE(rupture, nullptr);
+  const double widest = rupture->ranking.at(0).width;
+  // An inertia, stiffnesses, a shaft's wall (stiffness, inertia and drag), an efficiency (the
+  // back-drive flow), a drag (the friction flow only) and a latency (the timing only).
+  for (const char* parameter : {"gra_1.load_inertia", "tgb_1.inertia", "slim_1.stiffness_normal", "shaft_3.shear_modulus",
+                                "shaft_3.wall_thickness", "gra_1.eta_aiding", "shaft_3.drag_per_length",
+                                "wtb.engagement_latency"})
+    EXPECT_GT(width(*rupture, parameter), 1e-3 * widest) << parameter;
+
+  Project fewer = project;
+  for (Component& c : fewer.components)
+    if (c.id == "shaft_2") {
+      Parameter& g = c.parameters.at("shear_modulus");
+      g.domain = Domain::Point(*g.nominal);
+    }
+  const PeakReport without = AnalysePeaks(fewer);
+  ASSERT_EQ(without.cases.size(), all.cases.size());
+  for (std::size_t k = 0; k < all.cases.size(); ++k) {
+    const PeakCase& before = all.cases[k];
+    const PeakCase& after = without.cases[k];
+    EXPECT_EQ(width(after, "shaft_2.shear_modulus"), 0.0) << after.name;
+    for (const auto& p : before.ranking) {
+      if (p.parameter == "shaft_2.shear_modulus") continue;
+      EXPECT_EQ(width(after, p.parameter), p.width) << before.name << ": " << p.parameter;
+    }
+  }
+}
+
 // The wing-tip brake is a friction brake: after a rupture the shaft at it carries no more than it
 // passes before it slips, the larger of its dynamic and static torques (domain-wide too). A brake
 // stronger than the rigid-stop estimate leaves the estimate as it is.
