@@ -325,8 +325,13 @@ ModeData Evaluate(const detail::Graph& g, const detail::ParameterMode& mode, con
 /// First-order share of each uncertain parameter in the width of tau = w w1 J*: modal
 /// sensitivities d(w1^2)/dc = (dphi)^2, d(w1^2)/dJ_i = -w1^2 phi_i^2 (mass-normalised phi),
 /// times the widths of the reflected c and J when only that parameter spans its domain.
+///
+/// A parameter contributes only where its mode's value is not the nominal mode's: a value it leaves
+/// as it was (the same bits) has the nominal mode's width, which is outward rounding of a point,
+/// not uncertainty; likewise the rupture speed's width beyond the nominal mode's own. A parameter
+/// that changes nothing of the case is not ranked.
 std::vector<ParameterShare> Rank(const detail::Graph& g, const Focus& f, const FocusModel& fm, double w,
-                                 const std::vector<ModeData>& singles,
+                                 const ModeData& nominal, const std::vector<ModeData>& singles,
                                  const std::function<double(const ModeData&)>& w_width) {
   const LumpedModel& m = fm.model;
   const double omega = fm.oscillator.omega, J = fm.oscillator.J_star;
@@ -361,16 +366,23 @@ std::vector<ParameterShare> Rank(const detail::Graph& g, const Focus& f, const F
     for (int i : g.Subtree(f.root)) in_focus[i] = true;
   std::vector<ParameterShare> out;
   double total = 0.0;
+  // The width of `value` where it is not `base`'s (the same bits: 0).
+  const auto changed = [](const Interval& value, const Interval& base) {
+    return SameBits(value, base) ? 0.0 : value.width();
+  };
+  const double w_width_nominal = w_width ? w_width(nominal) : 0.0;
   for (const ModeData& one : singles) {
     double width = 0.0;
     for (std::size_t i = 0; i < g.nodes.size(); ++i) {
       if (!in_focus[i]) continue;
       const int p = fm.draft.point_of_node[i];
       const int l = fm.draft.link_of_node[i];
-      if (p >= 0) width += std::abs(dJ_point[p]) * one.J[i].width();
-      if (l >= 0) width += std::abs(dc_link[l]) * one.link_c[i].width() + std::abs(dJ_link[l]) * one.link_J[i].width();
+      if (p >= 0) width += std::abs(dJ_point[p]) * changed(one.J[i], nominal.J[i]);
+      if (l >= 0)
+        width += std::abs(dc_link[l]) * changed(one.link_c[i], nominal.link_c[i]) +
+                 std::abs(dJ_link[l]) * changed(one.link_J[i], nominal.link_J[i]);
     }
-    if (w_width) width += omega * J * w_width(one);
+    if (w_width) width += omega * J * std::max(0.0, w_width(one) - w_width_nominal);
     if (width > 0.0) {
       out.push_back({one.mode.component + "." + one.mode.parameter, width, 0.0});
       total += width;
@@ -490,7 +502,7 @@ PeakReport AnalysePeaks(const Project& project, const PeakOptions& options) {
     Interval omega(pc.omega), J(pc.J_star);
     if (options.intervals) Enclose(g, focus, elements, all, &omega, &J);
     pc.tau_dynamic.bounds = (w_operating_all * omega * J).ToDomain();
-    if (options.intervals && options.rank) pc.ranking = Rank(g, focus, fm, pc.w_max, singles, nullptr);
+    if (options.intervals && options.rank) pc.ranking = Rank(g, focus, fm, pc.w_max, at_nominal, singles, nullptr);
     report.cases.push_back(std::move(pc));
   }
 
@@ -596,7 +608,7 @@ PeakReport AnalysePeaks(const Project& project, const PeakOptions& options) {
       pc.flap_loads.push_back(std::move(f));
     }
     if (options.intervals && options.rank)
-      pc.ranking = Rank(g, focus, fm, pc.w_max, singles, [&](const ModeData& one) {
+      pc.ranking = Rank(g, focus, fm, pc.w_max, at_nominal, singles, [&](const ModeData& one) {
         return rupture_speed(one, true).first.w_max - rupture_speed(one, false).first.w_max;
       });
     report.cases.push_back(std::move(pc));

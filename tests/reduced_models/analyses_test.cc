@@ -49,8 +49,9 @@ TEST(Peak, JamAndRuptureCasesWithEnclosuresAndRanking) {
 // Each parameter's share is taken with only that parameter over its domain, every other at its
 // nominal value: the single-parameter modes share the nominal mode's values where their
 // parameter changes nothing (the peak memory of issue 30), and must share none that it changes.
-// So every kind of parameter keeps a width of its own, and taking the uncertainty off one
-// parameter leaves every other parameter's width as it was, bit for bit.
+// So every kind of parameter keeps a width of its own, a parameter that changes nothing of a case
+// has none there, and taking the uncertainty off one parameter leaves every other parameter's
+// width as it was, bit for bit.
 TEST(Peak, EachParametersShareIsItsOwnWhateverElseIsUncertain) {
   const Project project = test_projects::OneWingProject();
   const PeakReport all = AnalysePeaks(project);
@@ -70,6 +71,20 @@ TEST(Peak, EachParametersShareIsItsOwnWhateverElseIsUncertain) {
                                 "shaft_3.wall_thickness", "gra_1.eta_aiding", "shaft_3.drag_per_length",
                                 "wtb.engagement_latency"})
     EXPECT_GT(width(*rupture, parameter), 1e-3 * widest) << parameter;
+
+  // A parameter that changes nothing of a case is not ranked there (its mode's values are the
+  // nominal mode's, whose widths are outward rounding of a point, not uncertainty).
+  for (const auto& c : all.cases) {
+    if (c.name == "jam_gra_1") {
+      EXPECT_EQ(width(c, "wtb.engagement_latency"), 0.0);  // a timing: nothing of a jam
+      EXPECT_EQ(width(c, "gra_3.stribeck_decay"), 0.0);     // friction: not the jam's dynamics
+      EXPECT_GT(width(c, "shaft_1.shear_modulus"), 0.0);
+    }
+    if (c.name == "rupture_shaft_3") {
+      EXPECT_EQ(width(c, "shaft_1.shear_modulus"), 0.0);  // inboard of the rupture
+    }
+    for (const auto& p : c.ranking) EXPECT_GT(p.width, 1e-9 * c.ranking.at(0).width) << c.name << ": " << p.parameter;
+  }
 
   Project fewer = project;
   for (Component& c : fewer.components)
