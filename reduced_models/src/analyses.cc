@@ -275,8 +275,9 @@ ModeData Evaluate(const detail::Graph& g, const detail::ParameterMode& mode, con
     ModeData d = *nominal;  // shares every value
     d.mode = mode;
     // Friction changes only the drag flow (the back-drive flow is computed without friction).
+    // (A friction coefficient is no gear ratio: the speed ratios are the nominal mode's.)
     if (FrictionOnly(mode.parameter))
-      d.drag = Flow(detail::SolveFlow<Interval>(g, mode, {}, w, true, nominal->drag.get()), &nominal->drag);
+      d.drag = Flow(detail::SolveFlow<Interval>(g, mode, {}, w, true, nominal->drag.get(), &*nominal->n), &nominal->drag);
     return d;
   }
   ModeData d;
@@ -315,9 +316,10 @@ ModeData Evaluate(const detail::Graph& g, const detail::ParameterMode& mode, con
     d.drag = nominal->drag;
     return d;
   }
-  d.back = Flow(detail::SolveFlow<Interval>(g, mode, aiding, w, false, nominal ? nominal->back.get() : nullptr),
+  // The flows' speed ratios are this mode's, computed above.
+  d.back = Flow(detail::SolveFlow<Interval>(g, mode, aiding, w, false, nominal ? nominal->back.get() : nullptr, &*d.n),
                 nominal ? &nominal->back : nullptr);
-  d.drag = Flow(detail::SolveFlow<Interval>(g, mode, {}, w, true, nominal ? nominal->drag.get() : nullptr),
+  d.drag = Flow(detail::SolveFlow<Interval>(g, mode, {}, w, true, nominal ? nominal->drag.get() : nullptr, &*d.n),
                 nominal ? &nominal->drag : nullptr);
   return d;
 }

@@ -31,12 +31,15 @@ struct Flow {
 /// mode, with the same `loads`, `w_pdu` and `friction`. A node whose component is not the
 /// parameter's, whose speed is the same and whose children's torques are the same takes the
 /// nominal torque: its law would do the same operations on the same values.
+///
+/// `ratios`: SpeedRatios<T>(g, mode) when the caller has them (they are not computed again).
 template <class T>
 Flow<T> SolveFlow(const Graph& g, const ParameterMode& mode, const std::map<std::string, double>& loads,
-                  const T& w_pdu, bool friction = true, const Flow<T>* nominal = nullptr) {
+                  const T& w_pdu, bool friction = true, const Flow<T>* nominal = nullptr,
+                  const std::vector<T>* ratios = nullptr) {
   Flow<T> f;
   const std::size_t count = g.nodes.size();
-  f.n = SpeedRatios<T>(g, mode);
+  f.n = ratios != nullptr ? *ratios : SpeedRatios<T>(g, mode);
   f.w_in.resize(count);
   f.tau_in.assign(count, T(0.0));
   for (std::size_t i = 0; i < count; ++i) f.w_in[i] = f.n[i] * w_pdu;

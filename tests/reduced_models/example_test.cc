@@ -1,7 +1,9 @@
 // The reduced models on the A380-class example (examples/a380_class_flaps.json, domain.md s3)
 // and the size / modes / peak commands of the CLI.
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 
 #include <gtest/gtest.h>
@@ -137,6 +139,22 @@ TEST(A380Example, TheFlowOfOneParameterReusesOnlyWhatItCannotChange) {
         const auto full = detail::SolveFlow<detail::Interval>(g, one, l, w, friction);
         const auto fast = detail::SolveFlow<detail::Interval>(g, one, l, w, friction, &nominal);
         ASSERT_EQ(full.tau_in.size(), fast.tau_in.size());
+        // The mode's speed ratios given (as AnalysePeaks gives them) change nothing; a friction
+        // parameter's are the nominal mode's, which AnalysePeaks gives for them.
+        const std::vector<detail::Interval> own = detail::SpeedRatios<detail::Interval>(g, one);
+        const auto given = detail::SolveFlow<detail::Interval>(g, one, l, w, friction, &nominal, &own);
+        for (std::size_t k = 0; k < full.tau_in.size(); ++k) {
+          EXPECT_EQ(std::bit_cast<std::uint64_t>(given.tau_in[k].lo), std::bit_cast<std::uint64_t>(fast.tau_in[k].lo));
+          EXPECT_EQ(std::bit_cast<std::uint64_t>(given.tau_in[k].hi), std::bit_cast<std::uint64_t>(fast.tau_in[k].hi));
+          EXPECT_EQ(std::bit_cast<std::uint64_t>(given.w_in[k].lo), std::bit_cast<std::uint64_t>(fast.w_in[k].lo));
+          EXPECT_EQ(std::bit_cast<std::uint64_t>(given.w_in[k].hi), std::bit_cast<std::uint64_t>(fast.w_in[k].hi));
+        }
+        if (parameter == "coulomb_torque" || parameter == "viscous_coefficient" || parameter == "stribeck_torque" ||
+            parameter == "stribeck_decay" || parameter == "drag_per_length")
+          for (std::size_t k = 0; k < own.size(); ++k) {
+            EXPECT_EQ(std::bit_cast<std::uint64_t>(own[k].lo), std::bit_cast<std::uint64_t>(nominal.n[k].lo));
+            EXPECT_EQ(std::bit_cast<std::uint64_t>(own[k].hi), std::bit_cast<std::uint64_t>(nominal.n[k].hi));
+          }
         bool moved = false;
         for (std::size_t k = 0; k < full.tau_in.size(); ++k) {
           EXPECT_EQ(full.tau_in[k].lo, fast.tau_in[k].lo) << component << "." << parameter << " node " << k;
