@@ -1043,10 +1043,50 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
     int lead = first(info);
     double alpha = 1.0;
     int side = 0, side_before = -1;
+    // The point before the present end on each side, for the lead root at that time: a root
+    // function that is flat at one end (below).
+    double t_low_before = NAN, g_low_before = 0.0, t_high_before = NAN, g_high_before = 0.0;
+    int low_before_root = -1, high_before_root = -1;
+    double flat_step = 1.0;  // the share of the extrapolated step from the informative end
+    bool flat_probe = false;  // the last probe was placed by that extrapolation
     // (A root exactly zero at tb is at tb.)
     while (tb - ta > tol && lead >= 0 && g_high[lead] != 0.0) {
       alpha = side_before == side ? (side == 2 ? 2.0 * alpha : 0.5 * alpha) : 1.0;
-      double tm = tb - (tb - ta) * g_high[lead] / (g_high[lead] - alpha * g_low[lead]);
+      double tm;
+      const bool zero_low = std::abs(g_low[lead]) <= detail::kRootSentinel;
+      const bool zero_high = std::abs(g_high[lead]) <= detail::kRootSentinel;
+      const bool flat_low = zero_low && !zero_high, flat_high = zero_high && !zero_low;
+      if (flat_low || flat_high) {
+        // A function that is exactly zero on one side of its crossing (a brake's normal force
+        // before it engages, reported as the sentinel): the secant through the two ends points at
+        // the flat end whatever the weights, and regula falsi crept a tenth of the interval per
+        // probe (up to 98 probes for one root). The crossing is where the function leaves zero:
+        // extrapolated along its other side through that side's last two points (the bracket
+        // halved until there are two), the step from that side's end halved after every probe
+        // that fell short onto the flat side (as the secant of a concave function does), and kept
+        // three quarters of the tolerance inside the bracket, so that an estimate that has
+        // converged closes the bracket with one probe.
+        const double t1 = flat_low ? tb : ta, g1 = flat_low ? g_high[lead] : g_low[lead];
+        const double t2 = flat_low ? t_high_before : t_low_before;
+        const double g2 = flat_low ? g_high_before : g_low_before;
+        const int root2 = flat_low ? high_before_root : low_before_root;
+        const int flat_side = flat_low ? 2 : 1;
+        flat_step = side == flat_side && flat_probe ? 0.5 * flat_step : 1.0;
+        tm = 0.5 * (ta + tb);
+        if (root2 == lead && (g1 > 0.0) == (g2 > 0.0) && std::abs(g2) > std::abs(g1)) {
+          const double estimate = t1 - flat_step * g1 * (t1 - t2) / (g1 - g2);
+          if (std::isfinite(estimate)) tm = estimate;
+        }
+        if (tb - ta > 1.5 * tol) {
+          tm = std::clamp(tm, ta + 0.75 * tol, tb - 0.75 * tol);
+        } else {
+          tm = 0.5 * (ta + tb);
+        }
+        flat_probe = true;
+      } else {
+        tm = tb - (tb - ta) * g_high[lead] / (g_high[lead] - alpha * g_low[lead]);
+        flat_probe = false;
+      }
       // Not closer to an end than half the tolerance: then a fraction of the interval inward.
       const double inward = (tb - ta) / tol > 5.0 ? 0.1 : 0.5 * tol / (tb - ta);
       if (!(std::abs(tm - ta) >= 0.5 * tol)) tm = ta + inward * (tb - ta);
@@ -1061,12 +1101,14 @@ SimulationReport Simulator::Run(const SimulationOptions& options, OutputSink& si
       }
       side_before = side;
       if (SignChanged(g_low, g_probe, directions, probe_info, roots_of[which])) {
+        t_high_before = tb, g_high_before = g_high[lead], high_before_root = lead;
         tb = tm;  // a crossing in (ta, tm]
         g_high.swap(g_probe);
         info.swap(probe_info);
         lead = first(info);
         side = 1;
       } else {
+        t_low_before = ta, g_low_before = g_low[lead], low_before_root = lead;
         ta = tm;  // none there: the crossing of (ta, tb] lies in (tm, tb]
         g_low.swap(g_probe);
         SignChanged(g_low, g_high, directions, info, roots_of[which]);

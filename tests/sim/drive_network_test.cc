@@ -390,5 +390,24 @@ TEST(DriveScenarios, SlatsRupturesWithTheLoadInertiaRunPassively) {
   }
 }
 
+// A shaft rupture's station limiters engage their brakes where the brake's normal force leaves an
+// exact zero (a root function flat on one side of its crossing). Regula falsi crept a tenth of the
+// bracket per probe towards such a crossing (up to 98 evaluations of the model for one root; 9.8
+// per located root in this run); the crossing is now extrapolated along the function's other side
+// (6.0). The count is of evaluations, not time: deterministic, and the same on every machine.
+TEST(DriveScenarios, AShaftRuptureLocatesItsRootsInFewEvaluations) {
+  const Scenario scenario = SizingScenario(Example(), "rupture", "shaft_l4a");
+  const auto run = Simulate(Example(), scenario, DriveResolution::kFull, scenario.stop_time);
+  const SolverStatistics& s = run->report.statistics;
+  const long located = s.reinitialisations + s.continuous_roots;
+  ASSERT_GT(located, 50) << run->report.FullReport();
+  // One evaluation per step for the root functions at its end; the rest locates the roots.
+  const double per_root = static_cast<double>(s.root_evaluations - s.steps) / static_cast<double>(located);
+  std::cout << "steps " << s.steps << ", root evaluations " << s.root_evaluations << ", roots " << located
+            << ": " << per_root << " evaluations per located root beyond the steps' own\n";
+  EXPECT_LT(per_root, 8.0) << "evaluations per located root";
+  ExpectEnergyBalance(run->report);
+}
+
 }  // namespace
 }  // namespace highlift::sim
