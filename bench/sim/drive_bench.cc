@@ -22,13 +22,6 @@ namespace {
 
 using namespace highlift;
 
-class NullSink : public sim::OutputSink {
- public:
-  void Begin(const std::vector<std::string>&) override {}
-  void Row(double, const std::vector<double>&) override {}
-  bool ReadsValues() const override { return false; }  // as the campaign's and the CLI's without --out
-};
-
 const Project& Example(const std::string& file = "a380_class_flaps.json") {
   static std::map<std::string, Project> projects;
   auto it = projects.find(file);
@@ -54,7 +47,7 @@ void RunScenario(benchmark::State& state, const std::string& scenario, sim::Driv
   sim::SimulationReport report;
   for (auto _ : state) {
     sim::Simulator simulator(model.network);  // assembly is part of the cost
-    NullSink sink;
+    sim::DiscardSink sink;  // as the campaign's and the CLI's without --out
     report = simulator.Run(run, sink);
     if (!report.ok()) state.SkipWithError(report.message.c_str());
   }

@@ -24,14 +24,6 @@ double Seconds(std::chrono::steady_clock::time_point since) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
 }
 
-/// Discards the rows: the peaks are in the report.
-class NullSink : public sim::OutputSink {
- public:
-  void Begin(const std::vector<std::string>&) override {}
-  void Row(double, const std::vector<double>&) override {}
-  bool ReadsValues() const override { return false; }
-};
-
 }  // namespace
 
 CaseSimulation SimulateCase(const Project& project, const Scenario& scenario, const std::vector<std::string>& load_path,
@@ -49,7 +41,7 @@ CaseSimulation SimulateCase(const Project& project, const Scenario& scenario, co
   }
   CaseSimulation out;
   out.build_seconds = Seconds(start);
-  NullSink sink;
+  sim::DiscardSink sink;  // the peaks are in the report
   out.report = simulator.Run(run, sink);
   out.components = sim::ComponentPeakTorques(model, project, out.report);
   // The reduced model lumps a chain of shafts into one spring: each shaft of the chain carries

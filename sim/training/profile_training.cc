@@ -35,14 +35,6 @@ namespace {
 
 using namespace highlift;
 
-/// Discards the rows, as the peaks and the campaigns do.
-class DiscardingSink : public sim::OutputSink {
- public:
-  void Begin(const std::vector<std::string>&) override {}
-  void Row(double, const std::vector<double>&) override {}
-  bool ReadsValues() const override { return false; }
-};
-
 /// Reads every value of every row, as a sink that writes them does (into a member, so the reads
 /// are kept).
 class ReadingSink : public sim::OutputSink {
@@ -105,7 +97,7 @@ bool Run(const Project& project, const std::string& run, bool results) {
     report = simulator.Run(o, sink);
   } else {
     o.output_interval = std::min(o.output_interval, 1e-3);  // as `peak --transient`
-    DiscardingSink sink;
+    sim::DiscardSink sink;  // as the peaks and the campaigns
     report = simulator.Run(o, sink);
   }
   std::printf("%-28s %-8s %7ld steps  %s\n", run.c_str(), report.ok() ? "ok" : "FAILED", report.statistics.steps,

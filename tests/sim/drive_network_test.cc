@@ -307,11 +307,7 @@ TEST(DriveScenarios, EliminatingAnglesAndTwistsFromTheNewtonSystemsKeepsThePeaks
     SimulationOptions o = model.Options(Example());
     o.linear_solver = solver;
     o.relative_tolerance = 1e-8;
-    struct : OutputSink {
-      void Begin(const std::vector<std::string>&) override {}
-      void Row(double, const std::vector<double>&) override {}
-      bool ReadsValues() const override { return false; }
-    } sink;
+    DiscardSink sink;
     reports.push_back(simulator.Run(o, sink));
     ASSERT_TRUE(reports.back().ok()) << reports.back().FullReport();
   }

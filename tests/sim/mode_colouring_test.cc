@@ -18,13 +18,6 @@
 namespace highlift::sim::detail {
 namespace {
 
-// A sink that keeps nothing.
-class NullSink : public OutputSink {
- public:
-  void Begin(const std::vector<std::string>&) override {}
-  void Row(double, const std::vector<double>&) override {}
-  bool ReadsValues() const override { return false; }
-};
 
 // Every column in exactly one colour, and no two columns of a colour with an entry in one row.
 void ExpectValidColouring(const std::vector<int>& colptr, const std::vector<int>& rows,
@@ -94,7 +87,7 @@ TEST(ModeColouring, ADriveRunIsTheSameAsWithTheSupersetsColouring) {
   for (const std::string scenario : {"jam_l4", "rupture_wtb"}) {
     const DriveModel model = BuildDriveNetwork(project, {.scenario = scenario});
     SimulationOptions options = model.Options(project);
-    NullSink sink_mode, sink_superset;
+    DiscardSink sink_mode, sink_superset;
     const SimulationReport mode = Simulator(model.network).Run(options, sink_mode);
     options.mode_colouring = false;
     const SimulationReport superset = Simulator(model.network).Run(options, sink_superset);

@@ -67,12 +67,6 @@ TEST(SpeedResolution, DriveModelsResolveSpeedsToTheirFrictionSpeed) {
   }
 }
 
-class CountingSink : public OutputSink {
- public:
-  void Begin(const std::vector<std::string>&) override {}
-  void Row(double, const std::vector<double>&) override {}
-  bool ReadsValues() const override { return false; }
-};
 
 struct Outcome {
   SimulationReport report;
@@ -84,7 +78,7 @@ Outcome Simulate(const Project& project, const DriveModel& model, double rtol, d
   o.relative_tolerance = rtol;
   o.speed_resolution = speed_resolution;
   Simulator simulator(model.network);
-  CountingSink sink;
+  DiscardSink sink;
   Outcome run{simulator.Run(o, sink), {}};
   EXPECT_TRUE(run.report.ok()) << run.report.FullReport();
   for (const PeakTorque& p : run.report.peak_torques) run.peaks[p.element] = std::abs(p.tau);

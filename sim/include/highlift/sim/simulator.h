@@ -105,6 +105,15 @@ class OutputSink {
   virtual bool ReadsValues() const { return true; }
 };
 
+/// Discards the rows and reads no values (a run whose results are in its report: the peaks, the
+/// events, the energy balance; the campaigns, `peak --transient`).
+class DiscardSink : public OutputSink {
+ public:
+  void Begin(const std::vector<std::string>&) override {}
+  void Row(double, const std::vector<double>&) override {}
+  bool ReadsValues() const override { return false; }
+};
+
 /// Keeps every row in memory (tests, small runs).
 class MemorySink : public OutputSink {
  public:
